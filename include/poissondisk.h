@@ -1,0 +1,170 @@
+/*
+ * poissondisk.h - exact maximal Poisson-disk sampling (Jones 2006).
+ *
+ * This header is the specification of the library's C interface. It is plain
+ * C99, includes only <stddef.h> and <stdint.h>, and compiles as C++ too.
+ *
+ * A sampler generates points in an axis-aligned rectangle (the unit square by
+ * default) such that
+ *   - every pair of points is at least the radius R apart (decided exactly);
+ *   - when the sampler reports "maximal", no point of the rectangle is farther
+ *     than R from every sample (no room is left for another point);
+ *   - each new point is uniform over the area where a point may still go, so
+ *     the pattern follows the random-sequential-adsorption (dart throwing run
+ *     to saturation) law, and every prefix of the points is itself a
+ *     Poisson-disk set.
+ *
+ * Conventions shared by every function:
+ *   - A call that can fail returns int: 0 on success, a documented positive
+ *     value for a non-error outcome, a negative PDS_E* code on error.
+ *   - A failed call leaves the sampler as it was, and pds_errmsg() tells why.
+ *   - The library never prints, aborts, exits or touches errno, and keeps no
+ *     global state: distinct samplers may be used from distinct threads at
+ *     once; one sampler must be used by one thread at a time.
+ *   - Coordinates are returned as interleaved x,y doubles into caller-owned
+ *     buffers; no memory allocated by the library crosses this interface.
+ *   - Version numbers in the comments say in which release a name appeared.
+ */
+#ifndef POISSONDISK_H
+#define POISSONDISK_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Version of this header; pds_version_number() gives the library's. (1.0) */
+#define PDS_VERSION_MAJOR 1
+#define PDS_VERSION_MINOR 0
+#define PDS_VERSION_PATCH 0
+#define PDS_VERSION_NUMBER \
+    (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
+
+/* Error codes: fixed values, never renumbered, only appended. (1.0) */
+#define PDS_EINVAL (-1)    /* an argument is invalid: NULL, NaN, infinite, out of its domain */
+#define PDS_ENOMEM (-2)    /* memory could not be allocated                        */
+#define PDS_ESTATE (-3)    /* the call is not allowed in the sampler's current state */
+#define PDS_ERANGE (-4)    /* the radius is too small for the domain: the pattern
+                              would not fit in the index type or address space, or
+                              double precision cannot resolve it                     */
+#define PDS_EINTERNAL (-5) /* an internal invariant failed (a bug); the sampler
+                              refuses further changes (PDS_ESTATE) but can still be
+                              read and destroyed                                     */
+
+/* Export control: symbols are visible only when the library is being built. */
+#if defined(PDS_BUILDING_LIBRARY) && defined(__GNUC__)
+#define PDS_API __attribute__((visibility("default")))
+#else
+#define PDS_API
+#endif
+
+/* The opaque sampler handle. (1.0) */
+typedef struct pds_sampler pds_sampler;
+
+/*
+ * pds_create - make a sampler for the unit square [0,1]x[0,1].
+ *   out     receives the new sampler; set to NULL on failure. Must not be NULL.
+ *   radius  the minimum distance R between points; finite and > 0.
+ *   seed    any value; the same seed and version give byte-identical points.
+ * Returns 0, PDS_EINVAL (out NULL, radius not finite or <= 0), PDS_ERANGE (radius
+ * too small for the square, see PDS_ERANGE), PDS_ENOMEM.
+ * The caller owns *out and releases it with pds_destroy(). (1.0)
+ */
+PDS_API int pds_create(pds_sampler **out, double radius, uint64_t seed);
+
+/* pds_destroy - release a sampler and everything it holds. NULL is a no-op. (1.0) */
+PDS_API void pds_destroy(pds_sampler *s);
+
+/*
+ * pds_set_domain - sample the closed rectangle [x0,x1]x[y0,y1] instead.
+ * All four values finite, x0 < x1 and y0 < y1. Allowed only before the first
+ * point. Returns 0, PDS_EINVAL (NULL, non-finite, empty or inverted rectangle),
+ * PDS_ESTATE (points exist already), PDS_ERANGE (radius too small for this
+ * rectangle). (1.0)
+ */
+PDS_API int pds_set_domain(pds_sampler *s, double x0, double y0, double x1, double y1);
+
+/*
+ * pds_step - add one point, uniform over the free area.
+ * Returns 1 when a point was added, 0 when the pattern is maximal (nothing
+ * added), or PDS_EINVAL (NULL), PDS_ENOMEM, PDS_ESTATE (sampler broken by an
+ * earlier PDS_EINTERNAL), PDS_EINTERNAL. (1.0)
+ */
+PDS_API int pds_step(pds_sampler *s);
+
+/*
+ * pds_run - add points until the pattern is maximal or max_new were added.
+ *   max_new  the most points to add in this call; 0 means no limit.
+ *   added    if not NULL, receives how many points this call added (also on error).
+ * Returns 0 when the pattern is maximal, 1 when max_new points were added and
+ * room is left, or PDS_EINVAL (NULL s), PDS_ENOMEM, PDS_ESTATE, PDS_EINTERNAL.
+ * Memory for the whole run is reserved before the first point is added, so a
+ * PDS_ENOMEM leaves the pattern exactly as it was. (1.0)
+ */
+PDS_API int pds_run(pds_sampler *s, size_t max_new, size_t *added);
+
+/*
+ * pds_refine - continue with a smaller radius, keeping every point.
+ *   radius  finite, 0 < radius <= pds_radius(s); equal is a no-op.
+ * Allowed at any time. The existing points keep their indices and new points
+ * follow them; running to the end gives a pattern maximal at the new radius.
+ * Returns 0, PDS_EINVAL (NULL, non-finite, <= 0 or larger than the current
+ * radius), PDS_ERANGE (too small for the domain), PDS_ENOMEM, PDS_ESTATE. (1.0)
+ */
+PDS_API int pds_refine(pds_sampler *s, double radius);
+
+/* pds_count - number of points so far; 0 for NULL. (1.0) */
+PDS_API size_t pds_count(const pds_sampler *s);
+
+/*
+ * pds_points - copy points first .. first+count-1, clipped to pds_count(s),
+ * into xy as interleaved x,y pairs (xy must hold 2*count doubles). Points come
+ * in insertion order. Returns how many points were copied: 0 when s or xy is
+ * NULL or first >= pds_count(s). (1.0)
+ */
+PDS_API size_t pds_points(const pds_sampler *s, size_t first, size_t count, double *xy);
+
+/* pds_radius - the current radius R; NaN for NULL. (1.0) */
+PDS_API double pds_radius(const pds_sampler *s);
+
+/*
+ * pds_free_area - area of the domain farther than R from every point, where a
+ * new point could still go; exactly 0 once the pattern is maximal; the whole
+ * domain's area before the first point; NaN for NULL. (1.0)
+ */
+PDS_API double pds_free_area(const pds_sampler *s);
+
+/*
+ * pds_verify - re-check the current pattern from scratch, independently of
+ * the sampler's bookkeeping: every pair at least R apart (exact arithmetic,
+ * through a spatial hash), the triangulation valid and Delaunay, and
+ * maximality decided exactly (every Voronoi vertex inside the domain within R
+ * of its site, every side of the domain covered). O(N) expected time.
+ * Returns 0 when the pattern is valid and maximal, 1 when it is valid and room
+ * is left, PDS_EINTERNAL when a check fails (a bug: please report it; the
+ * message says which check), PDS_EINVAL (NULL), PDS_ENOMEM. (1.0)
+ */
+PDS_API int pds_verify(pds_sampler *s);
+
+/* pds_strerror - static English text for any code, including unknown ones. (1.0) */
+PDS_API const char *pds_strerror(int code);
+
+/*
+ * pds_errmsg - the last failure on s in words, or "no error" if none yet. The
+ * text stays valid until the next call on s. For NULL, a static text. (1.0)
+ */
+PDS_API const char *pds_errmsg(const pds_sampler *s);
+
+/* pds_version_number - MAJOR*10000 + MINOR*100 + PATCH of the library. (1.0) */
+PDS_API unsigned pds_version_number(void);
+
+/* pds_version_string - "MAJOR.MINOR.PATCH" of the library, static. (1.0) */
+PDS_API const char *pds_version_string(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* POISSONDISK_H */

@@ -1,0 +1,132 @@
+// delaunay.cpp - Guibas-Stolfi insertion with exact predicates (see delaunay.hpp).
+#include "delaunay.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "predicates.hpp"
+
+namespace pds {
+
+Delaunay::Delaunay(const Box& domain) {
+    const double cx = 0.5 * (domain.x0 + domain.x1);
+    const double cy = 0.5 * (domain.y0 + domain.y1);
+    const double half = 3.0 * std::hypot(domain.width(), domain.height());
+    reserve(kGhosts + 1);
+    points_ = {{cx - half, cy - half}, {cx + half, cy - half}, {cx + half, cy + half},
+               {cx - half, cy + half}};
+    // The square's boundary, counterclockwise, then one diagonal.
+    EdgeRef side[kGhosts];
+    for (std::uint32_t i = 0; i < kGhosts; ++i) side[i] = mesh_.make_edge(i, (i + 1) % kGhosts);
+    for (std::uint32_t i = 0; i < kGhosts; ++i)
+        mesh_.splice(QuadEdgeMesh::sym(side[i]), side[(i + 1) % kGhosts]);
+    mesh_.connect(side[1], side[0]);  // 2 -> 0
+    vertex_edge_.assign(side, side + kGhosts);
+}
+
+void Delaunay::reserve(std::size_t vertices) {
+    // An insertion adds three edges (four and deletes one when the point lands
+    // on an edge), so 3 records per vertex always suffice.
+    mesh_.reserve(3 * vertices);
+    points_.reserve(vertices);
+    vertex_edge_.reserve(vertices);
+}
+
+bool Delaunay::has_room_for_one() const {
+    return points_.size() < points_.capacity() && vertex_edge_.size() < vertex_edge_.capacity() &&
+           mesh_.spare_records() >= 3;
+}
+
+std::size_t Delaunay::memory_bytes() const {
+    return mesh_.memory_bytes() + points_.capacity() * sizeof(Point) +
+           vertex_edge_.capacity() * sizeof(EdgeRef);
+}
+
+bool Delaunay::right_of(const Point& p, EdgeRef e) const {
+    return orient2d(p, points_[mesh_.dest(e)], points_[mesh_.org(e)]) > 0;
+}
+
+EdgeRef Delaunay::locate(const Point& p, EdgeRef e) const {
+    // The walk visits each triangle at most once on a Delaunay mesh; the bound
+    // only turns a broken invariant into an error instead of a hang.
+    const std::size_t limit = 4 * mesh_.live_count() + 16;
+    for (std::size_t step = 0; step < limit; ++step) {
+        const Point& o = points_[mesh_.org(e)];
+        const Point& d = points_[mesh_.dest(e)];
+        if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y)) return e;
+        if (right_of(p, e)) {
+            e = QuadEdgeMesh::sym(e);
+        } else if (!right_of(p, mesh_.onext(e))) {
+            e = mesh_.onext(e);
+        } else if (!right_of(p, mesh_.dprev(e))) {
+            e = mesh_.dprev(e);
+        } else {
+            return e;
+        }
+    }
+    throw std::logic_error("point location did not terminate");
+}
+
+void Delaunay::swap_edge(EdgeRef e) {
+    // The endpoints lose e: keep their entry edges pointing at edges they keep.
+    const std::uint32_t o = mesh_.org(e), d = mesh_.dest(e);
+    if (vertex_edge_[o] == e) vertex_edge_[o] = mesh_.oprev(e);
+    if (vertex_edge_[d] == QuadEdgeMesh::sym(e)) vertex_edge_[d] = mesh_.oprev(QuadEdgeMesh::sym(e));
+    mesh_.swap(e);
+}
+
+void Delaunay::delete_edge(EdgeRef e) {
+    const std::uint32_t o = mesh_.org(e), d = mesh_.dest(e);
+    if (vertex_edge_[o] == e) vertex_edge_[o] = mesh_.onext(e);
+    if (vertex_edge_[d] == QuadEdgeMesh::sym(e)) vertex_edge_[d] = mesh_.onext(QuadEdgeMesh::sym(e));
+    mesh_.delete_edge(e);
+}
+
+std::uint32_t Delaunay::insert(const Point& p, std::uint32_t near) {
+    if (!has_room_for_one()) throw std::logic_error("Delaunay::insert without reserved room");
+    EdgeRef e = locate(p, vertex_edge_[near]);
+    const Point& o = points_[mesh_.org(e)];
+    const Point& d = points_[mesh_.dest(e)];
+    if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y))
+        throw std::logic_error("Delaunay::insert of a duplicate point");
+    if (orient2d(o, d, p) == 0) {
+        // p lies on e (strictly inside it, since it is in the closed triangle
+        // and not a corner): remove e and fill the quadrilateral instead.
+        const EdgeRef t = mesh_.oprev(e);
+        delete_edge(e);
+        e = t;
+    }
+
+    const std::uint32_t v = static_cast<std::uint32_t>(points_.size());
+    points_.push_back(p);
+    vertex_edge_.push_back(kNoEdge);
+
+    // Connect p to every corner of the (triangle or quadrilateral) face.
+    EdgeRef base = mesh_.make_edge(mesh_.org(e), v);
+    mesh_.splice(base, e);
+    const EdgeRef start = base;
+    do {
+        base = mesh_.connect(e, QuadEdgeMesh::sym(base));
+        e = mesh_.oprev(base);
+    } while (mesh_.lnext(e) != start);
+    vertex_edge_[v] = QuadEdgeMesh::sym(start);
+
+    // Restore the Delaunay property: examine the edges opposite p, flip those
+    // whose far corner lies inside the circle through p and the edge.
+    for (;;) {
+        const EdgeRef t = mesh_.oprev(e);
+        const Point& far = points_[mesh_.dest(t)];
+        if (right_of(far, e) &&
+            incircle(points_[mesh_.org(e)], far, points_[mesh_.dest(e)], p) > 0) {
+            swap_edge(e);
+            e = mesh_.oprev(e);
+        } else if (mesh_.onext(e) == start) {
+            break;
+        } else {
+            e = mesh_.lprev(mesh_.onext(e));
+        }
+    }
+    return v;
+}
+
+}  // namespace pds

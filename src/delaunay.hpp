@@ -1,0 +1,72 @@
+// delaunay.hpp - incremental Delaunay triangulation on the quad-edge mesh.
+//
+// Insertion is Guibas & Stolfi's InsertSite (1985, section 9): locate the
+// triangle by a walk, connect the new site to its corners, then flip edges
+// that fail the in-circle test. All decisions use the exact predicates, so the
+// mesh is exactly Delaunay (ties on a circle are left unflipped).
+//
+// Jones 2006 (section 3, step 3) notes that the walk can start at the Voronoi
+// site whose cell the new point was drawn in; the point's nearest site is then
+// at most a few triangles away, so location is O(1) in practice.
+//
+// Ghosts: vertices 0..3 are the corners of a square centred on the domain with
+// half-side 3 * diagonal. Every point of the domain is then more than 3
+// diagonals from a ghost but within one diagonal of any real site, so the
+// Voronoi cells of real sites inside the domain are exactly those of the real
+// sites alone; and every triangle with a corner in the domain has a bounded
+// circumcircle (a huge circle would swallow a ghost). The ghosts only bound the
+// mesh; callers skip them when they enumerate sites.
+#ifndef PDS_DELAUNAY_HPP
+#define PDS_DELAUNAY_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "point.hpp"
+#include "quadedge.hpp"
+
+namespace pds {
+
+class Delaunay {
+public:
+    static constexpr std::uint32_t kGhosts = 4;
+
+    explicit Delaunay(const Box& domain);
+
+    // Makes room for `vertices` vertices in all (ghosts included) and their
+    // edges; strong guarantee (std::bad_alloc and nothing changed).
+    void reserve(std::size_t vertices);
+    // True when insert() can run without allocating.
+    bool has_room_for_one() const;
+
+    // Inserts p, which must be strictly inside the ghost square and distinct
+    // from every vertex; `near` is where the walk starts. Returns p's vertex.
+    std::uint32_t insert(const Point& p, std::uint32_t near);
+
+    std::size_t vertex_count() const { return points_.size(); }
+    const Point& point(std::uint32_t v) const { return points_[v]; }
+    const std::vector<Point>& points() const { return points_; }
+    static bool is_ghost(std::uint32_t v) { return v < kGhosts; }
+    // An edge whose origin is v.
+    EdgeRef edge_of(std::uint32_t v) const { return vertex_edge_[v]; }
+    const QuadEdgeMesh& mesh() const { return mesh_; }
+    std::size_t memory_bytes() const;
+
+    // The triangle (left face of the returned edge) that contains p, walking
+    // from `start`; p must be inside the ghost square.
+    EdgeRef locate(const Point& p, EdgeRef start) const;
+
+private:
+    bool right_of(const Point& p, EdgeRef e) const;
+    void swap_edge(EdgeRef e);
+    void delete_edge(EdgeRef e);
+
+    QuadEdgeMesh mesh_;
+    std::vector<Point> points_;
+    std::vector<EdgeRef> vertex_edge_;
+};
+
+}  // namespace pds
+
+#endif

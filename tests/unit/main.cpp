@@ -1,0 +1,15 @@
+// main.cpp - runs every internal unit suite; exit status non-zero on any failure.
+#include <cstdlib>
+
+#include "suites.hpp"
+
+int main() {
+    SRunner* runner = srunner_create(expansion_suite());
+    srunner_add_suite(runner, predicates_suite());
+    srunner_add_suite(runner, quadedge_suite());
+    srunner_add_suite(runner, delaunay_suite());
+    srunner_run_all(runner, CK_NORMAL);
+    const int failed = srunner_ntests_failed(runner);
+    srunner_free(runner);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,17 @@
+// suites.hpp - the internal unit suites (one per file) and small shared helpers.
+#ifndef PDS_TEST_SUITES_HPP
+#define PDS_TEST_SUITES_HPP
+
+#include <check.h>
+
+#include <cstdlib>
+
+Suite* expansion_suite();
+Suite* predicates_suite();
+Suite* quadedge_suite();
+Suite* delaunay_suite();
+
+// Under Valgrind (PDS_TEST_LIGHT set) loops shrink; every behaviour still runs.
+inline bool test_light() { return std::getenv("PDS_TEST_LIGHT") != nullptr; }
+
+#endif
