@@ -17,13 +17,17 @@
  * Conventions shared by every function:
  *   - A call that can fail returns int: 0 on success, a documented positive
  *     value for a non-error outcome, a negative PDS_E* code on error.
- *   - A failed call leaves the sampler as it was, and pds_errmsg() tells why.
+ *   - A failed call leaves the sampler as it was, and pds_errmsg() tells why;
+ *     the one exception is PDS_EINTERNAL (a bug), after which the sampler keeps
+ *     its points but refuses every change with PDS_ESTATE.
  *   - The library never prints, aborts, exits or touches errno, and keeps no
  *     global state: distinct samplers may be used from distinct threads at
  *     once; one sampler must be used by one thread at a time.
  *   - Coordinates are returned as interleaved x,y doubles into caller-owned
  *     buffers; no memory allocated by the library crosses this interface.
  *   - Version numbers in the comments say in which release a name appeared.
+ *   - The same seed gives the same points however the work is split: one
+ *     pds_run, many bounded pds_run calls or pds_step calls all agree.
  */
 #ifndef POISSONDISK_H
 #define POISSONDISK_H
@@ -45,7 +49,9 @@ extern "C" {
 /* Error codes: fixed values, never renumbered, only appended. (1.0) */
 #define PDS_EINVAL (-1)    /* an argument is invalid: NULL, NaN, infinite, out of its domain */
 #define PDS_ENOMEM (-2)    /* memory could not be allocated                        */
-#define PDS_ESTATE (-3)    /* the call is not allowed in the sampler's current state */
+#define PDS_ESTATE (-3)    /* the call is not allowed in the sampler's current state:
+                              pds_set_domain after the first point, or any change
+                              after an earlier PDS_EINTERNAL                         */
 #define PDS_ERANGE (-4)    /* the radius is too small for the domain: the pattern
                               would not fit in the index type or address space, or
                               double precision cannot resolve it                     */
@@ -60,6 +66,13 @@ extern "C" {
 #define PDS_API
 #endif
 
+/* In C++ the functions are declared noexcept: none of them ever throws. */
+#if defined(__cplusplus) && __cplusplus >= 201103L
+#define PDS_NOEXCEPT noexcept
+#else
+#define PDS_NOEXCEPT
+#endif
+
 /* The opaque sampler handle. (1.0) */
 typedef struct pds_sampler pds_sampler;
 
@@ -72,10 +85,10 @@ typedef struct pds_sampler pds_sampler;
  * too small for the square, see PDS_ERANGE), PDS_ENOMEM.
  * The caller owns *out and releases it with pds_destroy(). (1.0)
  */
-PDS_API int pds_create(pds_sampler **out, double radius, uint64_t seed);
+PDS_API int pds_create(pds_sampler **out, double radius, uint64_t seed) PDS_NOEXCEPT;
 
 /* pds_destroy - release a sampler and everything it holds. NULL is a no-op. (1.0) */
-PDS_API void pds_destroy(pds_sampler *s);
+PDS_API void pds_destroy(pds_sampler *s) PDS_NOEXCEPT;
 
 /*
  * pds_set_domain - sample the closed rectangle [x0,x1]x[y0,y1] instead.
@@ -84,7 +97,7 @@ PDS_API void pds_destroy(pds_sampler *s);
  * PDS_ESTATE (points exist already), PDS_ERANGE (radius too small for this
  * rectangle). (1.0)
  */
-PDS_API int pds_set_domain(pds_sampler *s, double x0, double y0, double x1, double y1);
+PDS_API int pds_set_domain(pds_sampler *s, double x0, double y0, double x1, double y1) PDS_NOEXCEPT;
 
 /*
  * pds_step - add one point, uniform over the free area.
@@ -92,7 +105,7 @@ PDS_API int pds_set_domain(pds_sampler *s, double x0, double y0, double x1, doub
  * added), or PDS_EINVAL (NULL), PDS_ENOMEM, PDS_ESTATE (sampler broken by an
  * earlier PDS_EINTERNAL), PDS_EINTERNAL. (1.0)
  */
-PDS_API int pds_step(pds_sampler *s);
+PDS_API int pds_step(pds_sampler *s) PDS_NOEXCEPT;
 
 /*
  * pds_run - add points until the pattern is maximal or max_new were added.
@@ -101,9 +114,10 @@ PDS_API int pds_step(pds_sampler *s);
  * Returns 0 when the pattern is maximal, 1 when max_new points were added and
  * room is left, or PDS_EINVAL (NULL s), PDS_ENOMEM, PDS_ESTATE, PDS_EINTERNAL.
  * Memory for the whole run is reserved before the first point is added, so a
- * PDS_ENOMEM leaves the pattern exactly as it was. (1.0)
+ * PDS_ENOMEM leaves the pattern exactly as it was. After PDS_EINTERNAL the
+ * points added before the failure stay, and *added counts them. (1.0)
  */
-PDS_API int pds_run(pds_sampler *s, size_t max_new, size_t *added);
+PDS_API int pds_run(pds_sampler *s, size_t max_new, size_t *added) PDS_NOEXCEPT;
 
 /*
  * pds_refine - continue with a smaller radius, keeping every point.
@@ -113,10 +127,10 @@ PDS_API int pds_run(pds_sampler *s, size_t max_new, size_t *added);
  * Returns 0, PDS_EINVAL (NULL, non-finite, <= 0 or larger than the current
  * radius), PDS_ERANGE (too small for the domain), PDS_ENOMEM, PDS_ESTATE. (1.0)
  */
-PDS_API int pds_refine(pds_sampler *s, double radius);
+PDS_API int pds_refine(pds_sampler *s, double radius) PDS_NOEXCEPT;
 
 /* pds_count - number of points so far; 0 for NULL. (1.0) */
-PDS_API size_t pds_count(const pds_sampler *s);
+PDS_API size_t pds_count(const pds_sampler *s) PDS_NOEXCEPT;
 
 /*
  * pds_points - copy points first .. first+count-1, clipped to pds_count(s),
@@ -124,17 +138,17 @@ PDS_API size_t pds_count(const pds_sampler *s);
  * in insertion order. Returns how many points were copied: 0 when s or xy is
  * NULL or first >= pds_count(s). (1.0)
  */
-PDS_API size_t pds_points(const pds_sampler *s, size_t first, size_t count, double *xy);
+PDS_API size_t pds_points(const pds_sampler *s, size_t first, size_t count, double *xy) PDS_NOEXCEPT;
 
 /* pds_radius - the current radius R; NaN for NULL. (1.0) */
-PDS_API double pds_radius(const pds_sampler *s);
+PDS_API double pds_radius(const pds_sampler *s) PDS_NOEXCEPT;
 
 /*
  * pds_free_area - area of the domain farther than R from every point, where a
  * new point could still go; exactly 0 once the pattern is maximal; the whole
  * domain's area before the first point; NaN for NULL. (1.0)
  */
-PDS_API double pds_free_area(const pds_sampler *s);
+PDS_API double pds_free_area(const pds_sampler *s) PDS_NOEXCEPT;
 
 /*
  * pds_verify - re-check the current pattern from scratch, independently of
@@ -144,24 +158,27 @@ PDS_API double pds_free_area(const pds_sampler *s);
  * of its site, every side of the domain covered). O(N) expected time.
  * Returns 0 when the pattern is valid and maximal, 1 when it is valid and room
  * is left, PDS_EINTERNAL when a check fails (a bug: please report it; the
- * message says which check), PDS_EINVAL (NULL), PDS_ENOMEM. (1.0)
+ * message says which check; the sampler stays usable), PDS_EINVAL (NULL),
+ * PDS_ENOMEM. Works on a sampler made read-only by an earlier error. (1.0)
  */
-PDS_API int pds_verify(pds_sampler *s);
+PDS_API int pds_verify(pds_sampler *s) PDS_NOEXCEPT;
 
 /* pds_strerror - static English text for any code, including unknown ones. (1.0) */
-PDS_API const char *pds_strerror(int code);
+PDS_API const char *pds_strerror(int code) PDS_NOEXCEPT;
 
 /*
- * pds_errmsg - the last failure on s in words, or "no error" if none yet. The
- * text stays valid until the next call on s. For NULL, a static text. (1.0)
+ * pds_errmsg - the most recent failure on s in words, starting with the name of
+ * the function that failed, or "no error" if none yet; successful calls do not
+ * clear it. The text stays valid until the next call on s. For NULL, a static
+ * text. (1.0)
  */
-PDS_API const char *pds_errmsg(const pds_sampler *s);
+PDS_API const char *pds_errmsg(const pds_sampler *s) PDS_NOEXCEPT;
 
 /* pds_version_number - MAJOR*10000 + MINOR*100 + PATCH of the library. (1.0) */
-PDS_API unsigned pds_version_number(void);
+PDS_API unsigned pds_version_number(void) PDS_NOEXCEPT;
 
 /* pds_version_string - "MAJOR.MINOR.PATCH" of the library, static. (1.0) */
-PDS_API const char *pds_version_string(void);
+PDS_API const char *pds_version_string(void) PDS_NOEXCEPT;
 
 #ifdef __cplusplus
 }

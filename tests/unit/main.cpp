@@ -8,6 +8,13 @@ int main() {
     srunner_add_suite(runner, predicates_suite());
     srunner_add_suite(runner, quadedge_suite());
     srunner_add_suite(runner, delaunay_suite());
+    srunner_add_suite(runner, angle_suite());
+    srunner_add_suite(runner, tree_suite());
+    srunner_add_suite(runner, hash_map_suite());
+    srunner_add_suite(runner, free_area_suite());
+    srunner_add_suite(runner, verify_suite());
+    srunner_add_suite(runner, sampler_suite());
+    srunner_add_suite(runner, law_suite());
     srunner_run_all(runner, CK_NORMAL);
     const int failed = srunner_ntests_failed(runner);
     srunner_free(runner);

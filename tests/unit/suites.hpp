@@ -10,6 +10,13 @@ Suite* expansion_suite();
 Suite* predicates_suite();
 Suite* quadedge_suite();
 Suite* delaunay_suite();
+Suite* angle_suite();
+Suite* tree_suite();
+Suite* hash_map_suite();
+Suite* free_area_suite();
+Suite* verify_suite();
+Suite* sampler_suite();
+Suite* law_suite();
 
 // Under Valgrind (PDS_TEST_LIGHT set) loops shrink; every behaviour still runs.
 inline bool test_light() { return std::getenv("PDS_TEST_LIGHT") != nullptr; }

@@ -1,0 +1,206 @@
+# poissondisk - one hand-written GNU Makefile: no recursion, no configure.
+#
+#   make            shared + static library and the CLI, in build/
+#   make demo       build, write a maximal pattern to build/demo.txt, print a summary
+#   make check      install what the tests need (Debian, as root), then run them all,
+#                   and the same suites again under Valgrind memcheck
+#   make bench      benchmark figures (not assertions)
+#   make install    PREFIX, DESTDIR, LIBDIR, INCLUDEDIR, BINDIR, MANDIR, PKGCONFIGDIR
+#   make uninstall, make clean
+#   make abi-baseline   regenerate abi/libpoissondisk.abi (only with a map-node bump)
+
+# ---- version: read from the header, the one place it lives -------------------
+version_field = $(shell sed -n 's/^\#define PDS_VERSION_$(1) *\([0-9][0-9]*\).*/\1/p' include/poissondisk.h)
+MAJOR := $(call version_field,MAJOR)
+MINOR := $(call version_field,MINOR)
+PATCH := $(call version_field,PATCH)
+VERSION := $(MAJOR).$(MINOR).$(PATCH)
+
+# ---- user-settable ---------------------------------------------------------------
+PREFIX       ?= /usr/local
+EXEC_PREFIX  ?= $(PREFIX)
+LIBDIR       ?= $(EXEC_PREFIX)/lib
+INCLUDEDIR   ?= $(PREFIX)/include
+BINDIR       ?= $(EXEC_PREFIX)/bin
+MANDIR       ?= $(PREFIX)/share/man
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+DESTDIR      ?=
+CFLAGS       ?= -O2 -g
+CXXFLAGS     ?= -O2 -g
+LDFLAGS      ?=
+PYTHON       ?= python3
+VALGRIND     ?= valgrind
+AR           ?= ar
+
+# ---- mandatory flags: kept apart so user flags cannot drop them ------------------
+# -ffp-contract=off: no fused multiply-add behind our back; the predicates'
+# error bounds and byte-identical output across compilers depend on it.
+PDS_WARN      := -Wall -Wextra -Wshadow -Wconversion -Wno-sign-conversion
+PDS_CXXFLAGS  := -std=c++17 -fPIC -fvisibility=hidden -fvisibility-inlines-hidden \
+                 -ffp-contract=off -fno-fast-math \
+                 -DPDS_BUILDING_LIBRARY -Iinclude -Isrc $(PDS_WARN)
+PDS_CFLAGS    := -std=c99 -Iinclude -Wall -Wextra -pedantic
+PDS_TEST_CXXFLAGS := -std=c++17 -ffp-contract=off -Iinclude -Isrc -Wall -Wextra
+
+B := build
+SONAME    := libpoissondisk.so.$(MAJOR)
+REALNAME  := libpoissondisk.so.$(VERSION)
+LIB_SO    := $(B)/$(REALNAME)
+LIB_A     := $(B)/libpoissondisk.a
+CLI       := $(B)/poissondisk
+MAPFILE   := src/libpoissondisk.map
+
+LIB_SRC   := $(sort $(wildcard src/*.cpp))
+LIB_OBJ   := $(LIB_SRC:src/%.cpp=$(B)/obj/%.o)
+CORE_OBJ  := $(filter-out $(B)/obj/capi.o,$(LIB_OBJ))
+
+UNIT_SRC  := $(sort $(wildcard tests/unit/*.cpp))
+UNIT_BIN  := $(B)/tests/unit
+API_SRC   := $(sort $(wildcard tests/api/*.c))
+API_BIN   := $(B)/tests/api
+EXAMPLE_SRC := $(sort $(wildcard tests/man_examples/*.c))
+EXAMPLE_BIN := $(EXAMPLE_SRC:tests/man_examples/%.c=$(B)/examples/%)
+
+# Check framework flags, looked up when a recipe needs them (it may be installed
+# by 'make check' itself).
+CHECK_LIBS = $$(pkg-config --libs check)
+
+.PHONY: all demo check bench install uninstall clean deps abi-baseline \
+        check-unit check-api check-header check-symbols check-abi check-man \
+        check-examples check-python check-pkgconfig check-cli check-valgrind
+
+all: $(LIB_SO) $(B)/libpoissondisk.so $(B)/$(SONAME) $(LIB_A) $(CLI)
+
+# ---- library -------------------------------------------------------------------------
+$(B)/obj/%.o: src/%.cpp $(wildcard src/*.hpp) include/poissondisk.h Makefile
+	@mkdir -p $(@D)
+	$(CXX) $(PDS_CXXFLAGS) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
+
+$(LIB_SO): $(LIB_OBJ) $(MAPFILE)
+	$(CXX) -shared -Wl,-soname,$(SONAME) -Wl,--version-script=$(MAPFILE) \
+	    -Wl,--no-undefined -Wl,-z,relro -Wl,-z,now $(LDFLAGS) -o $@ $(LIB_OBJ) -lm
+
+$(B)/$(SONAME): $(LIB_SO)
+	ln -sf $(REALNAME) $@
+$(B)/libpoissondisk.so: $(B)/$(SONAME)
+	ln -sf $(SONAME) $@
+
+$(LIB_A): $(LIB_OBJ)
+	rm -f $@
+	$(AR) rcs $@ $(LIB_OBJ)
+
+# ---- command-line program: public API only, linked against the static library --------
+$(CLI): tools/poissondisk.c include/poissondisk.h $(LIB_A)
+	$(CC) $(PDS_CFLAGS) $(CPPFLAGS) $(CFLAGS) -o $@ $< $(LIB_A) $(LDFLAGS) -lstdc++ -lm
+
+# ---- demo: the quick start's first command -------------------------------------------
+DEMO_RADIUS ?= 0.002
+demo: all
+	@./$(CLI) --radius $(DEMO_RADIUS) --seed 1 --verify --stats > $(B)/demo.txt
+	@echo "points written to $(B)/demo.txt"
+
+# ---- tests ---------------------------------------------------------------------------
+deps:
+	@sh tests/install-deps.sh
+
+check: deps all
+	@$(MAKE) --no-print-directory check-header check-symbols check-abi check-unit \
+	    check-api check-examples check-cli check-python check-pkgconfig check-man \
+	    check-valgrind
+	@echo "make check: all checks passed"
+
+$(UNIT_BIN): $(UNIT_SRC) $(CORE_OBJ) $(wildcard tests/unit/*.hpp)
+	@mkdir -p $(@D)
+	$(CXX) $(PDS_TEST_CXXFLAGS) $(CXXFLAGS) -o $@ $(UNIT_SRC) $(CORE_OBJ) $(CHECK_LIBS)
+
+$(API_BIN): $(API_SRC) $(wildcard tests/api/*.h) include/poissondisk.h $(LIB_SO) $(B)/libpoissondisk.so
+	@mkdir -p $(@D)
+	$(CC) $(PDS_CFLAGS) $(CFLAGS) -o $@ $(API_SRC) -L$(B) -lpoissondisk \
+	    -Wl,-rpath,'$$ORIGIN/..' $(CHECK_LIBS) -lm
+
+$(B)/examples/%: tests/man_examples/%.c include/poissondisk.h $(LIB_SO) $(B)/libpoissondisk.so
+	@mkdir -p $(@D)
+	$(CC) $(PDS_CFLAGS) $(CFLAGS) -o $@ $< -L$(B) -lpoissondisk -Wl,-rpath,'$$ORIGIN/..' -lm
+
+check-unit: $(UNIT_BIN)
+	./$(UNIT_BIN)
+
+check-api: $(API_BIN)
+	./$(API_BIN)
+
+check-examples: $(EXAMPLE_BIN)
+	@for e in $(EXAMPLE_BIN); do echo "$$e"; ./$$e > /dev/null || exit 1; done
+
+check-header:
+	@mkdir -p $(B)/tests
+	printf '#include <poissondisk.h>\nint main(void){return pds_version_number()==0;}\n' > $(B)/tests/header.c
+	$(CC) -std=c99 -pedantic -Werror -Wall -Wextra -Iinclude -c $(B)/tests/header.c -o $(B)/tests/header-c.o
+	$(CXX) -x c++ -std=c++11 -pedantic -Werror -Wall -Wextra -Iinclude -c $(B)/tests/header.c -o $(B)/tests/header-cxx.o
+
+check-symbols: $(LIB_SO)
+	sh tests/check-symbols.sh $(LIB_SO) $(MAPFILE)
+
+check-abi: $(LIB_SO)
+	abidiff --no-added-syms --headers-dir2 include --drop-private-types --exported-interfaces-only abi/libpoissondisk.abi $(LIB_SO) || \
+	    { echo "ABI differs from abi/libpoissondisk.abi"; exit 1; }
+
+check-man:
+	mandoc -T lint -W warning man/*.[0-9]
+	sh tests/man_examples/check-pages.sh
+
+check-cli: $(CLI)
+	sh tests/check-cli.sh $(CLI)
+
+check-python: $(LIB_SO) $(B)/libpoissondisk.so
+	PDS_LIBRARY=$(abspath $(LIB_SO)) $(PYTHON) tests/test_python.py
+
+check-pkgconfig: all
+	sh tests/check-pkgconfig.sh
+
+VALGRIND_FLAGS := --error-exitcode=99 --leak-check=full --show-leak-kinds=all \
+                  --errors-for-leak-kinds=all --track-origins=yes -q
+check-valgrind: $(UNIT_BIN) $(API_BIN)
+	CK_FORK=no PDS_TEST_LIGHT=1 $(VALGRIND) $(VALGRIND_FLAGS) ./$(UNIT_BIN)
+	CK_FORK=no PDS_TEST_LIGHT=1 $(VALGRIND) $(VALGRIND_FLAGS) ./$(API_BIN)
+
+abi-baseline: $(LIB_SO)
+	@mkdir -p abi
+	abidw --no-corpus-path --headers-dir include --drop-private-types --exported-interfaces-only $(LIB_SO) > abi/libpoissondisk.abi
+
+# ---- benchmark -----------------------------------------------------------------------
+$(B)/bench: bench/bench.c include/poissondisk.h $(LIB_A)
+	$(CC) $(PDS_CFLAGS) -O2 $(CFLAGS) -o $@ $< $(LIB_A) -lstdc++ -lm
+
+bench: $(B)/bench
+	./$(B)/bench
+
+# ---- install -------------------------------------------------------------------------
+install: all
+	install -d $(DESTDIR)$(LIBDIR) $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(BINDIR) \
+	    $(DESTDIR)$(PKGCONFIGDIR) $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man3
+	install -m 755 $(LIB_SO) $(DESTDIR)$(LIBDIR)/$(REALNAME)
+	ln -sf $(REALNAME) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libpoissondisk.so
+	install -m 644 $(LIB_A) $(DESTDIR)$(LIBDIR)/libpoissondisk.a
+	install -m 644 include/poissondisk.h $(DESTDIR)$(INCLUDEDIR)/poissondisk.h
+	# The .pc file is written here, so it names the directories of this install.
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' \
+	    -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|g' -e 's|@VERSION@|$(VERSION)|g' \
+	    pkgconfig/poissondisk.pc.in > $(DESTDIR)$(PKGCONFIGDIR)/poissondisk.pc
+	chmod 644 $(DESTDIR)$(PKGCONFIGDIR)/poissondisk.pc
+	install -m 755 $(CLI) $(DESTDIR)$(BINDIR)/poissondisk
+	install -m 644 man/*.1 $(DESTDIR)$(MANDIR)/man1/
+	install -m 644 man/*.3 $(DESTDIR)$(MANDIR)/man3/
+	while read -r name page; do ln -sf "$$page" "$(DESTDIR)$(MANDIR)/man3/$$name"; done < man/links.txt
+
+uninstall:
+	rm -f $(DESTDIR)$(LIBDIR)/$(REALNAME) $(DESTDIR)$(LIBDIR)/$(SONAME) \
+	    $(DESTDIR)$(LIBDIR)/libpoissondisk.so $(DESTDIR)$(LIBDIR)/libpoissondisk.a \
+	    $(DESTDIR)$(INCLUDEDIR)/poissondisk.h $(DESTDIR)$(PKGCONFIGDIR)/poissondisk.pc \
+	    $(DESTDIR)$(BINDIR)/poissondisk
+	for f in man/*.1; do rm -f $(DESTDIR)$(MANDIR)/man1/$${f#man/}; done
+	for f in man/*.3; do rm -f $(DESTDIR)$(MANDIR)/man3/$${f#man/}; done
+	while read -r name page; do rm -f "$(DESTDIR)$(MANDIR)/man3/$$name"; done < man/links.txt
+
+clean:
+	rm -rf $(B)

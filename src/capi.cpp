@@ -1,0 +1,221 @@
+// capi.cpp - the C interface: the only extern "C" code in the library.
+//
+// Each entry point checks its arguments, runs the core under one exception
+// guard (std::bad_alloc -> PDS_ENOMEM, anything else -> PDS_EINTERNAL and the
+// handle turns read-only), and records a message in a fixed buffer inside the
+// handle, so reporting an error can never itself fail. No exception crosses
+// this file's functions: they are all noexcept.
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <new>
+
+#include "poissondisk.h"
+#include "sampler.hpp"
+
+struct pds_sampler {
+    explicit pds_sampler(std::unique_ptr<pds::Sampler> c) : core(std::move(c)) {}
+    std::unique_ptr<pds::Sampler> core;
+    bool broken = false;  // an internal invariant failed: refuse changes
+    char message[256] = "no error";
+};
+
+namespace {
+
+#define PDS_STR2(x) #x
+#define PDS_STR(x) PDS_STR2(x)
+constexpr const char kVersionString[] =
+    PDS_STR(PDS_VERSION_MAJOR) "." PDS_STR(PDS_VERSION_MINOR) "." PDS_STR(PDS_VERSION_PATCH);
+
+__attribute__((format(printf, 3, 4))) int fail(pds_sampler* s, int code, const char* fmt, ...) {
+    if (s != nullptr) {
+        va_list args;
+        va_start(args, fmt);
+        std::vsnprintf(s->message, sizeof s->message, fmt, args);
+        va_end(args);
+    }
+    return code;
+}
+
+const char* limit_text(pds::Limit limit) {
+    switch (limit) {
+        case pds::Limit::too_many_points:
+            return "the radius is too small for the domain: the pattern would exceed the "
+                   "supported number of points";
+        case pds::Limit::radius_below_precision:
+            return "the radius is too small relative to the domain's coordinates for double "
+                   "precision (it must be at least 2^-26 of their magnitude)";
+        case pds::Limit::coordinates_too_small:
+            return "the domain's coordinates are too close to zero (below 2^-900)";
+        case pds::Limit::ok:
+            break;
+    }
+    return "no limit";
+}
+
+// Runs f() on s's core; maps exceptions to codes.
+template <class F>
+int guarded(pds_sampler* s, const char* what, F&& f) PDS_NOEXCEPT {
+    try {
+        return f();
+    } catch (const std::bad_alloc&) {
+        return fail(s, PDS_ENOMEM, "%s: out of memory", what);
+    } catch (const std::exception& e) {
+        s->broken = true;
+        return fail(s, PDS_EINTERNAL, "%s: internal error (please report): %s", what, e.what());
+    } catch (...) {
+        s->broken = true;
+        return fail(s, PDS_EINTERNAL, "%s: internal error (please report)", what);
+    }
+}
+
+int refuse_broken(pds_sampler* s, const char* what) {
+    return fail(s, PDS_ESTATE, "%s: the sampler is read-only after an internal error", what);
+}
+
+}  // namespace
+
+extern "C" {
+
+PDS_API int pds_create(pds_sampler** out, double radius, uint64_t seed) PDS_NOEXCEPT {
+    if (out == nullptr) return PDS_EINVAL;
+    *out = nullptr;
+    if (!std::isfinite(radius) || radius <= 0.0) return PDS_EINVAL;
+    if (pds::Sampler::check_limits(pds::Box{0.0, 0.0, 1.0, 1.0}, radius) != pds::Limit::ok)
+        return PDS_ERANGE;
+    try {
+        *out = new pds_sampler(std::make_unique<pds::Sampler>(radius, seed));
+        return 0;
+    } catch (...) {
+        return PDS_ENOMEM;
+    }
+}
+
+PDS_API void pds_destroy(pds_sampler* s) PDS_NOEXCEPT { delete s; }
+
+PDS_API int pds_set_domain(pds_sampler* s, double x0, double y0, double x1, double y1) PDS_NOEXCEPT {
+    if (s == nullptr) return PDS_EINVAL;
+    if (s->broken) return refuse_broken(s, "pds_set_domain");
+    if (!std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1))
+        return fail(s, PDS_EINVAL, "pds_set_domain: coordinates must be finite");
+    if (!(x0 < x1) || !(y0 < y1))
+        return fail(s, PDS_EINVAL,
+                    "pds_set_domain: the rectangle [%g,%g]x[%g,%g] is empty or inverted "
+                    "(need x0 < x1 and y0 < y1)",
+                    x0, x1, y0, y1);
+    if (s->core->count() != 0)
+        return fail(s, PDS_ESTATE, "pds_set_domain: points exist already (%zu); set the domain "
+                    "before the first point", s->core->count());
+    const pds::Box box{x0, y0, x1, y1};
+    const pds::Limit limit = pds::Sampler::check_limits(box, s->core->radius());
+    if (limit != pds::Limit::ok)
+        return fail(s, PDS_ERANGE, "pds_set_domain: %s (radius %g)", limit_text(limit),
+                    s->core->radius());
+    return guarded(s, "pds_set_domain", [&] {
+        s->core->set_domain(box);
+        return 0;
+    });
+}
+
+PDS_API int pds_step(pds_sampler* s) PDS_NOEXCEPT {
+    if (s == nullptr) return PDS_EINVAL;
+    if (s->broken) return refuse_broken(s, "pds_step");
+    return guarded(s, "pds_step", [&] { return s->core->step() ? 1 : 0; });
+}
+
+PDS_API int pds_run(pds_sampler* s, size_t max_new, size_t* added) PDS_NOEXCEPT {
+    if (added != nullptr) *added = 0;
+    if (s == nullptr) return PDS_EINVAL;
+    if (s->broken) return refuse_broken(s, "pds_run");
+    const std::size_t before = s->core->count();
+    const int rc = guarded(s, "pds_run", [&] {
+        bool maximal = false;
+        s->core->run(max_new, &maximal);
+        return maximal ? 0 : 1;
+    });
+    if (added != nullptr) *added = s->core->count() - before;
+    return rc;
+}
+
+PDS_API int pds_refine(pds_sampler* s, double radius) PDS_NOEXCEPT {
+    if (s == nullptr) return PDS_EINVAL;
+    if (s->broken) return refuse_broken(s, "pds_refine");
+    if (!std::isfinite(radius) || radius <= 0.0)
+        return fail(s, PDS_EINVAL, "pds_refine: the radius must be finite and > 0 (got %g)", radius);
+    const double current = s->core->radius();
+    if (radius > current)
+        return fail(s, PDS_EINVAL, "pds_refine: the radius %g is larger than the current %g",
+                    radius, current);
+    if (radius == current) return 0;
+    const pds::Limit limit = pds::Sampler::check_limits(s->core->domain(), radius);
+    if (limit != pds::Limit::ok)
+        return fail(s, PDS_ERANGE, "pds_refine: %s (radius %g)", limit_text(limit), radius);
+    return guarded(s, "pds_refine", [&] {
+        s->core->refine(radius);
+        return 0;
+    });
+}
+
+PDS_API size_t pds_count(const pds_sampler* s) PDS_NOEXCEPT { return s ? s->core->count() : 0; }
+
+PDS_API size_t pds_points(const pds_sampler* s, size_t first, size_t count, double* xy) PDS_NOEXCEPT {
+    if (s == nullptr || xy == nullptr) return 0;
+    return s->core->copy_points(first, count, xy);
+}
+
+PDS_API double pds_radius(const pds_sampler* s) PDS_NOEXCEPT {
+    return s ? s->core->radius() : std::numeric_limits<double>::quiet_NaN();
+}
+
+PDS_API double pds_free_area(const pds_sampler* s) PDS_NOEXCEPT {
+    return s ? s->core->free_area() : std::numeric_limits<double>::quiet_NaN();
+}
+
+PDS_API int pds_verify(pds_sampler* s) PDS_NOEXCEPT {
+    if (s == nullptr) return PDS_EINVAL;
+    try {
+        const pds::VerifyReport rep = s->core->verify();
+        if (!rep.valid)
+            return fail(s, PDS_EINTERNAL, "pds_verify: check failed (please report): %s",
+                        rep.failure.c_str());
+        return rep.maximal ? 0 : 1;
+    } catch (const std::bad_alloc&) {
+        return fail(s, PDS_ENOMEM, "pds_verify: out of memory");
+    } catch (const std::exception& e) {
+        return fail(s, PDS_EINTERNAL, "pds_verify: internal error (please report): %s", e.what());
+    } catch (...) {
+        return fail(s, PDS_EINTERNAL, "pds_verify: internal error (please report)");
+    }
+}
+
+PDS_API const char* pds_strerror(int code) PDS_NOEXCEPT {
+    switch (code) {
+        case 0:
+            return "success";
+        case PDS_EINVAL:
+            return "invalid argument";
+        case PDS_ENOMEM:
+            return "out of memory";
+        case PDS_ESTATE:
+            return "operation not allowed in the sampler's current state";
+        case PDS_ERANGE:
+            return "radius too small for the domain";
+        case PDS_EINTERNAL:
+            return "internal error";
+        default:
+            return code > 0 ? "not an error (a positive status)" : "unknown error code";
+    }
+}
+
+PDS_API const char* pds_errmsg(const pds_sampler* s) PDS_NOEXCEPT {
+    return s ? s->message : "invalid sampler handle (NULL)";
+}
+
+PDS_API unsigned pds_version_number(void) PDS_NOEXCEPT { return PDS_VERSION_NUMBER; }
+
+PDS_API const char* pds_version_string(void) PDS_NOEXCEPT { return kVersionString; }
+
+}  // extern "C"

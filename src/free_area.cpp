@@ -1,0 +1,128 @@
+// free_area.cpp - fan-triangle geometry of a cell's free region (Jones 2006,
+// section 3.1, cases 1-4; see free_area.hpp).
+#include "free_area.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "angle.hpp"
+
+namespace pds {
+namespace cell_detail {
+
+namespace {
+
+double cross(const Point& a, const Point& b) { return a.x * b.y - a.y * b.x; }
+double dot(const Point& a, const Point& b) { return a.x * b.x + a.y * b.y; }
+
+// The fan triangle's pieces, skipping triangles inside the disk: when both ends
+// of the far side are within R, so is the whole triangle (it is convex).
+int fan_pieces(const Vtx& va, const Vtx& vb, double r2, Piece out[2]) {
+    const Point a{va.x, va.y}, b{vb.x, vb.y};
+    if (dot(a, a) <= r2 && dot(b, b) <= r2) return 0;
+    return split_fan_triangle(a, b, r2, out);
+}
+
+}  // namespace
+
+Vtx voronoi_vertex(const Point& b, const Point& d) {
+    const double bb = dot(b, b), dd = dot(d, d);
+    const double cr = cross(b, d);
+    // Delaunay triangles around a site are counterclockwise, and with points
+    // at least R apart inside the ghost square their angles stay far from 0.
+    if (!(cr > 0.0) || !std::isfinite(cr))
+        throw std::logic_error("degenerate Delaunay triangle around a site");
+    const double den = 2.0 * cr;
+    const double vx = (d.y * bb - b.y * dd) / den;
+    const double vy = (b.x * dd - d.x * bb) / den;
+    // Forward error: the circumcentre's sensitivity to rounding of b and d and
+    // of the arithmetic is below ~(|b|+|d|)^2 / |b x d| ulps of its distance
+    // (see the design note in free_area.hpp); 128 is a generous constant.
+    const double err = 128.0 * kUnitRoundoff * (bb + dd) / cr * (std::fabs(vx) + std::fabs(vy));
+    return Vtx{vx, vy, err};
+}
+
+int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]) {
+    const double ex = b.x - a.x, ey = b.y - a.y;
+    const double ee = ex * ex + ey * ey;
+    if (ee == 0.0) return 0;
+    const auto at = [&](double t) { return Point{a.x + t * ex, a.y + t * ey}; };
+    const double closest = -(a.x * ex + a.y * ey) / ee;  // parameter of closest approach
+    const double cr = cross(a, b);
+    const double h2 = cr * cr / ee;                        // squared distance of the line
+    if (h2 >= r2) {
+        // The far side misses the circle (case 3 if the closest approach is
+        // inside the side: split there so distance is monotone on each piece).
+        if (closest > 0.0 && closest < 1.0) {
+            const Point m = at(closest);
+            out[0] = Piece{a, m};
+            out[1] = Piece{m, b};
+            return 2;
+        }
+        out[0] = Piece{a, b};
+        return 1;
+    }
+    // The line cuts the circle at t1 < t2; only the parts outside count
+    // (cases 1 and 2).
+    const double s = std::sqrt((r2 - h2) / ee);
+    const double t1 = closest - s, t2 = closest + s;
+    int n = 0;
+    if (t1 > 0.0) out[n++] = Piece{a, t1 < 1.0 ? at(t1) : b};
+    if (t2 < 1.0) out[n++] = Piece{t2 > 0.0 ? at(t2) : a, b};
+    return n;
+}
+
+double piece_area(const Piece& piece, double r2) {
+    const double cr = cross(piece.p, piece.q);
+    const double theta = angle_of(cr, dot(piece.p, piece.q));
+    const double area = 0.5 * (cr - r2 * theta);
+    return area > 0.0 ? area : 0.0;
+}
+
+bool draw_in_piece(const Piece& piece, double r, double r2, Rng& rng, Point* out) {
+    // Quadrilateral p_i, p, q, q_j where p_i, q_j are the circle's crossings of
+    // the rays to p and q (figure 5); it contains the piece's free region and
+    // at least half of it is free, so few draws are rejected.
+    const Point& p = piece.p;
+    const Point& q = piece.q;
+    const double sp = r / std::sqrt(dot(p, p)), sq = r / std::sqrt(dot(q, q));
+    const Point pi{p.x * sp, p.y * sp}, qj{q.x * sq, q.y * sq};
+    const Point e1{p.x - pi.x, p.y - pi.y}, e2{q.x - pi.x, q.y - pi.y}, e3{qj.x - pi.x, qj.y - pi.y};
+    const double a1 = std::fabs(cross(e1, e2)), a2 = std::fabs(cross(e2, e3));
+    if (!(a1 + a2 > 0.0)) return false;
+    const bool first = rng.next_double() * (a1 + a2) < a1;
+    const Point& u = first ? e1 : e2;
+    const Point& v = first ? e2 : e3;
+    double s = rng.next_double(), t = rng.next_double();
+    if (s + t > 1.0) {
+        s = 1.0 - s;
+        t = 1.0 - t;
+    }
+    const Point x{pi.x + s * u.x + t * v.x, pi.y + s * u.y + t * v.y};
+    if (dot(x, x) < r2) return false;
+    *out = x;
+    return true;
+}
+
+void MeasureSink::edge(const Vtx& a, const Vtx& b) {
+    Piece pieces[2];
+    const int n = fan_pieces(a, b, r2_, pieces);
+    for (int i = 0; i < n; ++i) sum_ += piece_area(pieces[i], r2_);
+}
+
+void SelectSink::edge(const Vtx& a, const Vtx& b) {
+    if (found_) return;
+    Piece pieces[2];
+    const int n = fan_pieces(a, b, r2_, pieces);
+    for (int i = 0; i < n; ++i) {
+        sum_ += piece_area(pieces[i], r2_);
+        if (sum_ > target_) {
+            found_ = true;
+            piece_ = pieces[i];
+            return;
+        }
+    }
+}
+
+}  // namespace cell_detail
+}  // namespace pds

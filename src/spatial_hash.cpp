@@ -1,0 +1,35 @@
+// spatial_hash.cpp - see spatial_hash.hpp.
+#include "spatial_hash.hpp"
+
+#include <cmath>
+
+namespace pds {
+
+SpatialHash::SpatialHash(const std::vector<Point>& points, std::size_t first, const Box& domain,
+                         double radius)
+    : domain_(domain), cell_(radius * (1.0 + 0x1.0p-20)) {
+    // Cells per axis must fit in 32 bits; a cell that large holds more points,
+    // which costs time, not correctness.
+    const double span = domain.width() > domain.height() ? domain.width() : domain.height();
+    if (span / cell_ > 1e9) cell_ = span / 1e9;
+    next_.assign(points.size(), kEnd);
+    cells_.reserve(points.size() - first);
+    for (std::size_t i = first; i < points.size(); ++i) {
+        const std::uint64_t k = key(cell_x(points[i]), cell_y(points[i]));
+        const std::uint32_t* head = cells_.find(k);
+        next_[i] = head ? *head : kEnd;
+        cells_.insert_or_assign(k, static_cast<std::uint32_t>(i));
+    }
+}
+
+std::int64_t SpatialHash::cell_x(const Point& p) const {
+    const double c = std::floor((p.x - domain_.x0) / cell_);
+    return c < 0.0 ? 0 : static_cast<std::int64_t>(c);
+}
+
+std::int64_t SpatialHash::cell_y(const Point& p) const {
+    const double c = std::floor((p.y - domain_.y0) / cell_);
+    return c < 0.0 ? 0 : static_cast<std::int64_t>(c);
+}
+
+}  // namespace pds

@@ -1,0 +1,293 @@
+// verify.cpp - the certificate described in verify.hpp.
+#include "verify.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "expansion.hpp"
+#include "predicates.hpp"
+#include "spatial_hash.hpp"
+
+namespace pds {
+
+namespace {
+
+using E = Expansion;
+using Q = QuadEdgeMesh;
+
+std::string at_point(const char* what, std::size_t index) {
+    return std::string(what) + " (point " + std::to_string(index) + ")";
+}
+
+bool check_points(const Delaunay& dt, const Box& box, double r, VerifyReport& rep) {
+    const std::vector<Point>& pts = dt.points();
+    for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
+        if (!box.contains(pts[i])) {
+            rep.failure = at_point("a point lies outside the domain", i - Delaunay::kGhosts);
+            return false;
+        }
+    }
+    const SpatialHash grid(pts, Delaunay::kGhosts, box, r);
+    for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
+        bool close = false;
+        grid.for_each_near(pts[i], [&](std::uint32_t j) {
+            if (j < i && compare_distance(pts[i], pts[j], r) < 0) close = true;
+        });
+        if (close) {
+            rep.failure = at_point("two points are closer than the radius", i - Delaunay::kGhosts);
+            return false;
+        }
+    }
+    return true;
+}
+
+bool check_mesh(const Delaunay& dt, VerifyReport& rep) {
+    const QuadEdgeMesh& m = dt.mesh();
+    const std::size_t records = m.record_count();
+    for (std::size_t r = 0; r < records; ++r) {
+        if (!m.is_live(r)) continue;
+        for (std::uint32_t k = 0; k < 4; ++k) {
+            const EdgeRef e = static_cast<EdgeRef>(4 * r + k);
+            const EdgeRef n = m.onext(e);
+            if ((n >> 2) >= records || !m.is_live(n >> 2) || Q::rot(m.onext(Q::rot(n))) != e) {
+                rep.failure = "the quad-edge structure is inconsistent";
+                return false;
+            }
+        }
+        const EdgeRef e = static_cast<EdgeRef>(4 * r);
+        if (m.org(m.onext(e)) != m.org(e)) {
+            rep.failure = "a vertex ring mixes origins";
+            return false;
+        }
+    }
+    // Faces: one quadrilateral (outside the ghosts), all others CCW triangles,
+    // each edge with triangles on both sides locally Delaunay; Euler's formula.
+    std::vector<std::uint8_t> seen(4 * records, 0);
+    std::size_t faces = 0, outer = 0;
+    for (std::size_t r = 0; r < records; ++r) {
+        if (!m.is_live(r)) continue;
+        for (std::uint32_t k = 0; k < 4; k += 2) {
+            const EdgeRef start = static_cast<EdgeRef>(4 * r + k);
+            if (seen[start]) continue;
+            ++faces;
+            std::size_t sides = 0;
+            EdgeRef e = start;
+            do {
+                seen[e] = 1;
+                e = m.lnext(e);
+                ++sides;
+            } while (e != start && sides <= 4);
+            if (e != start || sides < 3) {
+                rep.failure = "a face of the mesh is not a triangle";
+                return false;
+            }
+            if (sides == 4) {
+                ++outer;
+                continue;
+            }
+            const Point& a = dt.point(m.org(start));
+            const Point& b = dt.point(m.dest(start));
+            const Point& c = dt.point(m.dest(m.lnext(start)));
+            if (orient2d(a, b, c) <= 0) {
+                rep.failure = "a triangle of the mesh is not counterclockwise";
+                return false;
+            }
+            // The neighbour across `start`, if it is a triangle.
+            const EdgeRef s = Q::sym(start);
+            if (m.lnext(m.lnext(m.lnext(s))) == s) {
+                const Point& d = dt.point(m.dest(m.lnext(s)));
+                if (incircle(a, b, c, d) > 0) {
+                    rep.failure = "the mesh is not Delaunay";
+                    return false;
+                }
+            }
+        }
+    }
+    if (outer != 1 || dt.vertex_count() + faces != m.live_count() + 2) {
+        rep.failure = "the mesh is not a triangulation of the ghost square";
+        return false;
+    }
+    return true;
+}
+
+// ---- maximality: Voronoi vertices ----------------------------------------------
+
+// True when the circumcentre of the CCW triangle (a, b, c) lies in the closed box
+// and is farther than r from the corners (an uncovered Voronoi vertex).
+bool uncovered_vertex(const Point& a, const Point& b, const Point& c, const Box& box, double r) {
+    const E bx = E::diff(b.x, a.x), by = E::diff(b.y, a.y);
+    const E dx = E::diff(c.x, a.x), dy = E::diff(c.y, a.y);
+    const E bb = bx * bx + by * by, dd = dx * dx + dy * dy;
+    const E den = (bx * dy - by * dx).scaled(2.0);  // > 0
+    const E nx = dy * bb - by * dd, ny = bx * dd - dx * bb;
+    // centre = a + (nx, ny) / den; inside the box iff x0*den <= a.x*den + nx <= x1*den.
+    const auto within = [&](double lo, double at, double hi, const E& n) {
+        const E pos = n + den.scaled(at);
+        return (pos - den.scaled(lo)).sign() >= 0 && (den.scaled(hi) - pos).sign() >= 0;
+    };
+    if (!within(box.x0, a.x, box.x1, nx) || !within(box.y0, a.y, box.y1, ny)) return false;
+    const E rr = E::product(r, r);
+    return (nx * nx + ny * ny - rr * den * den).sign() > 0;
+}
+
+// Float filter for uncovered_vertex: 1 certainly uncovered, 0 certainly not,
+// -1 undecided.
+int uncovered_vertex_fast(const Point& a, const Point& b, const Point& c, const Box& box, double r) {
+    const double bx = b.x - a.x, by = b.y - a.y, dx = c.x - a.x, dy = c.y - a.y;
+    const double bb = bx * bx + by * by, dd = dx * dx + dy * dy;
+    const double cr = bx * dy - by * dx;
+    if (!(cr > 0.0)) return -1;
+    const double vx = (dy * bb - by * dd) / (2.0 * cr), vy = (bx * dd - dx * bb) / (2.0 * cr);
+    const double err = 256.0 * 0x1.0p-53 * (bb + dd) / cr * (std::fabs(vx) + std::fabs(vy)) +
+                       0x1.0p-50 * (std::fabs(a.x) + std::fabs(a.y));
+    const double cx = a.x + vx, cy = a.y + vy;
+    const auto side = [&](double v, double lo, double hi) {
+        if (v < lo - err || v > hi + err) return 0;  // certainly outside
+        if (v > lo + err && v < hi - err) return 1;  // certainly inside
+        return -1;
+    };
+    const int in_x = side(cx, box.x0, box.x1), in_y = side(cy, box.y0, box.y1);
+    if (in_x == 0 || in_y == 0) return 0;
+    const double d2 = vx * vx + vy * vy, r2 = r * r;
+    const double margin = 2.0 * r * err + err * err + 8.0 * 0x1.0p-53 * r2;
+    if (d2 < r2 - margin) return 0;
+    if (in_x == 1 && in_y == 1 && d2 > r2 + margin) return 1;
+    return -1;
+}
+
+bool voronoi_vertices_covered(const Delaunay& dt, const Box& box, double r, VerifyReport& rep) {
+    const QuadEdgeMesh& m = dt.mesh();
+    for (std::size_t rec = 0; rec < m.record_count(); ++rec) {
+        if (!m.is_live(rec)) continue;
+        for (std::uint32_t k = 0; k < 4; k += 2) {
+            const EdgeRef e = static_cast<EdgeRef>(4 * rec + k);
+            const EdgeRef f = m.lnext(e), g = m.lnext(f);
+            if (m.lnext(g) != e) continue;  // the outer face
+            // Visit each triangle once: from its edge with the smallest reference.
+            if (e > f || e > g) continue;
+            const Point& a = dt.point(m.org(e));
+            const Point& b = dt.point(m.org(f));
+            const Point& c = dt.point(m.org(g));
+            int u = uncovered_vertex_fast(a, b, c, box, r);
+            if (u < 0) u = uncovered_vertex(a, b, c, box, r) ? 1 : 0;
+            if (u == 1) {
+                rep.failure = "a Voronoi vertex inside the domain is farther than R from its sites";
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+// ---- maximality: the sides of the domain -------------------------------------------
+
+// A site seen from a side of the domain: position along the side, exact
+// squared distance to the side's line.
+struct SideSite {
+    double along;
+    E h2;
+    E c;  // along^2 + h2: the constant of the line g(x) = -2 along x + c
+};
+
+// x where the lines of sites i < j (by `along`) meet: (cj - ci) / (2 (aj - ai)).
+Rational meeting_point(const SideSite& i, const SideSite& j) {
+    return make_rational(j.c - i.c, E::diff(j.along, i.along).scaled(2.0));
+}
+
+// (x - along)^2 + h2 <= r^2 at x = num/den (den > 0).
+bool covers_at(const SideSite& s, const Rational& x, const E& r2) {
+    const E diff = x.num - x.den.scaled(s.along);
+    const E den2 = x.den * x.den;
+    return (r2 * den2 - diff * diff - s.h2 * den2).sign() >= 0;
+}
+
+// Is the segment [lo, hi] of a side covered by the disks of `sites`?
+bool side_covered(std::vector<SideSite>& sites, double lo, double hi, const E& r2) {
+    if (sites.empty()) return false;
+    std::sort(sites.begin(), sites.end(), [](const SideSite& a, const SideSite& b) {
+        if (a.along != b.along) return a.along < b.along;
+        return (a.h2 - b.h2).sign() < 0;
+    });
+    // Lower envelope of the lines g_i (the nearest site along the side), by
+    // increasing position; a line is dropped when its neighbours meet before it
+    // would appear.
+    std::vector<const SideSite*> env;
+    for (const SideSite& s : sites) {
+        if (!env.empty() && env.back()->along == s.along) continue;  // same position, farther
+        while (env.size() >= 2 &&
+               compare(meeting_point(*env[env.size() - 2], *env.back()),
+                       meeting_point(*env.back(), s)) >= 0)
+            env.pop_back();
+        env.push_back(&s);
+    }
+    // On each envelope piece the squared distance is convex, so checking the
+    // piece's ends (clipped to [lo, hi]) decides it.
+    const Rational lo_r = make_rational(E(lo), E(1.0)), hi_r = make_rational(E(hi), E(1.0));
+    for (std::size_t k = 0; k < env.size(); ++k) {
+        Rational a = lo_r, b = hi_r;
+        if (k > 0) {
+            const Rational m = meeting_point(*env[k - 1], *env[k]);
+            if (compare(m, a) > 0) a = m;
+        }
+        if (k + 1 < env.size()) {
+            const Rational m = meeting_point(*env[k], *env[k + 1]);
+            if (compare(m, b) < 0) b = m;
+        }
+        if (compare(a, b) > 0) continue;  // this piece lies outside [lo, hi]
+        if (!covers_at(*env[k], a, r2) || !covers_at(*env[k], b, r2)) return false;
+    }
+    return true;
+}
+
+bool sides_covered(const Delaunay& dt, const Box& box, double r, VerifyReport& rep) {
+    const E r2 = E::product(r, r);
+    const std::vector<Point>& pts = dt.points();
+    // For each side: the coordinate along it, and the line's fixed coordinate.
+    struct Side {
+        bool horizontal;
+        double line, lo, hi;
+        const char* name;
+    };
+    const Side sides[4] = {{true, box.y0, box.x0, box.x1, "bottom"},
+                           {true, box.y1, box.x0, box.x1, "top"},
+                           {false, box.x0, box.y0, box.y1, "left"},
+                           {false, box.x1, box.y0, box.y1, "right"}};
+    for (const Side& side : sides) {
+        std::vector<SideSite> near;
+        for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
+            const double across = side.horizontal ? pts[i].y : pts[i].x;
+            if (std::fabs(across - side.line) > 2.0 * r) continue;  // cheap prefilter
+            const E h = E::diff(across, side.line);
+            E h2 = h * h;
+            if ((h2 - r2).sign() > 0) continue;  // cannot reach the side
+            const double along = side.horizontal ? pts[i].x : pts[i].y;
+            E c = E::product(along, along) + h2;
+            near.push_back(SideSite{along, std::move(h2), std::move(c)});
+        }
+        if (!side_covered(near, side.lo, side.hi, r2)) {
+            rep.failure = std::string("the ") + side.name + " side of the domain is not covered";
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+VerifyReport verify_pattern(const Delaunay& dt, const Box& domain, double radius) {
+    VerifyReport rep;
+    if (!check_points(dt, domain, radius, rep) || !check_mesh(dt, rep)) {
+        rep.valid = false;
+        return rep;
+    }
+    VerifyReport gap;
+    rep.maximal = dt.vertex_count() > Delaunay::kGhosts &&
+                  voronoi_vertices_covered(dt, domain, radius, gap) &&
+                  sides_covered(dt, domain, radius, gap);
+    if (!rep.maximal) rep.failure = gap.failure.empty() ? "no points yet" : gap.failure;
+    return rep;
+}
+
+}  // namespace pds

@@ -1,0 +1,35 @@
+// verify.hpp - an independent certificate for a pattern.
+//
+// Re-derives everything the sampler promises, from the points and the mesh
+// only (not from the free areas or the tree), with exact arithmetic:
+//   - every point inside the domain, every pair at least R apart (through a
+//     spatial hash, so the check does not trust the triangulation);
+//   - the quad-edge mesh consistent, its faces counterclockwise triangles, and
+//     every edge locally Delaunay (hence the mesh is the Delaunay triangulation);
+//   - maximality: every Voronoi vertex (triangle circumcentre) inside the domain
+//     within R of its sites, and every side of the domain covered by the disks
+//     (decided on the lower envelope of the distance parabolas along the side,
+//     independently of the mesh).
+// O(N) expected time for the first three, O(N + S log S) for maximality with S
+// the points within R of a side. May allocate; never called mid-mutation.
+#ifndef PDS_VERIFY_HPP
+#define PDS_VERIFY_HPP
+
+#include <string>
+
+#include "delaunay.hpp"
+#include "point.hpp"
+
+namespace pds {
+
+struct VerifyReport {
+    bool valid = true;     // false: a guarantee is broken (the text says which)
+    bool maximal = false;  // meaningful when valid
+    std::string failure;
+};
+
+VerifyReport verify_pattern(const Delaunay& dt, const Box& domain, double radius);
+
+}  // namespace pds
+
+#endif

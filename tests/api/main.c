@@ -1,0 +1,33 @@
+/*
+ * main.c - runs every public-API suite; exit status non-zero on any failure.
+ *
+ * Built by the Makefile into build/tests/api against build/libpoissondisk.so.
+ * Env: CK_FORK=no runs in one process (for Valgrind); PDS_TEST_LIGHT=1 shrinks
+ * the heavy loops (see test_light() in helpers.c); CK_RUN_SUITE / CK_RUN_CASE
+ * select one suite / TCase by name.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "helpers.h"
+#include "suites.h"
+
+int main(void)
+{
+    SRunner *runner = srunner_create(codes_suite());
+    int failed;
+
+    srunner_add_suite(runner, args_suite());
+    srunner_add_suite(runner, state_suite());
+    srunner_add_suite(runner, semantics_suite());
+    srunner_add_suite(runner, determinism_suite());
+    srunner_add_suite(runner, properties_suite());
+    srunner_add_suite(runner, lifecycle_suite());
+
+    if (test_light())
+        printf("PDS_TEST_LIGHT is set: heavy loops shrunk, calibration skipped\n");
+    srunner_run_all(runner, CK_NORMAL);
+    failed = srunner_ntests_failed(runner);
+    srunner_free(runner);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,26 @@
+/*
+ * suites.h - the public-API test suites, one per file, collected by main.c.
+ *
+ * Each suite tests one area of the contract in include/poissondisk.h:
+ *   codes_suite        pds_strerror, pds_errmsg texts, version functions   (codes.c)
+ *   args_suite         every invalid argument: code, message, no change    (args.c)
+ *   state_suite        what is allowed when (set_domain, refine, run)      (state.c)
+ *   semantics_suite    step/run/refine/points/free_area/verify meaning     (semantics.c)
+ *   determinism_suite  same seed -> same bytes; no shared state            (determinism.c)
+ *   properties_suite   distance, containment, maximality over seeds        (properties.c)
+ *   lifecycle_suite    create/destroy cycles, destroy mid-run (Valgrind)   (lifecycle.c)
+ */
+#ifndef PDS_TESTS_API_SUITES_H
+#define PDS_TESTS_API_SUITES_H
+
+#include <check.h>
+
+Suite *codes_suite(void);
+Suite *args_suite(void);
+Suite *state_suite(void);
+Suite *semantics_suite(void);
+Suite *determinism_suite(void);
+Suite *properties_suite(void);
+Suite *lifecycle_suite(void);
+
+#endif /* PDS_TESTS_API_SUITES_H */

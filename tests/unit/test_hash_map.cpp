@@ -1,0 +1,64 @@
+// test_hash_map.cpp - the hash map under growth, against std::map; and the
+// spatial hash's neighbour queries against brute force.
+#include <map>
+#include <random>
+
+#include "hash_map.hpp"
+#include "spatial_hash.hpp"
+#include "suites.hpp"
+
+START_TEST(agrees_with_std_map) {
+    pds::HashMap h;
+    std::map<std::uint64_t, std::uint32_t> ref;
+    std::mt19937_64 rng(12);
+    const int n = test_light() ? 20000 : 200000;
+    for (int i = 0; i < n; ++i) {
+        // Clustered keys (like grid cells) and random ones, with repeats.
+        const std::uint64_t key = (i % 2) ? (rng() % 5000) << 32 | (rng() % 5000) : rng() >> 1;
+        const std::uint32_t value = static_cast<std::uint32_t>(rng());
+        h.insert_or_assign(key, value);
+        ref[key] = value;
+        ck_assert_uint_le(2 * h.size(), h.slot_count());  // load factor <= 1/2
+    }
+    ck_assert_uint_eq(h.size(), ref.size());
+    for (const auto& kv : ref) {
+        const std::uint32_t* v = h.find(kv.first);
+        ck_assert_ptr_nonnull(v);
+        ck_assert_uint_eq(*v, kv.second);
+    }
+    for (int i = 0; i < 1000; ++i) {
+        const std::uint64_t key = (std::uint64_t{1} << 63) | rng();
+        if (ref.count(key) == 0) ck_assert_ptr_null(h.find(key));
+    }
+}
+END_TEST
+
+START_TEST(spatial_hash_finds_every_close_pair) {
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<pds::Point> pts(4);  // the first `first` entries are skipped
+    for (int i = 0; i < 3000; ++i) pts.push_back({u(rng), 0.5 * u(rng)});
+    const double r = 0.013;
+    const pds::SpatialHash grid(pts, 4, pds::Box{0, 0, 1, 0.5}, r);
+    for (std::size_t i = 4; i < pts.size(); ++i) {
+        std::vector<char> found(pts.size(), 0);
+        grid.for_each_near(pts[i], [&](std::uint32_t j) { found[j] = 1; });
+        for (std::size_t j = 4; j < pts.size(); ++j) {
+            const double dx = pts[i].x - pts[j].x, dy = pts[i].y - pts[j].y;
+            if (dx * dx + dy * dy < r * r) ck_assert(found[j]);
+        }
+        for (std::size_t j = 0; j < 4; ++j) ck_assert(!found[j]);
+    }
+}
+END_TEST
+
+Suite* hash_map_suite() {
+    Suite* s = suite_create("hash_map");
+    TCase* t = tcase_create("map");
+    tcase_add_test(t, agrees_with_std_map);
+    suite_add_tcase(s, t);
+    t = tcase_create("spatial");
+    tcase_add_test(t, spatial_hash_finds_every_close_pair);
+    suite_add_tcase(s, t);
+    return s;
+}

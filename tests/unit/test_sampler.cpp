@@ -1,0 +1,209 @@
+// test_sampler.cpp - whole patterns from the core sampler, over seeds, radii
+// and domains: points inside, pairs at least R apart (exact), the mesh
+// Delaunay, maximal by the certificate and by random probes, free area exactly
+// zero at the end, refine, and determinism.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "mesh_checks.hpp"
+#include "predicates.hpp"
+#include "sampler.hpp"
+#include "suites.hpp"
+
+namespace {
+
+struct Case {
+    pds::Box box;
+    double r;
+};
+
+std::vector<double> user_points(const pds::Sampler& s) {
+    std::vector<double> xy(2 * s.count());
+    s.copy_points(0, s.count(), xy.data());
+    return xy;
+}
+
+// Pairs at least R apart, exactly, by brute force over a sorted sweep.
+void check_min_distance(const std::vector<double>& xy, double r) {
+    std::vector<pds::Point> p(xy.size() / 2);
+    for (std::size_t i = 0; i < p.size(); ++i) p[i] = {xy[2 * i], xy[2 * i + 1]};
+    std::sort(p.begin(), p.end(), [](const pds::Point& a, const pds::Point& b) { return a.x < b.x; });
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t j = i + 1; j < p.size() && p[j].x - p[i].x < r; ++j)
+            ck_assert_int_ge(pds::compare_distance(p[i], p[j], r), 0);
+}
+
+// Random probes: every probe point has a sample within R (brute force on a
+// coarse grid of buckets). A probabilistic, mesh-free maximality check.
+void check_probes(const std::vector<double>& xy, const pds::Box& box, double r, int probes) {
+    const int g = std::max(1, static_cast<int>(std::min(box.width(), box.height()) / r));
+    const double cw = box.width() / g, ch = box.height() / g;
+    const int gx = static_cast<int>(box.width() / cw), gy = static_cast<int>(box.height() / ch);
+    std::vector<std::vector<std::size_t>> cells(static_cast<std::size_t>(gx + 1) * (gy + 1));
+    const auto cell_of = [&](double x, double y) {
+        const int cx = std::min(gx, std::max(0, static_cast<int>((x - box.x0) / cw)));
+        const int cy = std::min(gy, std::max(0, static_cast<int>((y - box.y0) / ch)));
+        return std::make_pair(cx, cy);
+    };
+    for (std::size_t i = 0; i < xy.size() / 2; ++i) {
+        const auto c = cell_of(xy[2 * i], xy[2 * i + 1]);
+        cells[c.second * (gx + 1) + c.first].push_back(i);
+    }
+    const int reach = static_cast<int>(std::ceil(r / std::min(cw, ch))) + 1;
+    std::mt19937_64 rng(99);
+    std::uniform_real_distribution<double> ux(box.x0, box.x1), uy(box.y0, box.y1);
+    for (int k = 0; k < probes; ++k) {
+        const double x = ux(rng), y = uy(rng);
+        const auto c = cell_of(x, y);
+        bool covered = false;
+        for (int dx = -reach; dx <= reach && !covered; ++dx)
+            for (int dy = -reach; dy <= reach && !covered; ++dy) {
+                const int cx = c.first + dx, cy = c.second + dy;
+                if (cx < 0 || cy < 0 || cx > gx || cy > gy) continue;
+                for (std::size_t i : cells[cy * (gx + 1) + cx]) {
+                    const double ddx = xy[2 * i] - x, ddy = xy[2 * i + 1] - y;
+                    if (ddx * ddx + ddy * ddy <= r * r) {
+                        covered = true;
+                        break;
+                    }
+                }
+            }
+        ck_assert_msg(covered, "probe (%.17g, %.17g) is farther than R from every point", x, y);
+    }
+}
+
+void check_pattern(const pds::Sampler& s, bool expect_maximal) {
+    const std::vector<double> xy = user_points(s);
+    const pds::Box& d = s.domain();
+    for (std::size_t i = 0; i < xy.size() / 2; ++i)
+        ck_assert(d.contains(pds::Point{xy[2 * i], xy[2 * i + 1]}));
+    check_min_distance(xy, s.radius());
+    check_delaunay_mesh(s.mesh());
+    const pds::VerifyReport rep = s.verify();
+    ck_assert_msg(rep.valid, "verify: %s", rep.failure.c_str());
+    ck_assert_int_eq(rep.maximal, expect_maximal);
+    ck_assert_uint_eq(s.stats().gave_up_cells, 0);
+    if (expect_maximal) {
+        ck_assert(s.free_area() == 0.0);
+        check_probes(xy, d, s.radius(), test_light() ? 2000 : 20000);
+    }
+}
+
+}  // namespace
+
+START_TEST(maximal_patterns_over_seeds_and_domains) {
+    const Case cases[] = {{{0, 0, 1, 1}, 0.05},           {{0, 0, 1, 1}, 0.013},
+                          {{0, 0, 4, 0.5}, 0.03},         {{1000, -3, 1001, -2}, 0.02},
+                          {{-1e-6, -1e-6, 1e-6, 1e-6}, 1e-7}, {{0, 0, 100, 100}, 2.0},
+                          {{0, 0, 1, 0.05}, 0.2},          {{-7.5, 3.25, -2.0, 9.0}, 0.11}};
+    const int seeds = test_light() ? 1 : 6;
+    for (const Case& cs : cases) {
+        for (int seed = 1; seed <= seeds; ++seed) {
+            pds::Sampler s(cs.r, static_cast<std::uint64_t>(seed * 7919));
+            s.set_domain(cs.box);
+            bool maximal = false;
+            s.run(0, &maximal);
+            ck_assert(maximal);
+            ck_assert(!s.step());
+            check_pattern(s, true);
+        }
+    }
+}
+END_TEST
+
+START_TEST(partial_patterns_are_valid) {
+    pds::Sampler s(0.02, 5);
+    bool maximal = true;
+    s.run(700, &maximal);
+    ck_assert(!maximal);
+    ck_assert_uint_eq(s.count(), 700);
+    ck_assert_double_gt(s.free_area(), 0.0);
+    check_pattern(s, false);
+    // Free area never grows while points are added.
+    double last = s.free_area();
+    for (int i = 0; i < 200; ++i) {
+        ck_assert(s.step());
+        ck_assert_double_le(s.free_area(), last);
+        last = s.free_area();
+    }
+}
+END_TEST
+
+START_TEST(refine_continues_at_the_smaller_radius) {
+    pds::Sampler s(0.06, 17);
+    s.set_domain(pds::Box{0, 0, 2, 1});
+    bool maximal = false;
+    s.run(0, &maximal);
+    const std::vector<double> before = user_points(s);
+    s.refine(0.03);
+    ck_assert_double_gt(s.free_area(), 0.0);
+    s.run(0, &maximal);
+    ck_assert(maximal);
+    const std::vector<double> after = user_points(s);
+    ck_assert_uint_gt(after.size(), before.size());
+    ck_assert_int_eq(std::memcmp(before.data(), after.data(), before.size() * sizeof(double)), 0);
+    check_pattern(s, true);
+    // Refine in the middle of a run, then again.
+    pds::Sampler t(0.05, 18);
+    t.run(30, &maximal);
+    t.refine(0.04);
+    t.run(100, &maximal);
+    t.refine(0.021);
+    t.run(0, &maximal);
+    ck_assert(maximal);
+    check_pattern(t, true);
+}
+END_TEST
+
+START_TEST(same_seed_same_bytes) {
+    const auto run = [](std::uint64_t seed, std::size_t chunk) {
+        pds::Sampler s(0.015, seed);
+        s.set_domain(pds::Box{-1, 0, 1, 1});
+        bool maximal = false;
+        do s.run(chunk, &maximal);
+        while (!maximal);
+        return user_points(s);
+    };
+    const std::vector<double> a = run(42, 0), b = run(42, 0), c = run(42, 13), d = run(43, 0);
+    ck_assert_uint_eq(a.size(), b.size());
+    ck_assert_int_eq(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+    ck_assert_uint_eq(a.size(), c.size());
+    ck_assert_int_eq(std::memcmp(a.data(), c.data(), a.size() * sizeof(double)), 0);
+    ck_assert(a.size() != d.size() || std::memcmp(a.data(), d.data(), a.size() * sizeof(double)) != 0);
+}
+END_TEST
+
+START_TEST(limits) {
+    ck_assert(pds::Sampler::check_limits({0, 0, 1, 1}, 0.01) == pds::Limit::ok);
+    ck_assert(pds::Sampler::check_limits({0, 0, 1, 1}, 1e-5) == pds::Limit::too_many_points);
+    ck_assert(pds::Sampler::check_limits({1e15, 0, 1e15 + 1, 1}, 0.05) ==
+              pds::Limit::radius_below_precision);
+    ck_assert(pds::Sampler::check_limits({0, 0, 1e-300, 1e-300}, 1e-302) == pds::Limit::coordinates_too_small);
+    ck_assert(pds::Sampler::check_limits({-1e308, -1e308, 1e308, 1e308}, 1e306) == pds::Limit::ok);
+    // Oler's bound really bounds: a hexagonal packing at spacing R fits under it.
+    const double r = 0.01;
+    const double rows = std::floor(1.0 / (r * std::sqrt(3.0) / 2)) + 1, cols = std::floor(1.0 / r) + 1;
+    ck_assert_double_ge(pds::Sampler::count_bound({0, 0, 1, 1}, r), rows * cols - rows / 2);
+}
+END_TEST
+
+Suite* sampler_suite() {
+    Suite* s = suite_create("sampler");
+    TCase* t = tcase_create("patterns");
+    tcase_set_timeout(t, 600);
+    tcase_add_test(t, maximal_patterns_over_seeds_and_domains);
+    tcase_add_test(t, partial_patterns_are_valid);
+    tcase_add_test(t, refine_continues_at_the_smaller_radius);
+    suite_add_tcase(s, t);
+    t = tcase_create("determinism");
+    tcase_set_timeout(t, 300);
+    tcase_add_test(t, same_seed_same_bytes);
+    suite_add_tcase(s, t);
+    t = tcase_create("limits");
+    tcase_add_test(t, limits);
+    suite_add_tcase(s, t);
+    return s;
+}
