@@ -67,11 +67,63 @@ EdgeRef Delaunay::locate(const Point& p, EdgeRef e) const {
     throw std::logic_error("point location did not terminate");
 }
 
+void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) const {
+    constexpr std::size_t kMax = 64;
+    constexpr int kMaxSteps = 12;  // typical rings have about 6 edges
+    EdgeRef edge[kMax], first[kMax];
+    if (n > kMax) n = kMax;
+    for (std::size_t k = 0; k < n; ++k) {
+        __builtin_prefetch(&vertex_edge_[vertices[k]]);
+        __builtin_prefetch(&points_[vertices[k]]);
+    }
+    for (std::size_t k = 0; k < n; ++k) edge[k] = first[k] = vertex_edge_[vertices[k]];
+    // One step of every ring per round: the loads of a round are independent.
+    for (int step = 0; step < kMaxSteps; ++step) {
+        bool any = false;
+        for (std::size_t k = 0; k < n; ++k) {
+            if (edge[k] == kNoEdge) continue;
+            __builtin_prefetch(&points_[mesh_.dest(edge[k])]);
+            const EdgeRef next = mesh_.onext(edge[k]);
+            __builtin_prefetch(mesh_.record_address(next));
+            edge[k] = next == first[k] ? kNoEdge : next;
+            any = true;
+        }
+        if (!any) break;
+    }
+}
+
+void Delaunay::prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t n) const {
+    constexpr std::size_t kMax = 1024;
+    EdgeRef edge[kMax];
+    std::size_t m = 0;
+    // Round 1: each ring edge c -> a; its left triangle's third side a -> b
+    // (the link edge) is read from the ring edge's own record.
+    for (std::size_t k = 0; k < n && m < kMax; ++k) {
+        const EdgeRef first = vertex_edge_[vertices[k]];
+        EdgeRef e = first;
+        do {
+            const EdgeRef link = mesh_.lnext(e);
+            __builtin_prefetch(mesh_.record_address(link));
+            edge[m++] = link;
+            e = mesh_.onext(e);
+        } while (e != first && m < kMax);
+    }
+    // Round 2: behind each link edge, the edge to the far corner of the
+    // triangle on its other side (what the flip test reads).
+    for (std::size_t i = 0; i < m; ++i) {
+        edge[i] = mesh_.oprev(edge[i]);
+        __builtin_prefetch(mesh_.record_address(edge[i]));
+    }
+    // Round 3: the far corners themselves.
+    for (std::size_t i = 0; i < m; ++i) __builtin_prefetch(&points_[mesh_.dest(edge[i])]);
+}
+
 void Delaunay::swap_edge(EdgeRef e) {
-    // The endpoints lose e: keep their entry edges pointing at edges they keep.
-    const std::uint32_t o = mesh_.org(e), d = mesh_.dest(e);
-    if (vertex_edge_[o] == e) vertex_edge_[o] = mesh_.oprev(e);
-    if (vertex_edge_[d] == QuadEdgeMesh::sym(e)) vertex_edge_[d] = mesh_.oprev(QuadEdgeMesh::sym(e));
+    // The endpoints lose e: point their entry edges at edges they keep. Written
+    // unconditionally: a store does not wait for the cache, a test would.
+    const EdgeRef a = mesh_.oprev(e), b = mesh_.oprev(QuadEdgeMesh::sym(e));
+    vertex_edge_[mesh_.org(e)] = a;
+    vertex_edge_[mesh_.dest(e)] = b;
     mesh_.swap(e);
 }
 

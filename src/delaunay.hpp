@@ -57,6 +57,15 @@ public:
     // from `start`; p must be inside the ghost square.
     EdgeRef locate(const Point& p, EdgeRef start) const;
 
+    // Asks the memory system for the vertex rings (edges and neighbour
+    // points) of n vertices, walking all rings in step so that their cache
+    // misses overlap. A hint only: no effect on results.
+    void prefetch_rings(const std::uint32_t* vertices, std::size_t n) const;
+    // For vertices whose rings are cached: asks for the triangles just beyond
+    // them (the link edges, the edges behind those, and their far vertices),
+    // which inserting a point next to such a vertex reads when it flips edges.
+    void prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t n) const;
+
 private:
     bool right_of(const Point& p, EdgeRef e) const;
     void swap_edge(EdgeRef e);

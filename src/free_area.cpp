@@ -32,13 +32,13 @@ Vtx voronoi_vertex(const Point& b, const Point& d) {
     // at least R apart inside the ghost square their angles stay far from 0.
     if (!(cr > 0.0) || !std::isfinite(cr))
         throw std::logic_error("degenerate Delaunay triangle around a site");
-    const double den = 2.0 * cr;
-    const double vx = (d.y * bb - b.y * dd) / den;
-    const double vy = (b.x * dd - d.x * bb) / den;
+    const double inv = 0.5 / cr;
+    const double vx = (d.y * bb - b.y * dd) * inv;
+    const double vy = (b.x * dd - d.x * bb) * inv;
     // Forward error: the circumcentre's sensitivity to rounding of b and d and
     // of the arithmetic is below ~(|b|+|d|)^2 / |b x d| ulps of its distance
-    // (see the design note in free_area.hpp); 128 is a generous constant.
-    const double err = 128.0 * kUnitRoundoff * (bb + dd) / cr * (std::fabs(vx) + std::fabs(vy));
+    // (see the design note in free_area.hpp); 256 is a generous constant.
+    const double err = 256.0 * kUnitRoundoff * (bb + dd) * inv * (std::fabs(vx) + std::fabs(vy));
     return Vtx{vx, vy, err};
 }
 
@@ -47,9 +47,10 @@ int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]) 
     const double ee = ex * ex + ey * ey;
     if (ee == 0.0) return 0;
     const auto at = [&](double t) { return Point{a.x + t * ex, a.y + t * ey}; };
-    const double closest = -(a.x * ex + a.y * ey) / ee;  // parameter of closest approach
+    const double inv_ee = 1.0 / ee;
+    const double closest = -(a.x * ex + a.y * ey) * inv_ee;  // parameter of closest approach
     const double cr = cross(a, b);
-    const double h2 = cr * cr / ee;                        // squared distance of the line
+    const double h2 = cr * cr * inv_ee;                        // squared distance of the line
     if (h2 >= r2) {
         // The far side misses the circle (case 3 if the closest approach is
         // inside the side: split there so distance is monotone on each piece).
@@ -64,12 +65,49 @@ int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]) 
     }
     // The line cuts the circle at t1 < t2; only the parts outside count
     // (cases 1 and 2).
-    const double s = std::sqrt((r2 - h2) / ee);
+    const double s = std::sqrt((r2 - h2) * inv_ee);
     const double t1 = closest - s, t2 = closest + s;
     int n = 0;
     if (t1 > 0.0) out[n++] = Piece{a, t1 < 1.0 ? at(t1) : b};
     if (t2 < 1.0) out[n++] = Piece{t2 > 0.0 ? at(t2) : a, b};
     return n;
+}
+
+void Chunk::begin(const Piece& pc, bool keep_pieces) {
+    start = pc.p;
+    end = pc.q;
+    cross_sum = cross(pc.p, pc.q);
+    count = 1;
+    if (keep_pieces) pieces[0] = pc;
+}
+
+void Chunk::extend(const Piece& pc, bool keep_pieces) {
+    end = pc.q;
+    cross_sum += cross(pc.p, pc.q);
+    if (keep_pieces) pieces[count] = pc;
+    ++count;
+}
+
+double Chunk::area(double r2) const {
+    const double theta = angle_of(cross(start, end), dot(start, end));
+    const double a = 0.5 * (cross_sum - r2 * theta);
+    return a > 0.0 ? a : 0.0;
+}
+
+int select_piece(const Chunk& chunk, double r2, double u) {
+    double areas[kMaxChunkPieces];
+    double total = 0.0;
+    for (int i = 0; i < chunk.count; ++i) total += (areas[i] = piece_area(chunk.pieces[i], r2));
+    const double target = u * total;
+    double sum = 0.0;
+    int last = -1;
+    for (int i = 0; i < chunk.count; ++i) {
+        if (areas[i] <= 0.0) continue;
+        sum += areas[i];
+        last = i;
+        if (sum > target) return i;
+    }
+    return last;
 }
 
 double piece_area(const Piece& piece, double r2) {
@@ -104,24 +142,34 @@ bool draw_in_piece(const Piece& piece, double r, double r2, Rng& rng, Point* out
     return true;
 }
 
-void MeasureSink::edge(const Vtx& a, const Vtx& b) {
+void CellSink::edge(const Vtx& a, const Vtx& b) {
+    if (done()) return;
     Piece pieces[2];
     const int n = fan_pieces(a, b, r2_, pieces);
-    for (int i = 0; i < n; ++i) sum_ += piece_area(pieces[i], r2_);
-}
-
-void SelectSink::edge(const Vtx& a, const Vtx& b) {
-    if (found_) return;
-    Piece pieces[2];
-    const int n = fan_pieces(a, b, r2_, pieces);
+    if (n == 0) flush();  // the boundary runs inside the disk here
     for (int i = 0; i < n; ++i) {
-        sum_ += piece_area(pieces[i], r2_);
-        if (sum_ > target_) {
-            found_ = true;
-            piece_ = pieces[i];
-            return;
+        if (chunk_().extends_with(pieces[i])) {
+            chunk_().extend(pieces[i], selecting());
+        } else {
+            flush();
+            chunk_().begin(pieces[i], selecting());
         }
     }
+}
+
+void CellSink::flush() {
+    Chunk& c = chunk_();
+    if (c.count == 0) return;
+    const double a = c.area(r2_);
+    sum_ += a;
+    // Keep the chunk where the sum first passes the target, or else the last
+    // one with positive area; once found, later chunks only add to the sum.
+    if (selecting() && a > 0.0) {
+        building_ = 1 - building_;  // the chunk just built becomes the chosen one
+        if (sum_ > target_) found_ = true;
+        else fallback_ = true;
+    }
+    chunk_().count = 0;
 }
 
 }  // namespace cell_detail

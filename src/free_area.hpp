@@ -57,6 +57,32 @@ struct Piece {
     Point q;
 };
 
+// Consecutive pieces that share endpoints span one contiguous angle, and the
+// sector angles of a piece's free area add up over them: such a chunk's free
+// area is (sum of cross products - R^2 * its angle) / 2, one arctangent for the
+// whole chunk. A chunk ends where the boundary dips inside the disk, before it
+// would reach a half turn, or at kMaxChunkPieces pieces (which the sampler
+// stores).
+constexpr int kMaxChunkPieces = 16;
+
+struct Chunk {
+    Point start{0, 0};
+    Point end{0, 0};
+    double cross_sum = 0.0;
+    int count = 0;
+    Piece pieces[kMaxChunkPieces];
+
+    // Extends while the chunk stays below a half turn: its angle is then the
+    // argument of (start . end, start x end), unambiguous.
+    bool extends_with(const Piece& pc) const {
+        return count > 0 && count < kMaxChunkPieces && pc.p.x == end.x && pc.p.y == end.y &&
+               start.x * pc.q.y - start.y * pc.q.x > 0.0;
+    }
+    void begin(const Piece& pc, bool keep_pieces);
+    void extend(const Piece& pc, bool keep_pieces);
+    double area(double r2) const;
+};
+
 constexpr double kUnitRoundoff = 0x1.0p-53;
 
 // Voronoi vertex of the counterclockwise triangle (site, site+b, site+d).
@@ -65,31 +91,83 @@ Vtx voronoi_vertex(const Point& b, const Point& d);
 int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]);
 // Free area of a piece: its triangle minus the circular sector it spans.
 double piece_area(const Piece& piece, double r2);
+// Index of the piece of `chunk` where the running sum of piece areas passes
+// u times their total (u in [0, 1)); -1 when every piece has zero area.
+int select_piece(const Chunk& chunk, double r2, double u);
 // One rejection-sampling draw in the piece's quadrilateral (figure 5). Returns
 // true and the point (relative to the site) when the draw is at least R out.
 bool draw_in_piece(const Piece& piece, double r, double r2, Rng& rng, Point* out);
 
-// Stage 1: consecutive neighbours -> Voronoi vertices.
-template <class Next>
+// The domain relative to the site, and a test for "certainly inside it".
+struct RelativeBox {
+    RelativeBox(double lx_, double hx_, double ly_, double hy_)
+        : lx(lx_), hx(hx_), ly(ly_), hy(hy_),
+          rounding(4.0 * kUnitRoundoff *
+                   (std::fabs(lx_) + std::fabs(hx_) + std::fabs(ly_) + std::fabs(hy_))) {}
+    bool certainly_contains(const Vtx& v) const {
+        const double slack = v.err + rounding + 4.0 * kUnitRoundoff * (std::fabs(v.x) + std::fabs(v.y));
+        return v.x - lx > slack && hx - v.x > slack && v.y - ly > slack && hy - v.y > slack;
+    }
+    double lx, hx, ly, hy;
+    double rounding;  // bound on the rounding of the four sides
+};
+
+// Stage 1: consecutive neighbours -> Voronoi vertices. Most cells lie well
+// inside the domain, so the vertices are buffered: if every one is certainly
+// inside, they go straight to the fan and clipping is skipped; otherwise, or
+// when the buffer fills (a vertex of very high degree), they go through the
+// clipping stages, streamed from then on.
+template <class Fan, class Clip>
 class VoronoiStage {
 public:
-    VoronoiStage(const Point& site, Next& next) : site_(site), next_(next) {}
+    VoronoiStage(const Point& site, const RelativeBox& box, Fan& fan, Clip& clip)
+        : site_(site), box_(box), fan_(fan), clip_(clip) {}
     void push(const Point& neighbour) {
         const Point rel{neighbour.x - site_.x, neighbour.y - site_.y};
         if (count_++ == 0) first_ = rel;
-        else next_.push(voronoi_vertex(prev_, rel));
+        else emit(voronoi_vertex(prev_, rel));
         prev_ = rel;
     }
     void close() {
-        if (count_ >= 2) next_.push(voronoi_vertex(prev_, first_));
-        next_.close();
+        if (count_ >= 2) emit(voronoi_vertex(prev_, first_));
+        if (streaming_) {
+            clip_.close();
+            return;
+        }
+        bool inside = true;
+        for (int i = 0; i < buffered_ && inside; ++i) inside = box_.certainly_contains(buffer_[i]);
+        if (inside) {
+            for (int i = 0; i < buffered_; ++i) fan_.push(buffer_[i]);
+            fan_.close();
+        } else {
+            for (int i = 0; i < buffered_; ++i) clip_.push(buffer_[i]);
+            clip_.close();
+        }
     }
 
 private:
+    static constexpr int kBuffer = 24;
+    void emit(const Vtx& v) {
+        if (streaming_) {
+            clip_.push(v);
+        } else if (buffered_ < kBuffer) {
+            buffer_[buffered_++] = v;
+        } else {
+            streaming_ = true;
+            for (int i = 0; i < buffered_; ++i) clip_.push(buffer_[i]);
+            clip_.push(v);
+        }
+    }
+
     Point site_;
-    Next& next_;
+    const RelativeBox& box_;
+    Fan& fan_;
+    Clip& clip_;
     Point first_{0, 0}, prev_{0, 0};
     int count_ = 0;
+    int buffered_ = 0;
+    bool streaming_ = false;
+    Vtx buffer_[kBuffer];
 };
 
 // Stages 2-5: keep the side of an axis-parallel line where sign * (coord -
@@ -175,6 +253,7 @@ public:
     }
     void close() {
         if (has_first_) sink_.edge(prev_, first_);
+        sink_.finish();
     }
 
 private:
@@ -190,59 +269,80 @@ bool stream_cell(const CellQuery& q, const Ring& ring, Sink& sink) {
     bool doubtful = false;
     const Box& d = q.domain;
     const Point& c = q.site;
+    const RelativeBox rel(d.x0 - c.x, d.x1 - c.x, d.y0 - c.y, d.y1 - c.y);
     FanStage<Sink> fan(sink);
-    ClipStage<FanStage<Sink>> top(1, d.y1 - c.y, -1.0, doubtful, fan);
-    ClipStage<ClipStage<FanStage<Sink>>> bottom(1, d.y0 - c.y, 1.0, doubtful, top);
-    ClipStage<ClipStage<ClipStage<FanStage<Sink>>>> right(0, d.x1 - c.x, -1.0, doubtful, bottom);
-    ClipStage<ClipStage<ClipStage<ClipStage<FanStage<Sink>>>>> left(0, d.x0 - c.x, 1.0, doubtful,
-                                                                     right);
-    VoronoiStage<decltype(left)> voronoi(c, left);
-    ring([&](const Point& n) { voronoi.push(n); });
-    voronoi.close();
+    ClipStage<FanStage<Sink>> top(1, rel.hy, -1.0, doubtful, fan);
+    ClipStage<ClipStage<FanStage<Sink>>> bottom(1, rel.ly, 1.0, doubtful, top);
+    ClipStage<ClipStage<ClipStage<FanStage<Sink>>>> right(0, rel.hx, -1.0, doubtful, bottom);
+    ClipStage<ClipStage<ClipStage<ClipStage<FanStage<Sink>>>>> left(0, rel.lx, 1.0, doubtful, right);
+    VoronoiStage<FanStage<Sink>, decltype(left)> voronoi(c, rel, fan, left);
+    // A sink that has what it needs (a selection found its chunk) stops the
+    // geometry; the rest of the ring is still walked, but not computed.
+    ring([&](const Point& n) {
+        if (!sink.done()) voronoi.push(n);
+    });
+    if (!sink.done()) voronoi.close();
     return doubtful;
 }
 
-// Sums piece areas and classifies the clipped vertices.
-class MeasureSink {
+// Sums chunk areas, classifies the clipped vertices, and (given a target) keeps
+// the chunk where the running sum passes the target. Measuring and selecting
+// share this one code path, so the sums agree to the last bit.
+class CellSink {
 public:
-    explicit MeasureSink(double r) : r_(r), r2_(r * r) {}
+    CellSink(double r, double target)
+        : r_(r), r2_(r * r), target_(target), rounding_(8.0 * kUnitRoundoff * r * r) {}
     void vertex(const Vtx& v) {
         const double d2 = v.x * v.x + v.y * v.y;
-        const double margin = 2.0 * r_ * v.err + v.err * v.err + 8.0 * kUnitRoundoff * r2_;
+        const double margin = v.err * (2.0 * r_ + v.err) + rounding_;
         if (d2 > r2_ + margin) ++certainly_out_;
         else if (d2 >= r2_ - margin) ++undecided_;
     }
     void edge(const Vtx& a, const Vtx& b);
+    void finish() { flush(); }
+    // A selection stops at its chunk: the cell is re-measured after the
+    // insertion anyway, and its draws are checked exactly.
+    bool done() const { return found_ && stop_at_target_; }
+    void stop_at_target() { stop_at_target_ = true; }
+
     double sum() const { return sum_; }
     int certainly_out() const { return certainly_out_; }
     int undecided() const { return undecided_; }
+    // The chunk where the running sum passed the target, if it did.
+    bool found() const { return found_; }
+    // Otherwise the last chunk with positive area, if any.
+    bool has_fallback() const { return fallback_; }
+    const Chunk& chunk() const { return chunks_[1 - building_]; }
 
 private:
+    // Measuring only (negative target), or still looking for the target chunk.
+    bool selecting() const { return target_ >= 0.0 && !found_; }
+    void flush();
+    Chunk& chunk_() { return chunks_[building_]; }
     double r_, r2_;
+    double target_;
+    double rounding_;  // bound on the rounding of |v|^2 and R^2
     double sum_ = 0.0;
     int certainly_out_ = 0, undecided_ = 0;
-};
-
-// Walks the pieces in the same order as MeasureSink and keeps the one where
-// the running sum passes `target`.
-class SelectSink {
-public:
-    SelectSink(double r, double target) : r2_(r * r), target_(target) {}
-    void vertex(const Vtx&) {}
-    void edge(const Vtx& a, const Vtx& b);
-    bool found() const { return found_; }
-    const Piece& piece() const { return piece_; }
-
-private:
-    double r2_;
-    double target_;
-    double sum_ = 0.0;
-    bool found_ = false;
-    Piece piece_{{0, 0}, {0, 0}};
+    bool found_ = false, fallback_ = false, stop_at_target_ = false;
+    // The chunk being built and the one last chosen; choosing swaps them, so
+    // no chunk is ever copied.
+    Chunk chunks_[2];
+    int building_ = 0;
 };
 
 // The smallest weight a possibly-free cell gets, so it stays selectable.
 inline double area_floor(double r) { return r * r * 0x1.0p-100; }
+
+// The sink's verdict on the cell as a whole.
+inline CellMeasure verdict(const CellSink& sink, bool clip_doubtful, double r) {
+    CellMeasure m;
+    if (!clip_doubtful && sink.certainly_out() == 0 && sink.undecided() == 0) return m;  // covered
+    m.doubtful = clip_doubtful || sink.certainly_out() == 0;
+    const double floor = area_floor(r);
+    m.area = sink.sum() > floor ? sink.sum() : floor;
+    return m;
+}
 
 }  // namespace cell_detail
 
@@ -250,33 +350,52 @@ inline double area_floor(double r) { return r * r * 0x1.0p-100; }
 // every Delaunay neighbour of the site, counterclockwise.
 template <class Ring>
 CellMeasure measure_cell(const CellQuery& q, const Ring& ring) {
-    cell_detail::MeasureSink sink(q.radius);
+    cell_detail::CellSink sink(q.radius, -1.0);
     const bool clip_doubtful = cell_detail::stream_cell(q, ring, sink);
-    CellMeasure m;
-    if (!clip_doubtful && sink.certainly_out() == 0 && sink.undecided() == 0) return m;  // covered
-    m.doubtful = clip_doubtful || sink.certainly_out() == 0;
-    const double floor = cell_detail::area_floor(q.radius);
-    m.area = sink.sum() > floor ? sink.sum() : floor;
-    return m;
+    return cell_detail::verdict(sink, clip_doubtful, q.radius);
 }
 
-enum class SampleOutcome { placed, no_piece, gave_up };
+// One pass over a cell that measures it and, for a target in [0, area), picks
+// the chunk whose share of the area holds the target. When the target is
+// reached the pass stops: `measure` then covers only the part walked, and is
+// meaningful only when nothing was found.
+struct CellSelection {
+    CellMeasure measure;
+    bool found = false;     // the running sum passed the target
+    bool fallback = false;  // it did not, but some chunk has positive area
+    cell_detail::Chunk chunk;
+};
 
-// Draws a point uniformly from the cell's free region: a piece is chosen with
-// probability proportional to its area, then points are drawn in that piece
-// until one lies in the free region and `accept(absolute point)` (the exact
-// checks) agrees. Retrying within the chosen piece keeps the law exact.
-// `total` must be the area measure_cell computed for this cell.
-template <class Ring, class Accept>
-SampleOutcome sample_cell(const CellQuery& q, const Ring& ring, double total, Rng& rng,
-                          const Accept& accept, int max_draws, Point* out) {
-    cell_detail::SelectSink sink(q.radius, rng.next_double() * total);
-    cell_detail::stream_cell(q, ring, sink);
-    if (!sink.found()) return SampleOutcome::no_piece;
+template <class Ring>
+CellSelection select_in_cell(const CellQuery& q, const Ring& ring, double target) {
+    cell_detail::CellSink sink(q.radius, target);
+    sink.stop_at_target();
+    const bool clip_doubtful = cell_detail::stream_cell(q, ring, sink);
+    CellSelection s;
+    s.measure = cell_detail::verdict(sink, clip_doubtful, q.radius);
+    s.found = sink.found();
+    s.fallback = sink.has_fallback();
+    if (s.found || s.fallback) s.chunk = sink.chunk();
+    return s;
+}
+
+enum class SampleOutcome { placed, gave_up };
+
+// Draws a point uniformly from one chunk of a cell's free region: a piece is
+// chosen with probability proportional to its area (u in [0, 1)), then points
+// are drawn in that piece until one lies in the free region and
+// `accept(absolute point)` (the exact checks) agrees. Retrying within the
+// chosen piece keeps the law exact.
+template <class Accept>
+SampleOutcome sample_chunk(const CellQuery& q, const cell_detail::Chunk& chunk, double u, Rng& rng,
+                           const Accept& accept, int max_draws, Point* out) {
     const double r2 = q.radius * q.radius;
+    const int k = cell_detail::select_piece(chunk, r2, u);
+    if (k < 0) return SampleOutcome::gave_up;
+    const cell_detail::Piece& piece = chunk.pieces[k];
     for (int i = 0; i < max_draws; ++i) {
         Point rel;
-        if (!cell_detail::draw_in_piece(sink.piece(), q.radius, r2, rng, &rel)) continue;
+        if (!cell_detail::draw_in_piece(piece, q.radius, r2, rng, &rel)) continue;
         const Point p{q.site.x + rel.x, q.site.y + rel.y};
         if (accept(p)) {
             *out = p;

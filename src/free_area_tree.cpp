@@ -1,4 +1,4 @@
-// free_area_tree.cpp - implicit sum tree (see free_area_tree.hpp).
+// free_area_tree.cpp - implicit 8-ary sum tree (see free_area_tree.hpp).
 #include "free_area_tree.hpp"
 
 #include <cstring>
@@ -6,69 +6,132 @@
 
 namespace pds {
 
+namespace {
+
+std::size_t round_up(std::size_t n, std::size_t m) { return (n + m - 1) / m * m; }
+
+}  // namespace
+
 void FreeAreaTree::reserve(std::size_t leaves) {
     if (leaves <= capacity_) return;
-    std::size_t cap = capacity_ == 0 ? 1 : capacity_;
-    while (cap < leaves) {
-        if (cap > (static_cast<std::size_t>(-1) / 4) / sizeof(double)) throw std::bad_alloc();
-        cap *= 2;
+    // Grow at least geometrically, and keep every level a whole number of
+    // cache-line groups so children of one parent share a line.
+    std::size_t cap = round_up(leaves > 2 * capacity_ ? leaves : 2 * capacity_, kFanout);
+    std::vector<std::size_t> offset;
+    std::size_t total = 0, level = cap;
+    for (;;) {
+        offset.push_back(total);
+        total += round_up(level, kFanout);
+        if (level == 1) break;
+        level = (level + kFanout - 1) / kFanout;
     }
-    double* raw = static_cast<double*>(std::calloc(2 * cap, sizeof(double)));
-    if (raw == nullptr) throw std::bad_alloc();
-    std::unique_ptr<double[], Free> fresh(raw);
-    if (size_ != 0) std::memcpy(raw + cap, nodes_.get() + capacity_, size_ * sizeof(double));
+    if (total > (static_cast<std::size_t>(-1) / 2) / sizeof(double)) throw std::bad_alloc();
+    // 64-byte alignment: a group of eight children is exactly one cache line.
+    // Not zeroed here: pages stay untouched until used. Each group of eight is
+    // zeroed when it comes into use (push_back), and rebuild() writes every
+    // used entry, so nothing uninitialized is ever read.
+    void* raw = nullptr;
+    if (posix_memalign(&raw, 64, total * sizeof(double)) != 0) throw std::bad_alloc();
+    std::unique_ptr<double[], Free> fresh(static_cast<double*>(raw));
+    if (size_ != 0) std::memcpy(fresh.get(), nodes_.get(), size_ * sizeof(double));
     nodes_ = std::move(fresh);
+    offset_.swap(offset);
     capacity_ = cap;
     rebuild();
 }
 
-void FreeAreaTree::update_ancestors(std::size_t node) {
-    double* n = nodes_.get();
-    while (node > 1) {
-        node >>= 1;
-        n[node] = n[2 * node] + n[2 * node + 1];
+double FreeAreaTree::sum_of_children(std::size_t level, std::size_t j) const {
+    const double* c = nodes_.get() + offset_[level - 1] + kFanout * j;
+    // Left to right, fixed order: the same sum on every platform.
+    double s = c[0];
+    for (std::size_t i = 1; i < kFanout; ++i) s += c[i];
+    return s;
+}
+
+void FreeAreaTree::update_ancestors(std::size_t leaf) {
+    std::size_t j = leaf;
+    for (std::size_t level = 1; level < offset_.size(); ++level) {
+        j /= kFanout;
+        nodes_[offset_[level] + j] = sum_of_children(level, j);
     }
 }
 
 void FreeAreaTree::push_back(double weight) {
-    nodes_[capacity_ + size_] = weight;
+    // A new group of children starts zeroed, so its unused entries read as 0.
+    if (size_ % kFanout == 0) {
+        std::memset(nodes_.get() + size_, 0, kFanout * sizeof(double));
+        for (std::size_t level = 1, j = size_ / kFanout; level < offset_.size(); ++level, j /= kFanout) {
+            if (j % kFanout != 0) break;
+            std::memset(nodes_.get() + offset_[level] + j, 0, kFanout * sizeof(double));
+        }
+    }
+    nodes_[size_] = weight;
     ++size_;
-    update_ancestors(capacity_ + size_ - 1);
+    update_ancestors(size_ - 1);
 }
 
 void FreeAreaTree::set(std::size_t leaf, double weight) {
-    nodes_[capacity_ + leaf] = weight;
-    update_ancestors(capacity_ + leaf);
+    nodes_[leaf] = weight;
+    update_ancestors(leaf);
 }
 
 void FreeAreaTree::rebuild() {
-    // Only ancestors of used leaves: the rest are zero from calloc and stay so,
-    // which keeps untouched pages untouched.
-    double* n = nodes_.get();
-    std::size_t lo = capacity_, hi = capacity_ + size_;  // used nodes of this level: [lo, hi)
-    while (lo > 1) {
-        const std::size_t plo = lo / 2, phi = (hi + 1) / 2;
-        for (std::size_t k = plo; k < phi; ++k) n[k] = n[2 * k] + n[2 * k + 1];
-        lo = plo;
-        hi = phi;
+    // Zero the tail of the last used group of every level, then recompute the
+    // used prefix of each level from the one below.
+    std::size_t used = size_;
+    for (std::size_t level = 0; level < offset_.size(); ++level) {
+        const std::size_t end = round_up(used == 0 ? 1 : used, kFanout);
+        for (std::size_t k = used; k < end; ++k) nodes_[offset_[level] + k] = 0.0;
+        if (level > 0)
+            for (std::size_t j = 0; j < used; ++j) nodes_[offset_[level] + j] = sum_of_children(level, j);
+        used = (used + kFanout - 1) / kFanout;
     }
 }
 
+std::size_t FreeAreaTree::pick_child(std::size_t level, std::size_t j, double& u) const {
+    const double* c = nodes_.get() + offset_[level - 1] + kFanout * j;
+    // Prefix sums in the same order as sum_of_children; the child is the
+    // number of prefixes at or below u. A zero child repeats the prefix before
+    // it, so it is never the one chosen; when rounding leaves u at or past the
+    // last prefix, the last child of positive weight is taken instead.
+    double prefix[kFanout];
+    double s = c[0];
+    prefix[0] = s;
+    for (std::size_t i = 1; i < kFanout; ++i) prefix[i] = (s += c[i]);
+    std::size_t pick = 0;
+    for (std::size_t i = 0; i < kFanout; ++i) pick += prefix[i] <= u;
+    if (pick == kFanout) {
+        pick = kFanout - 1;
+        while (pick > 0 && c[pick] == 0.0) --pick;
+        u = 0.0;
+    } else if (pick > 0) {
+        u -= prefix[pick - 1];
+    }
+    return kFanout * j + pick;
+}
+
 std::size_t FreeAreaTree::select(double u) const {
-    const double* n = nodes_.get();
-    std::size_t k = 1;
-    while (k < capacity_) {
-        const double left = n[2 * k], right = n[2 * k + 1];
-        // Rounding may leave u at or past the last nonzero child; never step
-        // into a child whose sum is 0.
-        if (u < left || right == 0.0) {
-            k = 2 * k;
-        } else {
-            u -= left;
-            k = 2 * k + 1;
+    std::size_t j = 0;
+    for (std::size_t level = offset_.size() - 1; level > 0; --level) j = pick_child(level, j, u);
+    return j;
+}
+
+void FreeAreaTree::select_many(const double* u, std::size_t n, std::size_t* leaves) const {
+    double rest[64];
+    for (std::size_t done = 0; done < n; done += 64) {
+        const std::size_t m = n - done < 64 ? n - done : 64;
+        for (std::size_t k = 0; k < m; ++k) {
+            rest[k] = u[done + k];
+            leaves[done + k] = 0;
+        }
+        for (std::size_t level = offset_.size() - 1; level > 0; --level) {
+            // Ask for every group of this level first, then descend: the
+            // loads are independent, so their misses overlap.
+            for (std::size_t k = 0; k < m; ++k)
+                __builtin_prefetch(nodes_.get() + offset_[level - 1] + kFanout * leaves[done + k]);
+            for (std::size_t k = 0; k < m; ++k) leaves[done + k] = pick_child(level, leaves[done + k], rest[k]);
         }
     }
-    return k - capacity_;
 }
 
 }  // namespace pds

@@ -9,34 +9,31 @@ void QuadEdgeMesh::reserve(std::size_t records) {
     if (records > kMaxEdgeRecords) throw std::length_error("too many edges for 32-bit references");
     // vector::reserve either succeeds or changes nothing, so a failure here
     // leaves every edge as it was.
-    next_.reserve(4 * records);
-    org_.reserve(2 * records);
+    rec_.reserve(records);
 }
 
 std::size_t QuadEdgeMesh::spare_records() const {
-    const std::size_t by_next = (next_.capacity() - next_.size()) / 4;
-    const std::size_t by_org = (org_.capacity() - org_.size()) / 2;
-    return free_count_ + (by_next < by_org ? by_next : by_org);
+    return free_count_ + (rec_.capacity() - rec_.size());
 }
 
 EdgeRef QuadEdgeMesh::make_edge(std::uint32_t org, std::uint32_t dest) {
     EdgeRef e;
     if (free_list_ != kNoEdge) {
         e = free_list_;
-        free_list_ = next_[e];
+        free_list_ = next_of(e);
         --free_count_;
     } else {
         if (record_count() >= kMaxEdgeRecords) throw std::length_error("edge references exhausted");
-        e = static_cast<EdgeRef>(next_.size());
-        next_.resize(next_.size() + 4);
-        org_.resize(org_.size() + 2);
+        e = static_cast<EdgeRef>(4 * rec_.size());
+        rec_.emplace_back();
     }
     // An isolated edge: each end is its own ring; the two dual quarters point at
     // each other (one face on both sides).
-    next_[e] = e;
-    next_[e + 1] = e + 3;
-    next_[e + 2] = e + 2;
-    next_[e + 3] = e + 1;
+    Record& r = rec_[e >> 2];
+    r.next[0] = e;
+    r.next[1] = e + 3;
+    r.next[2] = e + 2;
+    r.next[3] = e + 1;
     set_endpoints(e, org, dest);
     ++live_edges_;
     return e;
@@ -49,10 +46,10 @@ void QuadEdgeMesh::splice(EdgeRef a, EdgeRef b) {
     const EdgeRef t2 = onext(a);
     const EdgeRef t3 = onext(beta);
     const EdgeRef t4 = onext(alpha);
-    next_[a] = t1;
-    next_[b] = t2;
-    next_[alpha] = t3;
-    next_[beta] = t4;
+    next_of(a) = t1;
+    next_of(b) = t2;
+    next_of(alpha) = t3;
+    next_of(beta) = t4;
 }
 
 EdgeRef QuadEdgeMesh::connect(EdgeRef a, EdgeRef b) {
@@ -67,7 +64,7 @@ void QuadEdgeMesh::delete_edge(EdgeRef e) {
     splice(e, oprev(e));
     splice(sym(e), oprev(sym(e)));
     set_endpoints(e, kNoVertex, kNoVertex);
-    next_[e] = free_list_;
+    next_of(e) = free_list_;
     free_list_ = e;
     ++free_count_;
     --live_edges_;
@@ -83,8 +80,6 @@ void QuadEdgeMesh::swap(EdgeRef e) {
     set_endpoints(e, dest(a), dest(b));
 }
 
-std::size_t QuadEdgeMesh::memory_bytes() const {
-    return next_.capacity() * sizeof(EdgeRef) + org_.capacity() * sizeof(std::uint32_t);
-}
+std::size_t QuadEdgeMesh::memory_bytes() const { return rec_.capacity() * sizeof(Record); }
 
 }  // namespace pds

@@ -45,6 +45,8 @@ Sampler::Sampler(double radius, std::uint64_t seed)
     : rng_(seed), user_domain_(kUnitSquare), user_radius_(radius), dt_(kUnitSquare) {
     set_frame(kUnitSquare, radius);
     ensure_room(1);
+    queue_.reserve(kMaxBatch);
+    since_batch_.reserve(kMaxBatch + 1);
 }
 
 double Sampler::count_bound(const Box& d, double radius) {
@@ -89,19 +91,16 @@ void Sampler::set_domain(const Box& domain) {
 
 void Sampler::ensure_room(std::size_t points) {
     const std::size_t vertices = points + Delaunay::kGhosts;
-    if (dt_.points().capacity() >= vertices && tree_.capacity() >= points &&
-        doubtful_.capacity() >= points && dt_.has_room_for_one())
+    if (dt_.points().capacity() >= vertices && tree_.capacity() >= points && dt_.has_room_for_one())
         return;
     // Each reserve either succeeds or leaves its container as it was.
     dt_.reserve(vertices);
     tree_.reserve(points);
-    doubtful_.reserve(points);
-    if (ring_scratch_.capacity() < 64) ring_scratch_.reserve(64);
 }
 
 bool Sampler::step() {
     const std::size_t n = count();
-    const bool room = dt_.has_room_for_one() && tree_.capacity() > n && doubtful_.capacity() > n;
+    const bool room = dt_.has_room_for_one() && tree_.capacity() > n;
     if (!room) {
         // Grow geometrically, but never past what the pattern can hold.
         const double cap = std::min(count_bound(box_, r_), static_cast<double>(max_points())) + 1.0;
@@ -120,21 +119,22 @@ std::size_t Sampler::run(std::size_t max_new, bool* maximal) {
     std::size_t added = 0;
     bool more = true;
     while ((max_new == 0 || added < max_new) && (more = add_one())) ++added;
-    *maximal = !more || tree_.total() == 0.0;
+    *maximal = !more || !has_room();
     return added;
 }
 
 void Sampler::refine(double radius) {
+    // Queued candidates were drawn for the old radius: the free region grows
+    // now, so they would not be uniform over it.
+    drop_queue();
     user_radius_ = radius;
     r_ = effective_radius(box_, std::ldexp(radius, scale_exp_));
-    for (std::size_t site = 0; site < count(); ++site) {
-        const CellMeasure m = measure_cell(cell_query(site), [&](const auto& visit) {
-            for_each_neighbour(vertex_of(site), [&](std::uint32_t n) { visit(dt_.point(n)); });
-        });
-        tree_.set_leaf_only(site, m.area);
-        doubtful_[site] = m.doubtful;
-    }
+    for (std::size_t site = 0; site < count(); ++site) tree_.set_leaf_only(site, cell_measure(site).area);
     tree_.rebuild();
+}
+
+CellMeasure Sampler::cell_measure(std::size_t site) const {
+    return measure_cell(cell_query(site), ring_of(vertex_of(site)));
 }
 
 CellQuery Sampler::cell_query(std::size_t site) const {
@@ -157,34 +157,109 @@ bool Sampler::add_one() {
         insert_point(p, 0);
         return true;
     }
-    int failures = 0;
     for (;;) {
-        const double total = tree_.total();
-        if (total == 0.0) return false;
-        const std::size_t site = tree_.select(rng_.next_double() * total);
-        if (doubtful_[site]) {
-            // Decide before sampling; either way the next draw starts afresh,
-            // which keeps the law exact (a covered cell only ever rejects).
-            resolve_doubtful(site);
-            continue;
+        while (queue_head_ < queue_.size()) {
+            const Candidate cand = queue_[queue_head_++];
+            if (still_free(cand.p)) {
+                insert_point(cand.p, cand.source);
+                return true;
+            }
+            ++stats_.dropped_candidates;
         }
-        const std::uint32_t v = vertex_of(site);
-        const auto ring = [&](const auto& visit) {
-            for_each_neighbour(v, [&](std::uint32_t n) { visit(dt_.point(n)); });
-        };
+        // Batch size, in selections: double it while every candidate becomes
+        // a point; when newer points cover some, shrink it so that about a
+        // fifth more candidates are drawn than survive.
+        if (!queue_.empty()) {
+            const std::size_t drawn = queue_.size(), placed = since_batch_.size();
+            const std::size_t next = placed == drawn
+                                         ? 2 * batch_size_
+                                         : batch_size_ * (placed + placed / 4 + 1) / drawn;
+            batch_size_ = std::max<std::size_t>(1, std::min(kMaxBatch, next));
+        }
+        drop_queue();
+        if (tree_.total() == 0.0) return false;
+        draw_batch(batch_size_);
+    }
+}
+
+void Sampler::drop_queue() {
+    queue_.clear();
+    queue_head_ = 0;
+    since_batch_.clear();
+}
+
+bool Sampler::still_free(const Point& p) const {
+    // It was free when drawn; only the points added since can cover it. Most
+    // of those are far away: a box test skips them before the exact check.
+    const double reach = 1.5 * r_;
+    for (std::uint32_t v : since_batch_) {
+        const Point& q = dt_.point(v);
+        if (std::fabs(p.x - q.x) > reach || std::fabs(p.y - q.y) > reach) continue;
+        if (compare_distance(p, q, r_) < 0) return false;
+    }
+    return true;
+}
+
+void Sampler::draw_batch(std::size_t n) {
+    double target[kMaxBatch] = {};
+    std::size_t sites[kMaxBatch];
+    std::uint32_t vertices[kMaxBatch];
+    double bound[kMaxBatch];
+    const double total = tree_.total();
+    for (std::size_t k = 0; k < n; ++k) target[k] = rng_.next_double() * total;
+    tree_.select_many(target, n, sites);
+    for (std::size_t k = 0; k < n; ++k) {
+        vertices[k] = vertex_of(sites[k]);
+        bound[k] = tree_.weight(sites[k]);
+    }
+    dt_.prefetch_rings(vertices, n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t site = sites[k];
+        const std::uint32_t v = vertices[k];
+        const CellQuery q = cell_query(site);
+        // One pass: the chunk holding target u * U; if the exact area A falls
+        // short of the target, the selection is rejected.
+        const CellSelection sel = select_in_cell(q, ring_of(v), rng_.next_double() * bound[k]);
+        const cell_detail::Chunk* chunk = &sel.chunk;
+        if (!sel.found) {
+            // The whole cell was measured: settle doubt, tighten the bound
+            // (the same cell may come twice in a batch: only downwards).
+            if (sel.measure.doubtful && covered_exactly(site)) {
+                tree_.set(site, 0.0);
+                continue;
+            }
+            if (sel.measure.area < tree_.weight(site)) tree_.set(site, sel.measure.area);
+            if (sel.measure.area < bound[k]) {
+                // The target fell in the part of the bound the cell has lost
+                // since it was measured.
+                ++stats_.stale_rejections;
+                continue;
+            }
+            if (!sel.fallback) {
+                give_up(site);  // free by its vertices, yet no chunk with area
+                continue;
+            }
+            // else rounding left the target just out of reach: the last chunk
+        }
+        // A found chunk in a cell floating point could not certify needs no
+        // special care: every draw is checked exactly before it is kept.
         const auto accept = [&](const Point& p) { return acceptable(p, v); };
         Point p;
-        const SampleOutcome outcome =
-            sample_cell(cell_query(site), ring, tree_.weight(site), rng_, accept, kMaxDraws, &p);
-        if (outcome == SampleOutcome::placed) {
-            insert_point(p, v);
-            return true;
+        if (sample_chunk(q, *chunk, rng_.next_double(), rng_, accept, kMaxDraws, &p) ==
+            SampleOutcome::placed) {
+            queue_.push_back(Candidate{p, v});
+            continue;
         }
-        // A healthy cell practically never fails 64 draws; a cell that keeps
+        // A healthy piece practically never fails 64 draws; a cell that keeps
         // failing has a free region below double resolution, or none.
         ++stats_.failed_draw_rounds;
-        if (++failures % kFailuresPerGiveUp == 0) give_up(site);
+        if (++draw_failures_ % kFailuresPerGiveUp == 0) give_up(site);
     }
+    // Inserting a candidate flips edges one triangle beyond its source's
+    // ring: fetch those too, for all candidates at once.
+    std::uint32_t sources[kMaxBatch];
+    for (std::size_t k = 0; k < queue_.size(); ++k) sources[k] = queue_[k].source;
+    dt_.prefetch_beyond_rings(sources, queue_.size());
 }
 
 bool Sampler::acceptable(const Point& p, std::uint32_t v) const {
@@ -203,42 +278,52 @@ bool Sampler::acceptable(const Point& p, std::uint32_t v) const {
 
 void Sampler::insert_point(const Point& p, std::uint32_t near) {
     const std::uint32_t v = dt_.insert(p, near);
-    tree_.push_back(0.0);
-    doubtful_.push_back(0);
-    update_cell(v);
-    // Only the new point's Delaunay neighbours lost area (paper, step 5);
-    // a covered cell stays covered, since cells only shrink.
-    for_each_neighbour(v, [&](std::uint32_t n) {
-        if (!Delaunay::is_ghost(n) && tree_.weight(n - Delaunay::kGhosts) > 0.0) update_cell(n);
-    });
+    // The neighbours' cells only shrank: their weights stay valid upper bounds
+    // and are tightened when next selected (measured: re-measuring them here,
+    // even only the source cell, costs more than the rejections it saves).
+    // Only the new cell is measured.
+    tree_.push_back(cell_measure(v - Delaunay::kGhosts).area);
+    since_batch_.push_back(v);
+    draw_failures_ = 0;
 }
 
-void Sampler::update_cell(std::uint32_t v) {
-    const std::size_t site = v - Delaunay::kGhosts;
-    const CellMeasure m = measure_cell(cell_query(site), [&](const auto& visit) {
-        for_each_neighbour(v, [&](std::uint32_t n) { visit(dt_.point(n)); });
-    });
-    tree_.set(site, m.area);
-    doubtful_[site] = m.doubtful;
-}
-
-bool Sampler::covered_exactly(std::size_t site) {
+bool Sampler::covered_exactly(std::size_t site) const {
     ++stats_.exact_classifications;
-    ring_scratch_.clear();
-    for_each_neighbour(vertex_of(site), [&](std::uint32_t n) { ring_scratch_.push_back(dt_.point(n)); });
-    return cell_is_covered_exact(dt_.point(vertex_of(site)), ring_scratch_, box_, r_);
-}
-
-void Sampler::resolve_doubtful(std::size_t site) {
-    const bool covered = covered_exactly(site);  // may throw bad_alloc: nothing changed yet
-    doubtful_[site] = 0;
-    if (covered) tree_.set(site, 0.0);
+    std::vector<Point> ring;
+    for_each_neighbour(vertex_of(site), [&](std::uint32_t n) { ring.push_back(dt_.point(n)); });
+    return cell_is_covered_exact(dt_.point(vertex_of(site)), ring, box_, r_);
 }
 
 void Sampler::give_up(std::size_t site) {
     if (!covered_exactly(site)) ++stats_.gave_up_cells;
-    doubtful_[site] = 0;
     tree_.set(site, 0.0);
+}
+
+bool Sampler::has_room() const {
+    // Some cell with a positive bound must have positive free area, decided
+    // exactly; nothing is changed, so asking never alters later points. The
+    // newest cell is the likeliest candidate, then all others.
+    for (std::size_t k = queue_head_; k < queue_.size(); ++k)
+        if (still_free(queue_[k].p)) return true;
+    if (tree_.total() == 0.0) return false;
+    const auto free_cell = [&](std::size_t site) {
+        if (tree_.weight(site) == 0.0) return false;
+        const CellMeasure m = cell_measure(site);
+        if (m.area == 0.0) return false;
+        if (!m.doubtful) return true;
+        try {
+            return !covered_exactly(site);
+        } catch (const std::bad_alloc&) {
+            return true;  // cannot tell without memory: say there may be room
+        }
+    };
+    if (free_cell(count() - 1)) return true;
+    bool found = false;
+    tree_.for_each_positive([&](std::size_t site) {
+        if (!found && free_cell(site)) found = true;
+        return !found;
+    });
+    return found;
 }
 
 std::size_t Sampler::copy_points(std::size_t first, std::size_t n, double* xy) const {
@@ -259,7 +344,14 @@ std::size_t Sampler::copy_points(std::size_t first, std::size_t n, double* xy) c
 
 double Sampler::free_area() const {
     if (count() == 0) return user_domain_.width() * user_domain_.height();
-    return std::ldexp(tree_.total(), -2 * scale_exp_);
+    // The tree holds upper bounds; the exact area is re-measured, cell by cell,
+    // in leaf order (so the sum is the same on every call).
+    double sum = 0.0;
+    tree_.for_each_positive([&](std::size_t site) {
+        sum += cell_measure(site).area;
+        return true;
+    });
+    return std::ldexp(sum, -2 * scale_exp_);
 }
 
 VerifyReport Sampler::verify() const {
@@ -274,9 +366,6 @@ VerifyReport Sampler::verify() const {
     return rep;
 }
 
-std::size_t Sampler::memory_bytes() const {
-    return dt_.memory_bytes() + tree_.memory_bytes() + doubtful_.capacity() +
-           ring_scratch_.capacity() * sizeof(Point);
-}
+std::size_t Sampler::memory_bytes() const { return dt_.memory_bytes() + tree_.memory_bytes(); }
 
 }  // namespace pds

@@ -1,8 +1,30 @@
 // sampler.hpp - the Jones loop (Jones 2006, figure 1): pick a Voronoi cell with
 // probability proportional to its free area, draw a point uniformly in its free
-// region, insert it, and update the areas of the new site and its neighbours.
-// Knows nothing of C types; the C shim (capi.cpp) validates arguments and maps
-// exceptions to error codes.
+// region, insert it, and account for the areas that changed. Knows nothing of C
+// types; the C shim (capi.cpp) validates arguments and maps exceptions to
+// error codes.
+//
+// Lazy areas (our change to the paper's step 5): inserting a point only
+// shrinks its neighbours' cells, so their old free areas remain upper bounds.
+// The tree holds these bounds U >= A instead of exact areas, and neighbours are
+// not recomputed at insertion. A cell is selected with probability
+// proportional to U, measured exactly in the same pass that picks a piece with
+// target u * U, and kept with probability A / U (the target falls inside the
+// exact area); otherwise its weight is tightened to A and the selection starts
+// over. Every accepted cell is therefore chosen with probability proportional
+// to A, as the paper's exact recomputation would give, with a fraction of the
+// work; and the loop ends only when every weight has been measured 0.
+//
+// Batches (memory-level parallelism): the loop is bound by cache misses, each
+// cell a chain of dependent loads. Free regions only shrink, so a point drawn
+// uniformly from an older free region and kept only if it is still free (at
+// least R from the points added since) is exactly uniform over the current
+// one. So candidates are drawn in batches from one state of the pattern: the
+// tree is descended for all of them level by level and their cells' rings are
+// walked in step, so their misses overlap; then each is computed from cache,
+// and the queue is consumed in order, dropping candidates the newer points
+// cover. The batch size adapts to how many candidates survive; the queue
+// persists across calls, so splitting a run does not change its points.
 //
 // Frame: internally every coordinate is the user's multiplied by 2^k, chosen so
 // the domain's largest |coordinate| lies in [1, 2). Scaling by a power of two
@@ -47,7 +69,9 @@ enum class Limit {
 struct SamplerStats {
     std::size_t exact_classifications = 0;  // doubtful or stuck cells decided exactly
     std::size_t gave_up_cells = 0;          // cells still free that no draw could reach
-    std::size_t failed_draw_rounds = 0;     // sample_cell calls that placed no point
+    std::size_t failed_draw_rounds = 0;     // chunk samplings that placed no point
+    std::size_t stale_rejections = 0;       // selections rejected because U > A
+    std::size_t dropped_candidates = 0;     // batch candidates covered by newer points
 };
 
 class Sampler {
@@ -66,8 +90,9 @@ public:
     // Adds one point (true) or finds the pattern maximal (false).
     bool step();
     // Adds up to max_new points (0: no limit); returns how many. *maximal tells
-    // whether the pattern is maximal afterwards. Memory for the whole run is
-    // reserved first, so std::bad_alloc means no point was added.
+    // whether the pattern is maximal afterwards (decided exactly, without
+    // changing any state). Memory for the whole run is reserved first, so
+    // std::bad_alloc means no point was added.
     std::size_t run(std::size_t max_new, bool* maximal);
     // Continues with a smaller radius; requires 0 < radius <= radius() and limits ok.
     void refine(double radius);
@@ -75,6 +100,7 @@ public:
     std::size_t count() const { return dt_.vertex_count() - Delaunay::kGhosts; }
     std::size_t copy_points(std::size_t first, std::size_t n, double* xy) const;
     double radius() const { return user_radius_; }
+    // Exact free area: O(cells not yet known covered), 0 at once when maximal.
     double free_area() const;
     const Box& domain() const { return user_domain_; }
     VerifyReport verify() const;
@@ -85,27 +111,43 @@ public:
     const Delaunay& mesh() const { return dt_; }
     const Box& internal_domain() const { return box_; }
     double internal_radius() const { return r_; }
+    // The tree's weight: an upper bound on the cell's free area.
     double cell_weight(std::size_t site) const { return tree_.weight(site); }
-    bool cell_doubtful(std::size_t site) const { return doubtful_[site] != 0; }
+    CellMeasure cell_measure(std::size_t site) const;
     CellQuery cell_query(std::size_t site) const;
     std::vector<Point> cell_ring(std::size_t site) const;
 
 private:
     static constexpr int kMaxDraws = 64;  // per piece; a healthy piece accepts > 1/2 of draws
     static constexpr int kFailuresPerGiveUp = 8;
+    static constexpr std::size_t kMaxBatch = 64;
+
+    // A point drawn from the free region as it was when its batch was drawn.
+    struct Candidate {
+        Point p;
+        std::uint32_t source;  // the vertex whose cell it was drawn in
+    };
 
     void set_frame(const Box& domain, double radius);
     void ensure_room(std::size_t points);
     bool add_one();
+    void draw_batch(std::size_t n);
+    bool still_free(const Point& p) const;
+    void drop_queue();
     void insert_point(const Point& p, std::uint32_t near);
-    void update_cell(std::uint32_t vertex);
-    void resolve_doubtful(std::size_t site);
     void give_up(std::size_t site);
-    bool covered_exactly(std::size_t site);
+    bool covered_exactly(std::size_t site) const;
+    bool has_room() const;
     bool acceptable(const Point& p, std::uint32_t vertex) const;
 
     static std::uint32_t vertex_of(std::size_t site) {
         return static_cast<std::uint32_t>(site + Delaunay::kGhosts);
+    }
+    // The ring functor measure_cell and select_in_cell expect.
+    auto ring_of(std::uint32_t v) const {
+        return [this, v](const auto& visit) {
+            for_each_neighbour(v, [&](std::uint32_t n) { visit(dt_.point(n)); });
+        };
     }
     template <class Visit>
     void for_each_neighbour(std::uint32_t v, const Visit& visit) const {
@@ -125,10 +167,13 @@ private:
     Box box_;            // internal frame
     double r_ = 0.0;     // internal radius (capped at twice the diagonal)
     Delaunay dt_;
-    FreeAreaTree tree_;                // one leaf per site, the cell's free area
-    std::vector<std::uint8_t> doubtful_;  // per site: area not certified
-    std::vector<Point> ring_scratch_;
-    SamplerStats stats_;
+    FreeAreaTree tree_;  // one leaf per site: an upper bound on its free area
+    std::vector<Candidate> queue_;                // the current batch, consumed in order
+    std::size_t queue_head_ = 0;
+    std::vector<std::uint32_t> since_batch_;      // vertices added since it was drawn
+    std::size_t batch_size_ = 1;
+    int draw_failures_ = 0;                       // failed chunk samplings since the last point
+    mutable SamplerStats stats_;  // counters only: never steer the sampling
 };
 
 }  // namespace pds

@@ -152,7 +152,8 @@ END_TEST
 
 namespace {
 
-// Compares sample_cell's points in one cell with plain rejection sampling of
+// Compares the sampler's draws in one cell (select_in_cell at target u * A,
+// then sample_chunk) with plain rejection sampling of
 // the same free region (uniform in a square around the site, kept when in the
 // cell and at least R from it), bin by bin over the region's bounding box.
 // Adds the chi-square statistic and its degrees of freedom to *chi2, *dof.
@@ -181,10 +182,13 @@ void add_uniformity_chi2(const pds::Sampler& s, std::size_t site, int n, std::ui
         if (accept(p)) want.push_back(p);
     }
     pds::Rng rng(seed + 1);
+    const double area = s.cell_measure(site).area;
     std::vector<pds::Point> got;
     while (static_cast<int>(got.size()) < n) {
+        const pds::CellSelection sel = pds::select_in_cell(q, ring_fn, rng.next_double() * area);
+        ck_assert(sel.found);
         pds::Point p;
-        if (pds::sample_cell(q, ring_fn, s.cell_weight(site), rng, accept, 64, &p) ==
+        if (pds::sample_chunk(q, sel.chunk, rng.next_double(), rng, accept, 64, &p) ==
             pds::SampleOutcome::placed) {
             ck_assert(accept(p));
             got.push_back(p);
@@ -232,13 +236,13 @@ START_TEST(draws_are_uniform_in_free_regions) {
         s.run(stop, &maximal);
         ck_assert(!maximal);
         // The cells with the largest free areas.
+        std::vector<double> area(s.count());
         std::vector<std::size_t> order(s.count());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-        std::sort(order.begin(), order.end(),
-                  [&](std::size_t x, std::size_t y) { return s.cell_weight(x) > s.cell_weight(y); });
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i, area[i] = s.cell_measure(i).area;
+        std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return area[x] > area[y]; });
         const int cells = test_light() ? 1 : 4;
         for (int k = 0; k < cells; ++k) {
-            ck_assert_double_gt(s.cell_weight(order[k]), 0.0);
+            ck_assert_double_gt(area[order[k]], 0.0);
             add_uniformity_chi2(s, order[k], n, 500 + static_cast<std::uint64_t>(k), &chi2, &dof);
         }
     }

@@ -10,13 +10,19 @@
 
 namespace {
 
-// The root must be exactly the sum tree recomputed from the leaves.
+// The root must be exactly the sum tree recomputed from the leaves: groups of
+// kFanout children added left to right, level by level.
 double recount(const std::vector<double>& w, std::size_t cap) {
+    const std::size_t k = pds::FreeAreaTree::kFanout;
     std::vector<double> level(cap, 0.0);
     for (std::size_t i = 0; i < w.size(); ++i) level[i] = w[i];
     while (level.size() > 1) {
-        std::vector<double> up(level.size() / 2);
-        for (std::size_t k = 0; k < up.size(); ++k) up[k] = level[2 * k] + level[2 * k + 1];
+        std::vector<double> up((level.size() + k - 1) / k, 0.0);
+        for (std::size_t j = 0; j < up.size(); ++j) {
+            double s = 0.0;
+            for (std::size_t i = 0; i < k; ++i) s += (k * j + i < level.size()) ? level[k * j + i] : 0.0;
+            up[j] = s;
+        }
         level.swap(up);
     }
     return level[0];
