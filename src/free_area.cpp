@@ -25,22 +25,7 @@ int fan_pieces(const Vtx& va, const Vtx& vb, double r2, Piece out[2]) {
 
 }  // namespace
 
-Vtx voronoi_vertex(const Point& b, const Point& d) {
-    const double bb = dot(b, b), dd = dot(d, d);
-    const double cr = cross(b, d);
-    // Delaunay triangles around a site are counterclockwise, and with points
-    // at least R apart inside the ghost square their angles stay far from 0.
-    if (!(cr > 0.0) || !std::isfinite(cr))
-        throw std::logic_error("degenerate Delaunay triangle around a site");
-    const double inv = 0.5 / cr;
-    const double vx = (d.y * bb - b.y * dd) * inv;
-    const double vy = (b.x * dd - d.x * bb) * inv;
-    // Forward error: the circumcentre's sensitivity to rounding of b and d and
-    // of the arithmetic is below ~(|b|+|d|)^2 / |b x d| ulps of its distance
-    // (see the design note in free_area.hpp); 256 is a generous constant.
-    const double err = 256.0 * kUnitRoundoff * (bb + dd) * inv * (std::fabs(vx) + std::fabs(vy));
-    return Vtx{vx, vy, err};
-}
+void degenerate_triangle() { throw std::logic_error("degenerate Delaunay triangle around a site"); }
 
 int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]) {
     const double ex = b.x - a.x, ey = b.y - a.y;

@@ -85,8 +85,26 @@ struct Chunk {
 
 constexpr double kUnitRoundoff = 0x1.0p-53;
 
+// Throws std::logic_error: a broken mesh invariant.
+[[noreturn]] void degenerate_triangle();
+
 // Voronoi vertex of the counterclockwise triangle (site, site+b, site+d).
-Vtx voronoi_vertex(const Point& b, const Point& d);
+// Inline: it runs for every neighbour of every cell the sampler looks at.
+inline Vtx voronoi_vertex(const Point& b, const Point& d) {
+    const double bb = b.x * b.x + b.y * b.y, dd = d.x * d.x + d.y * d.y;
+    const double cr = b.x * d.y - b.y * d.x;
+    // Delaunay triangles around a site are counterclockwise, and with points
+    // at least R apart inside the ghost square their angles stay far from 0.
+    if (!(cr > 0.0) || !(cr < 1e300)) degenerate_triangle();
+    const double inv = 0.5 / cr;
+    const double vx = (d.y * bb - b.y * dd) * inv;
+    const double vy = (b.x * dd - d.x * bb) * inv;
+    // Forward error: the circumcentre's sensitivity to rounding of b and d and
+    // of the arithmetic is below ~(|b|+|d|)^2 / |b x d| ulps of its distance;
+    // 256 is a generous constant.
+    const double err = 256.0 * kUnitRoundoff * (bb + dd) * inv * (std::fabs(vx) + std::fabs(vy));
+    return Vtx{vx, vy, err};
+}
 // Splits the fan triangle (site, a, b) into at most two pieces; returns how many.
 int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]);
 // Free area of a piece: its triangle minus the circular sector it spans.
@@ -232,7 +250,7 @@ private:
     double sign_;
     bool& doubtful_;
     Next& next_;
-    Vtx first_{0, 0, 0}, prev_{0, 0, 0};
+    Vtx first_, prev_;  // set by the first push
     bool first_in_ = false, prev_in_ = false, has_first_ = false;
 };
 
@@ -360,22 +378,20 @@ CellMeasure measure_cell(const CellQuery& q, const Ring& ring) {
 // reached the pass stops: `measure` then covers only the part walked, and is
 // meaningful only when nothing was found.
 struct CellSelection {
+    explicit CellSelection(double r, double target) : sink(r, target) {}
+    cell_detail::CellSink sink;
     CellMeasure measure;
-    bool found = false;     // the running sum passed the target
-    bool fallback = false;  // it did not, but some chunk has positive area
-    cell_detail::Chunk chunk;
+    bool found() const { return sink.found(); }            // the running sum passed the target
+    bool fallback() const { return sink.has_fallback(); }  // it did not, but a chunk has area
+    const cell_detail::Chunk& chunk() const { return sink.chunk(); }
 };
 
 template <class Ring>
 CellSelection select_in_cell(const CellQuery& q, const Ring& ring, double target) {
-    cell_detail::CellSink sink(q.radius, target);
-    sink.stop_at_target();
-    const bool clip_doubtful = cell_detail::stream_cell(q, ring, sink);
-    CellSelection s;
-    s.measure = cell_detail::verdict(sink, clip_doubtful, q.radius);
-    s.found = sink.found();
-    s.fallback = sink.has_fallback();
-    if (s.found || s.fallback) s.chunk = sink.chunk();
+    CellSelection s(q.radius, target);
+    s.sink.stop_at_target();
+    const bool clip_doubtful = cell_detail::stream_cell(q, ring, s.sink);
+    s.measure = cell_detail::verdict(s.sink, clip_doubtful, q.radius);
     return s;
 }
 

@@ -220,8 +220,8 @@ void Sampler::draw_batch(std::size_t n) {
         // One pass: the chunk holding target u * U; if the exact area A falls
         // short of the target, the selection is rejected.
         const CellSelection sel = select_in_cell(q, ring_of(v), rng_.next_double() * bound[k]);
-        const cell_detail::Chunk* chunk = &sel.chunk;
-        if (!sel.found) {
+        const cell_detail::Chunk* chunk = &sel.chunk();
+        if (!sel.found()) {
             // The whole cell was measured: settle doubt, tighten the bound
             // (the same cell may come twice in a batch: only downwards).
             if (sel.measure.doubtful && covered_exactly(site)) {
@@ -235,7 +235,7 @@ void Sampler::draw_batch(std::size_t n) {
                 ++stats_.stale_rejections;
                 continue;
             }
-            if (!sel.fallback) {
+            if (!sel.fallback()) {
                 give_up(site);  // free by its vertices, yet no chunk with area
                 continue;
             }

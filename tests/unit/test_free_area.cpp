@@ -186,9 +186,9 @@ void add_uniformity_chi2(const pds::Sampler& s, std::size_t site, int n, std::ui
     std::vector<pds::Point> got;
     while (static_cast<int>(got.size()) < n) {
         const pds::CellSelection sel = pds::select_in_cell(q, ring_fn, rng.next_double() * area);
-        ck_assert(sel.found);
+        ck_assert(sel.found());
         pds::Point p;
-        if (pds::sample_chunk(q, sel.chunk, rng.next_double(), rng, accept, 64, &p) ==
+        if (pds::sample_chunk(q, sel.chunk(), rng.next_double(), rng, accept, 64, &p) ==
             pds::SampleOutcome::placed) {
             ck_assert(accept(p));
             got.push_back(p);
