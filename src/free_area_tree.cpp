@@ -42,10 +42,9 @@ void FreeAreaTree::reserve(std::size_t leaves) {
 
 double FreeAreaTree::sum_of_children(std::size_t level, std::size_t j) const {
     const double* c = nodes_.get() + offset_[level - 1] + kFanout * j;
-    // Left to right, fixed order: the same sum on every platform.
-    double s = c[0];
-    for (std::size_t i = 1; i < kFanout; ++i) s += c[i];
-    return s;
+    // Pairwise, in a fixed order (the same on every platform): pick_child
+    // splits the group along the same pairs.
+    return ((c[0] + c[1]) + (c[2] + c[3])) + ((c[4] + c[5]) + (c[6] + c[7]));
 }
 
 void FreeAreaTree::update_ancestors(std::size_t leaf) {
@@ -90,24 +89,23 @@ void FreeAreaTree::rebuild() {
 
 std::size_t FreeAreaTree::pick_child(std::size_t level, std::size_t j, double& u) const {
     const double* c = nodes_.get() + offset_[level - 1] + kFanout * j;
-    // Prefix sums in the same order as sum_of_children; the child is the
-    // number of prefixes at or below u. A zero child repeats the prefix before
-    // it, so it is never the one chosen; when rounding leaves u at or past the
-    // last prefix, the last child of positive weight is taken instead.
-    double prefix[kFanout];
-    double s = c[0];
-    prefix[0] = s;
-    for (std::size_t i = 1; i < kFanout; ++i) prefix[i] = (s += c[i]);
-    std::size_t pick = 0;
-    for (std::size_t i = 0; i < kFanout; ++i) pick += prefix[i] <= u;
-    if (pick == kFanout) {
-        pick = kFanout - 1;
-        while (pick > 0 && c[pick] == 0.0) --pick;
-        u = 0.0;
-    } else if (pick > 0) {
-        u -= prefix[pick - 1];
-    }
-    return kFanout * j + pick;
+    // Three halvings along the pairs sum_of_children adds: take the right part
+    // when u is past the left one and the right one is not empty (rounding
+    // may leave u at or past the end of the left part); so a part of sum 0 is
+    // never entered and the leaf reached has positive weight. Written with
+    // 0/1 integers and indexing, not branches: the choices are random, and a
+    // mispredicted branch per level would cost more than the arithmetic.
+    const double pair[4] = {c[0] + c[1], c[2] + c[3], c[4] + c[5], c[6] + c[7]};
+    const double half[2] = {pair[0] + pair[1], pair[2] + pair[3]};
+    const int r1 = (u >= half[0]) & (half[1] != 0.0);
+    u -= half[0] * r1;
+    const int r2 = (u >= pair[2 * r1]) & (pair[2 * r1 + 1] != 0.0);
+    u -= pair[2 * r1] * r2;
+    const int k = 4 * r1 + 2 * r2;
+    const int r3 = (u >= c[k]) & (c[k + 1] != 0.0);
+    u -= c[k] * r3;
+    if (u < 0.0) u = 0.0;
+    return kFanout * j + static_cast<std::size_t>(k + r3);
 }
 
 std::size_t FreeAreaTree::select(double u) const {

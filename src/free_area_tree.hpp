@@ -3,7 +3,7 @@
 //
 // An implicit 8-ary tree over the sites in insertion order. Level 0 holds the
 // leaves (one free area per site); entry j of level k+1 is the sum of entries
-// 8j .. 8j+7 of level k, added left to right. Eight doubles fill one 64-byte
+// 8j .. 8j+7 of level k, added pairwise in a fixed order. Eight doubles fill one 64-byte
 // cache line, so an update or a selection touches one line per level, about
 // log8 N lines in all: at 10^6 sites 7 instead of the 20 of a binary tree.
 //
@@ -11,7 +11,7 @@
 // and needs a hash map from vertex to leaf; an implicit tree is balanced by
 // construction and the leaf is the site's index, so neither is needed.
 //
-// Invariant: every entry above the leaves is exactly the left-to-right
+// Invariant: every entry above the leaves is exactly the fixed-order
 // floating-point sum of its eight children, always recomputed from them (never
 // adjusted by deltas). So a group whose leaves are all 0 sums to exactly 0, and
 // the root is 0 exactly when every cell is covered. Leaves are >= 0.

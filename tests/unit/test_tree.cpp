@@ -11,7 +11,7 @@
 namespace {
 
 // The root must be exactly the sum tree recomputed from the leaves: groups of
-// kFanout children added left to right, level by level.
+// eight children added pairwise, ((c0+c1)+(c2+c3))+((c4+c5)+(c6+c7)), level by level.
 double recount(const std::vector<double>& w, std::size_t cap) {
     const std::size_t k = pds::FreeAreaTree::kFanout;
     std::vector<double> level(cap, 0.0);
@@ -19,9 +19,9 @@ double recount(const std::vector<double>& w, std::size_t cap) {
     while (level.size() > 1) {
         std::vector<double> up((level.size() + k - 1) / k, 0.0);
         for (std::size_t j = 0; j < up.size(); ++j) {
-            double s = 0.0;
-            for (std::size_t i = 0; i < k; ++i) s += (k * j + i < level.size()) ? level[k * j + i] : 0.0;
-            up[j] = s;
+            double c[8];
+            for (std::size_t i = 0; i < k; ++i) c[i] = (k * j + i < level.size()) ? level[k * j + i] : 0.0;
+            up[j] = ((c[0] + c[1]) + (c[2] + c[3])) + ((c[4] + c[5]) + (c[6] + c[7]));
         }
         level.swap(up);
     }
