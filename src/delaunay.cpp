@@ -11,7 +11,10 @@ namespace pds {
 Delaunay::Delaunay(const Box& domain) {
     const double cx = 0.5 * (domain.x0 + domain.x1);
     const double cy = 0.5 * (domain.y0 + domain.y1);
-    const double half = 3.0 * std::hypot(domain.width(), domain.height());
+    // sqrt, not hypot: libm's hypot may differ in the last bit between
+    // versions, and the ghosts' coordinates reach the points a seed gives.
+    const double w = domain.width(), h = domain.height();
+    const double half = 3.0 * std::sqrt(w * w + h * h);
     reserve(kGhosts + 1);
     points_ = {{cx - half, cy - half}, {cx + half, cy - half}, {cx + half, cy + half},
                {cx - half, cy + half}};

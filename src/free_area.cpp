@@ -18,9 +18,8 @@ double dot(const Point& a, const Point& b) { return a.x * b.x + a.y * b.y; }
 // The fan triangle's pieces, skipping triangles inside the disk: when both ends
 // of the far side are within R, so is the whole triangle (it is convex).
 int fan_pieces(const Vtx& va, const Vtx& vb, double r2, Piece out[2]) {
-    const Point a{va.x, va.y}, b{vb.x, vb.y};
-    if (dot(a, a) <= r2 && dot(b, b) <= r2) return 0;
-    return split_fan_triangle(a, b, r2, out);
+    if (va.d2 <= r2 && vb.d2 <= r2) return 0;
+    return split_fan_triangle(Point{va.x, va.y}, Point{vb.x, vb.y}, r2, out);
 }
 
 }  // namespace

@@ -47,6 +47,7 @@ struct Vtx {
     double x;
     double y;
     double err;
+    double d2;  // x^2 + y^2, computed once: the classification and the fan both need it
 };
 
 // One piece of a fan triangle (paper's case 4): segment p-q seen from the site,
@@ -103,7 +104,7 @@ inline Vtx voronoi_vertex(const Point& b, const Point& d) {
     // of the arithmetic is below ~(|b|+|d|)^2 / |b x d| ulps of its distance;
     // 256 is a generous constant.
     const double err = 256.0 * kUnitRoundoff * (bb + dd) * inv * (std::fabs(vx) + std::fabs(vy));
-    return Vtx{vx, vy, err};
+    return Vtx{vx, vy, err, vx * vx + vy * vy};
 }
 // Splits the fan triangle (site, a, b) into at most two pieces; returns how many.
 int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]);
@@ -242,7 +243,8 @@ private:
         const double err = ((1.0 - tc) * a.err + tc * b.err + kUnitRoundoff * std::fabs(bound_)) *
                                (1.0 + slope) +
                            8.0 * kUnitRoundoff * (std::fabs(ao) + std::fabs(bo));
-        return axis_ == 0 ? Vtx{bound_, other, err} : Vtx{other, bound_, err};
+        return axis_ == 0 ? Vtx{bound_, other, err, bound_ * bound_ + other * other}
+                          : Vtx{other, bound_, err, other * other + bound_ * bound_};
     }
 
     int axis_;
@@ -276,7 +278,7 @@ public:
 
 private:
     Sink& sink_;
-    Vtx first_{0, 0, 0}, prev_{0, 0, 0};
+    Vtx first_{}, prev_{};
     bool has_first_ = false;
 };
 
@@ -311,10 +313,9 @@ public:
     CellSink(double r, double target)
         : r_(r), r2_(r * r), target_(target), rounding_(8.0 * kUnitRoundoff * r * r) {}
     void vertex(const Vtx& v) {
-        const double d2 = v.x * v.x + v.y * v.y;
         const double margin = v.err * (2.0 * r_ + v.err) + rounding_;
-        if (d2 > r2_ + margin) ++certainly_out_;
-        else if (d2 >= r2_ - margin) ++undecided_;
+        if (v.d2 > r2_ + margin) ++certainly_out_;
+        else if (v.d2 >= r2_ - margin) ++undecided_;
     }
     void edge(const Vtx& a, const Vtx& b);
     void finish() { flush(); }

@@ -35,7 +35,8 @@ Box scaled(const Box& b, int k) {
 // Any radius at least the diagonal gives the same one-point pattern; capping
 // keeps R^2 finite.
 double effective_radius(const Box& b, double r) {
-    const double cap = 2.0 * std::hypot(b.width(), b.height());
+    const double w = b.width(), h = b.height();
+    const double cap = 2.0 * std::sqrt(w * w + h * h);  // not hypot: see delaunay.cpp
     return r < cap ? r : cap;
 }
 

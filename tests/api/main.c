@@ -23,6 +23,7 @@ int main(void)
     srunner_add_suite(runner, determinism_suite());
     srunner_add_suite(runner, properties_suite());
     srunner_add_suite(runner, lifecycle_suite());
+    srunner_add_suite(runner, golden_suite());
 
     if (test_light())
         printf("PDS_TEST_LIGHT is set: heavy loops shrunk, calibration skipped\n");

@@ -9,6 +9,7 @@
  *   determinism_suite  same seed -> same bytes; no shared state            (determinism.c)
  *   properties_suite   distance, containment, maximality over seeds        (properties.c)
  *   lifecycle_suite    create/destroy cycles, destroy mid-run (Valgrind)   (lifecycle.c)
+ *   golden_suite       pinned fingerprints of the points some seeds give  (golden.c)
  */
 #ifndef PDS_TESTS_API_SUITES_H
 #define PDS_TESTS_API_SUITES_H
@@ -22,5 +23,6 @@ Suite *semantics_suite(void);
 Suite *determinism_suite(void);
 Suite *properties_suite(void);
 Suite *lifecycle_suite(void);
+Suite *golden_suite(void);
 
 #endif /* PDS_TESTS_API_SUITES_H */

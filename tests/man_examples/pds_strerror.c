@@ -45,7 +45,7 @@ main(void)
         pds_destroy(s);
         return 1;
     }
-    printf("pds_refine: %s\n", pds_errmsg(s));
+    printf("%s\n", pds_errmsg(s));  /* names the function */
     pds_destroy(s);
     return 0;
 }
