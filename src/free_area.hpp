@@ -7,10 +7,17 @@
 // regions of all cells tile the free area of the whole domain.
 //
 // The cell is streamed, never stored: the Delaunay neighbours of c arrive
-// counterclockwise, consecutive pairs give the Voronoi vertices, four
-// Sutherland-Hodgman stages clip them to the domain, and the clipped polygon's
-// edges form the triangle fan around c. No allocation happens, whatever the
-// vertex degree, so the sampler can update cells right after an insertion.
+// counterclockwise, consecutive pairs give the Voronoi vertices, and the
+// clipped polygon's edges form the triangle fan around c. Most cells lie well
+// inside the domain: their vertices are buffered and, when all are certainly
+// inside, go straight to the fan; otherwise four Sutherland-Hodgman stages
+// clip them. No allocation happens, whatever the vertex degree, so the sampler
+// can measure a cell right after an insertion.
+//
+// The fan is cut into the paper's pieces (cases 1-4); a piece's free area is
+// its triangle minus a circular sector. Consecutive pieces form chunks whose
+// sector angles add up, so one arctangent serves a chunk. Measuring and
+// selecting (the chunk holding a target, then a piece in it) share one pass.
 //
 // Rounding: every streamed vertex carries a forward error bound. A cell is
 // certified "covered" (area exactly 0) only when every clipping decision was
