@@ -56,18 +56,20 @@ const char* limit_text(pds::Limit limit) {
     return "no limit";
 }
 
-// Runs f() on s's core; maps exceptions to codes.
+// Runs f() on s's core; maps exceptions to codes. A failure inside a call
+// that changes the pattern may have left it half-updated, so the handle turns
+// read-only; a read-only call (`changes` false) leaves it usable.
 template <class F>
-int guarded(pds_sampler* s, const char* what, F&& f) PDS_NOEXCEPT {
+int guarded(pds_sampler* s, const char* what, F&& f, bool changes = true) PDS_NOEXCEPT {
     try {
         return f();
     } catch (const std::bad_alloc&) {
         return fail(s, PDS_ENOMEM, "%s: out of memory", what);
     } catch (const std::exception& e) {
-        s->broken = true;
+        if (changes) s->broken = true;
         return fail(s, PDS_EINTERNAL, "%s: internal error (please report): %s", what, e.what());
     } catch (...) {
-        s->broken = true;
+        if (changes) s->broken = true;
         return fail(s, PDS_EINTERNAL, "%s: internal error (please report)", what);
     }
 }
@@ -176,19 +178,16 @@ PDS_API double pds_free_area(const pds_sampler* s) PDS_NOEXCEPT {
 
 PDS_API int pds_verify(pds_sampler* s) PDS_NOEXCEPT {
     if (s == nullptr) return PDS_EINVAL;
-    try {
-        const pds::VerifyReport rep = s->core->verify();
-        if (!rep.valid)
-            return fail(s, PDS_EINTERNAL, "pds_verify: check failed (please report): %s",
-                        rep.failure.c_str());
-        return rep.maximal ? 0 : 1;
-    } catch (const std::bad_alloc&) {
-        return fail(s, PDS_ENOMEM, "pds_verify: out of memory");
-    } catch (const std::exception& e) {
-        return fail(s, PDS_EINTERNAL, "pds_verify: internal error (please report): %s", e.what());
-    } catch (...) {
-        return fail(s, PDS_EINTERNAL, "pds_verify: internal error (please report)");
-    }
+    return guarded(
+        s, "pds_verify",
+        [&] {
+            const pds::VerifyReport rep = s->core->verify();
+            if (!rep.valid)
+                return fail(s, PDS_EINTERNAL, "pds_verify: check failed (please report): %s",
+                            rep.failure.c_str());
+            return rep.maximal ? 0 : 1;
+        },
+        false);
 }
 
 PDS_API const char* pds_strerror(int code) PDS_NOEXCEPT {

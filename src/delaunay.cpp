@@ -40,11 +40,6 @@ bool Delaunay::has_room_for_one() const {
            mesh_.spare_records() >= 3;
 }
 
-std::size_t Delaunay::memory_bytes() const {
-    return mesh_.memory_bytes() + points_.capacity() * sizeof(Point) +
-           vertex_edge_.capacity() * sizeof(EdgeRef);
-}
-
 bool Delaunay::right_of(const Point& p, EdgeRef e) const {
     return orient2d(p, points_[mesh_.dest(e)], points_[mesh_.org(e)]) > 0;
 }

@@ -51,7 +51,6 @@ public:
     // An edge whose origin is v.
     EdgeRef edge_of(std::uint32_t v) const { return vertex_edge_[v]; }
     const QuadEdgeMesh& mesh() const { return mesh_; }
-    std::size_t memory_bytes() const;
 
     // The triangle (left face of the returned edge) that contains p, walking
     // from `start`; p must be inside the ghost square.

@@ -126,12 +126,6 @@ std::size_t expansion_compress(std::size_t elen, double* e) {
     return top;
 }
 
-double expansion_estimate(std::size_t elen, const double* e) {
-    double s = 0.0;
-    for (std::size_t i = 0; i < elen; ++i) s += e[i];
-    return s;
-}
-
 // ---- heap expansions -------------------------------------------------------------
 
 Expansion operator+(const Expansion& x, const Expansion& y) {

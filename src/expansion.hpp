@@ -62,8 +62,6 @@ inline int expansion_sign(std::size_t elen, const double* e) {
     if (elen == 0) return 0;
     return e[elen - 1] > 0.0 ? 1 : (e[elen - 1] < 0.0 ? -1 : 0);
 }
-// An approximation of the value (the sum of the components).
-double expansion_estimate(std::size_t elen, const double* e);
 
 // ---- fixed capacity ----------------------------------------------------------------
 
@@ -74,7 +72,6 @@ struct FixedExpansion {
 
     FixedExpansion() = default;
     int sign() const { return expansion_sign(n, c); }
-    double estimate() const { return expansion_estimate(n, c); }
 };
 
 inline FixedExpansion<2> exact_value(double a) {
@@ -157,7 +154,6 @@ public:
     Expansion scaled(double b) const;
 
     int sign() const { return expansion_sign(c_.size(), c_.data()); }
-    double estimate() const { return expansion_estimate(c_.size(), c_.data()); }
     std::size_t size() const { return c_.size(); }
 
 private:

@@ -64,7 +64,6 @@ public:
         if (total() > 0.0) descend(offset_.size() - 1, 0, visit);
     }
 
-    std::size_t memory_bytes() const { return offset_.empty() ? 0 : offset_.back() * sizeof(double) + sizeof(double); }
 
 private:
     struct Free {

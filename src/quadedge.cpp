@@ -80,6 +80,5 @@ void QuadEdgeMesh::swap(EdgeRef e) {
     set_endpoints(e, dest(a), dest(b));
 }
 
-std::size_t QuadEdgeMesh::memory_bytes() const { return rec_.capacity() * sizeof(Record); }
 
 }  // namespace pds

@@ -77,7 +77,6 @@ public:
     // The record of e, for prefetching.
     const void* record_address(EdgeRef e) const { return &rec_[e >> 2]; }
     std::size_t live_count() const { return live_edges_; }
-    std::size_t memory_bytes() const;
 
 private:
     struct Record {

@@ -165,7 +165,6 @@ bool Sampler::add_one() {
                 insert_point(cand.p, cand.source);
                 return true;
             }
-            ++stats_.dropped_candidates;
         }
         // Batch size, in selections: double it while every candidate becomes
         // a point; when newer points cover some, shrink it so that about a
@@ -233,7 +232,6 @@ void Sampler::draw_batch(std::size_t n) {
             if (sel.measure.area < bound[k]) {
                 // The target fell in the part of the bound the cell has lost
                 // since it was measured.
-                ++stats_.stale_rejections;
                 continue;
             }
             if (!sel.fallback()) {
@@ -253,7 +251,6 @@ void Sampler::draw_batch(std::size_t n) {
         }
         // A healthy piece practically never fails 64 draws; a cell that keeps
         // failing has a free region below double resolution, or none.
-        ++stats_.failed_draw_rounds;
         if (++draw_failures_ % kFailuresPerGiveUp == 0) give_up(site);
     }
     // Inserting a candidate flips edges one triangle beyond its source's
@@ -289,10 +286,7 @@ void Sampler::insert_point(const Point& p, std::uint32_t near) {
 }
 
 bool Sampler::covered_exactly(std::size_t site) const {
-    ++stats_.exact_classifications;
-    std::vector<Point> ring;
-    for_each_neighbour(vertex_of(site), [&](std::uint32_t n) { ring.push_back(dt_.point(n)); });
-    return cell_is_covered_exact(dt_.point(vertex_of(site)), ring, box_, r_);
+    return cell_is_covered_exact(dt_.point(vertex_of(site)), cell_ring(site), box_, r_);
 }
 
 void Sampler::give_up(std::size_t site) {
@@ -367,6 +361,5 @@ VerifyReport Sampler::verify() const {
     return rep;
 }
 
-std::size_t Sampler::memory_bytes() const { return dt_.memory_bytes() + tree_.memory_bytes(); }
 
 }  // namespace pds

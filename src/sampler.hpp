@@ -65,13 +65,9 @@ enum class Limit {
     coordinates_too_small,  // |coordinates| all below 2^-900
 };
 
-// Counters for diagnostics and tests.
+// What the sampler could not do, for tests and diagnostics.
 struct SamplerStats {
-    std::size_t exact_classifications = 0;  // doubtful or stuck cells decided exactly
-    std::size_t gave_up_cells = 0;          // cells still free that no draw could reach
-    std::size_t failed_draw_rounds = 0;     // chunk samplings that placed no point
-    std::size_t stale_rejections = 0;       // selections rejected because U > A
-    std::size_t dropped_candidates = 0;     // batch candidates covered by newer points
+    std::size_t gave_up_cells = 0;  // cells still free that no draw could reach
 };
 
 class Sampler {
@@ -105,14 +101,11 @@ public:
     const Box& domain() const { return user_domain_; }
     VerifyReport verify() const;
     const SamplerStats& stats() const { return stats_; }
-    std::size_t memory_bytes() const;
 
     // Internals, for the unit tests.
     const Delaunay& mesh() const { return dt_; }
     const Box& internal_domain() const { return box_; }
     double internal_radius() const { return r_; }
-    // The tree's weight: an upper bound on the cell's free area.
-    double cell_weight(std::size_t site) const { return tree_.weight(site); }
     CellMeasure cell_measure(std::size_t site) const;
     CellQuery cell_query(std::size_t site) const;
     std::vector<Point> cell_ring(std::size_t site) const;
@@ -173,7 +166,7 @@ private:
     std::vector<std::uint32_t> since_batch_;      // vertices added since it was drawn
     std::size_t batch_size_ = 1;
     int draw_failures_ = 0;                       // failed chunk samplings since the last point
-    mutable SamplerStats stats_;  // counters only: never steer the sampling
+    SamplerStats stats_;  // counters only: never steer the sampling
 };
 
 }  // namespace pds

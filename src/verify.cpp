@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "expansion.hpp"
+#include "free_area.hpp"
 #include "predicates.hpp"
 #include "spatial_hash.hpp"
 
@@ -135,13 +136,12 @@ bool uncovered_vertex(const Point& a, const Point& b, const Point& c, const Box&
 // Float filter for uncovered_vertex: 1 certainly uncovered, 0 certainly not,
 // -1 undecided.
 int uncovered_vertex_fast(const Point& a, const Point& b, const Point& c, const Box& box, double r) {
-    const double bx = b.x - a.x, by = b.y - a.y, dx = c.x - a.x, dy = c.y - a.y;
-    const double bb = bx * bx + by * by, dd = dx * dx + dy * dy;
-    const double cr = bx * dy - by * dx;
-    if (!(cr > 0.0)) return -1;
-    const double vx = (dy * bb - by * dd) / (2.0 * cr), vy = (bx * dd - dx * bb) / (2.0 * cr);
-    const double err = 256.0 * 0x1.0p-53 * (bb + dd) / cr * (std::fabs(vx) + std::fabs(vy)) +
-                       0x1.0p-50 * (std::fabs(a.x) + std::fabs(a.y));
+    const Point rb{b.x - a.x, b.y - a.y}, rd{c.x - a.x, c.y - a.y};
+    if (!(rb.x * rd.y - rb.y * rd.x > 0.0)) return -1;  // too flat to bound: decide exactly
+    const cell_detail::Vtx centre = cell_detail::voronoi_vertex(rb, rd);
+    const double vx = centre.x, vy = centre.y;
+    // The vertex's own bound, plus the rounding of moving it back to a's frame.
+    const double err = centre.err + 0x1.0p-50 * (std::fabs(a.x) + std::fabs(a.y) + std::fabs(vx) + std::fabs(vy));
     const double cx = a.x + vx, cy = a.y + vy;
     const auto side = [&](double v, double lo, double hi) {
         if (v < lo - err || v > hi + err) return 0;  // certainly outside
@@ -150,7 +150,7 @@ int uncovered_vertex_fast(const Point& a, const Point& b, const Point& c, const 
     };
     const int in_x = side(cx, box.x0, box.x1), in_y = side(cy, box.y0, box.y1);
     if (in_x == 0 || in_y == 0) return 0;
-    const double d2 = vx * vx + vy * vy, r2 = r * r;
+    const double d2 = centre.d2, r2 = r * r;
     const double margin = 2.0 * r * err + err * err + 8.0 * 0x1.0p-53 * r2;
     if (d2 < r2 - margin) return 0;
     if (in_x == 1 && in_y == 1 && d2 > r2 + margin) return 1;
