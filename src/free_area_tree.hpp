@@ -43,6 +43,9 @@ public:
     void push_back(double weight);
     // Sets a leaf and updates its ancestors: O(log N).
     void set(std::size_t leaf, double weight);
+    // Sets the number of leaves (requires capacity); new leaves must then be
+    // written with set_leaf_only() before rebuild().
+    void resize(std::size_t leaves) { size_ = leaves; }
     // Sets a leaf without touching ancestors; call rebuild() afterwards.
     void set_leaf_only(std::size_t leaf, double weight) { nodes_[leaf] = weight; }
     // Recomputes every used ancestor from its children: O(N).

@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 namespace pds {
@@ -90,6 +91,62 @@ private:
     std::size_t free_count_ = 0;
     std::size_t live_edges_ = 0;
 };
+
+// The operators below are inline: insertion and flips call them in their
+// innermost loops.
+
+inline EdgeRef QuadEdgeMesh::make_edge(std::uint32_t org, std::uint32_t dest) {
+    EdgeRef e;
+    if (free_list_ != kNoEdge) {
+        e = free_list_;
+        free_list_ = next_of(e);
+        --free_count_;
+    } else {
+        if (record_count() >= kMaxEdgeRecords) throw std::length_error("edge references exhausted");
+        e = static_cast<EdgeRef>(4 * rec_.size());
+        rec_.emplace_back();
+    }
+    // An isolated edge: each end is its own ring; the two dual quarters point at
+    // each other (one face on both sides).
+    Record& r = rec_[e >> 2];
+    r.next[0] = e;
+    r.next[1] = e + 3;
+    r.next[2] = e + 2;
+    r.next[3] = e + 1;
+    set_endpoints(e, org, dest);
+    ++live_edges_;
+    return e;
+}
+
+inline void QuadEdgeMesh::splice(EdgeRef a, EdgeRef b) {
+    const EdgeRef alpha = rot(onext(a));
+    const EdgeRef beta = rot(onext(b));
+    const EdgeRef t1 = onext(b);
+    const EdgeRef t2 = onext(a);
+    const EdgeRef t3 = onext(beta);
+    const EdgeRef t4 = onext(alpha);
+    next_of(a) = t1;
+    next_of(b) = t2;
+    next_of(alpha) = t3;
+    next_of(beta) = t4;
+}
+
+inline EdgeRef QuadEdgeMesh::connect(EdgeRef a, EdgeRef b) {
+    const EdgeRef e = make_edge(dest(a), org(b));
+    splice(e, lnext(a));
+    splice(sym(e), b);
+    return e;
+}
+
+inline void QuadEdgeMesh::swap(EdgeRef e) {
+    const EdgeRef a = oprev(e);
+    const EdgeRef b = oprev(sym(e));
+    splice(e, a);
+    splice(sym(e), b);
+    splice(e, lnext(a));
+    splice(sym(e), lnext(b));
+    set_endpoints(e, dest(a), dest(b));
+}
 
 }  // namespace pds
 

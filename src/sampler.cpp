@@ -45,7 +45,7 @@ double effective_radius(const Box& b, double r) {
 Sampler::Sampler(double radius, std::uint64_t seed)
     : rng_(seed), user_domain_(kUnitSquare), user_radius_(radius), dt_(kUnitSquare) {
     set_frame(kUnitSquare, radius);
-    ensure_room(1);
+    tree_.reserve(1);
     queue_.reserve(kMaxBatch);
     since_batch_.reserve(kMaxBatch + 1);
 }
@@ -86,23 +86,40 @@ void Sampler::set_domain(const Box& domain) {
     Delaunay fresh(scaled(domain, k));  // may throw: nothing changed yet
     fresh.reserve(dt_.points().capacity());
     dt_ = std::move(fresh);
+    darts_.reset();  // its grid was laid over the old domain
     user_domain_ = domain;
     set_frame(domain, user_radius_);
 }
 
+void Sampler::skip_dart_stage() {
+    if (count() != 0) throw std::logic_error("skip_dart_stage after the first point");
+    dart_stage_ = false;
+    darts_.reset();
+}
+
 void Sampler::ensure_room(std::size_t points) {
-    const std::size_t vertices = points + Delaunay::kGhosts;
-    if (dt_.points().capacity() >= vertices && tree_.capacity() >= points && dt_.has_room_for_one())
-        return;
-    // Each reserve either succeeds or leaves its container as it was.
-    dt_.reserve(vertices);
+    // Each reserve either succeeds or leaves its container as it was. The
+    // triangulation and the tree are reserved for the whole run even in the
+    // dart stage: address space, touched only when the Jones loop takes over.
+    dt_.reserve(points + Delaunay::kGhosts);
     tree_.reserve(points);
+    if (dart_stage_) {
+        if (!darts_) darts_ = std::make_unique<DartGrid>(box_, r_);
+        darts_->reserve(points);
+        emitted_.reserve(points);
+    }
+    reserved_points_ = std::max(reserved_points_, points);
+}
+
+bool Sampler::has_room_for_one() const {
+    const std::size_t n = count();
+    if (dart_stage_) return darts_ && darts_->has_room_for_one() && reserved_points_ > n;
+    return dt_.has_room_for_one() && tree_.capacity() > n;
 }
 
 bool Sampler::step() {
     const std::size_t n = count();
-    const bool room = dt_.has_room_for_one() && tree_.capacity() > n;
-    if (!room) {
+    if (!has_room_for_one()) {
         // Grow geometrically, but never past what the pattern can hold.
         const double cap = std::min(count_bound(box_, r_), static_cast<double>(max_points())) + 1.0;
         const double want = std::min(2.0 * static_cast<double>(n) + 64.0, cap);
@@ -125,6 +142,14 @@ std::size_t Sampler::run(std::size_t max_new, bool* maximal) {
 }
 
 void Sampler::refine(double radius) {
+    // The dart stage's grid is laid out for the old radius: hand its points
+    // to the Jones loop (or, with none yet, start the grid afresh).
+    if (dart_stage_) {
+        if (count() > 0)
+            finish_dart_stage();
+        else
+            darts_.reset();
+    }
     // Queued candidates were drawn for the old radius: the free region grows
     // now, so they would not be uniform over it.
     drop_queue();
@@ -149,6 +174,11 @@ std::vector<Point> Sampler::cell_ring(std::size_t site) const {
 }
 
 bool Sampler::add_one() {
+    if (dart_stage_) {
+        if (!darts_) throw std::logic_error("dart stage without its grid");
+        if (darts_->add_one(rng_)) return true;
+        finish_dart_stage();
+    }
     if (count() == 0) {
         // The whole domain is free: the first point is uniform in it.
         Point p{box_.x0 + rng_.next_double() * box_.width(),
@@ -180,6 +210,37 @@ bool Sampler::add_one() {
         if (tree_.total() == 0.0) return false;
         draw_batch(batch_size_);
     }
+}
+
+void Sampler::insert_dart_points(Delaunay& into, std::vector<std::uint32_t>* vertex_of_point) const {
+    if (!darts_) return;
+    const std::vector<std::uint32_t> order = darts_->insertion_order();
+    const std::vector<Point>& pts = darts_->points();
+    if (vertex_of_point != nullptr) vertex_of_point->resize(pts.size());
+    std::uint32_t previous = 0;  // each walk starts at the last point: a neighbour
+    for (std::uint32_t i : order) {
+        previous = into.insert(pts[i], previous);
+        if (vertex_of_point != nullptr) (*vertex_of_point)[i] = previous;
+    }
+}
+
+void Sampler::finish_dart_stage() {
+    // Room for all of this was reserved with the dart stage's (ensure_room),
+    // except the sweep order, allocated first: std::bad_alloc changes nothing.
+    const std::size_t n = count();
+    insert_dart_points(dt_, &emitted_);
+    tree_.resize(n);
+    for (std::size_t site = 0; site < n; ++site) tree_.set_leaf_only(site, cell_measure(site).area);
+    tree_.rebuild();
+    darts_.reset();
+    dart_stage_ = false;
+}
+
+Delaunay Sampler::mesh_of_dart_points() const {
+    Delaunay mesh(box_);
+    mesh.reserve(count() + Delaunay::kGhosts);
+    insert_dart_points(mesh, nullptr);
+    return mesh;
 }
 
 void Sampler::drop_queue() {
@@ -294,7 +355,31 @@ void Sampler::give_up(std::size_t site) {
     tree_.set(site, 0.0);
 }
 
+bool Sampler::dart_pattern_has_room() const {
+    if (count() == 0) return true;
+    if (darts_->finds_free_spot()) return true;
+    // None of the grid's probes is free: decide on the triangulation.
+    const Delaunay mesh = mesh_of_dart_points();
+    for (std::uint32_t v = Delaunay::kGhosts; v < mesh.vertex_count(); ++v) {
+        std::vector<Point> ring;
+        for_each_neighbour_in(mesh, v, [&](std::uint32_t n) { ring.push_back(mesh.point(n)); });
+        const CellMeasure m = measure_cell(CellQuery{mesh.point(v), box_, r_}, [&](const auto& visit) {
+            for (const Point& p : ring) visit(p);
+        });
+        if (m.area == 0.0) continue;
+        if (!m.doubtful || !cell_is_covered_exact(mesh.point(v), ring, box_, r_)) return true;
+    }
+    return false;
+}
+
 bool Sampler::has_room() const {
+    if (dart_stage_) {
+        try {
+            return dart_pattern_has_room();
+        } catch (const std::bad_alloc&) {
+            return true;  // cannot tell without memory: say there may be room
+        }
+    }
     // Some cell with a positive bound must have positive free area, decided
     // exactly; nothing is changed, so asking never alters later points. The
     // newest cell is the likeliest candidate, then all others.
@@ -325,20 +410,29 @@ std::size_t Sampler::copy_points(std::size_t first, std::size_t n, double* xy) c
     const std::size_t have = count();
     if (first >= have) return 0;
     n = std::min(n, have - first);
-    const Point* src = dt_.points().data() + Delaunay::kGhosts + first;
-    if (scale_exp_ == 0) {
-        std::memcpy(xy, src, n * sizeof(Point));
-    } else {
-        for (std::size_t i = 0; i < n; ++i) {
-            xy[2 * i] = std::ldexp(src[i].x, -scale_exp_);
-            xy[2 * i + 1] = std::ldexp(src[i].y, -scale_exp_);
-        }
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t k = first + i;
+        const Point& p = darts_ ? darts_->points()[k]
+                         : k < emitted_.size()
+                             ? dt_.point(emitted_[k])
+                             : dt_.point(static_cast<std::uint32_t>(k + Delaunay::kGhosts));
+        xy[2 * i] = std::ldexp(p.x, -scale_exp_);
+        xy[2 * i + 1] = std::ldexp(p.y, -scale_exp_);
     }
     return n;
 }
 
 double Sampler::free_area() const {
     if (count() == 0) return user_domain_.width() * user_domain_.height();
+    if (dart_stage_) {
+        const Delaunay mesh = mesh_of_dart_points();
+        double sum = 0.0;
+        for (std::uint32_t v = Delaunay::kGhosts; v < mesh.vertex_count(); ++v)
+            sum += measure_cell(CellQuery{mesh.point(v), box_, r_}, [&](const auto& visit) {
+                       for_each_neighbour_in(mesh, v, [&](std::uint32_t n) { visit(mesh.point(n)); });
+                   }).area;
+        return std::ldexp(sum, -2 * scale_exp_);
+    }
     // The tree holds upper bounds; the exact area is re-measured, cell by cell,
     // in leaf order (so the sum is the same on every call).
     double sum = 0.0;
@@ -350,6 +444,7 @@ double Sampler::free_area() const {
 }
 
 VerifyReport Sampler::verify() const {
+    if (dart_stage_) return verify_pattern(mesh_of_dart_points(), box_, r_);
     VerifyReport rep = verify_pattern(dt_, box_, r_);
     if (rep.valid && !rep.maximal && count() > 0 && tree_.total() == 0.0) {
         rep.valid = false;

@@ -26,6 +26,14 @@
 // cover. The batch size adapts to how many candidates survive; the queue
 // persists across calls, so splitting a run does not change its points.
 //
+// Stages: a run opens with dart throwing on a grid (dart_grid.hpp), which adds
+// points with the same law while most of the domain is free, and switches to
+// the Jones loop once darts mostly miss: the points so far are inserted into
+// the triangulation in grid order, every cell is measured, and the tree is
+// built in one pass. Points keep the order they were added in: the dart
+// stage's vertices are numbered in grid order for locality, and emitted_ maps
+// each of those points to its vertex.
+//
 // Frame: internally every coordinate is the user's multiplied by 2^k, chosen so
 // the domain's largest |coordinate| lies in [1, 2). Scaling by a power of two
 // is exact both ways, so every exact decision (distances, orientation) is the
@@ -46,8 +54,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "dart_grid.hpp"
 #include "delaunay.hpp"
 #include "free_area.hpp"
 #include "free_area_tree.hpp"
@@ -93,7 +103,9 @@ public:
     // Continues with a smaller radius; requires 0 < radius <= radius() and limits ok.
     void refine(double radius);
 
-    std::size_t count() const { return dt_.vertex_count() - Delaunay::kGhosts; }
+    std::size_t count() const {
+        return darts_ ? darts_->count() : dt_.vertex_count() - Delaunay::kGhosts;
+    }
     std::size_t copy_points(std::size_t first, std::size_t n, double* xy) const;
     double radius() const { return user_radius_; }
     // Exact free area: O(cells not yet known covered), 0 at once when maximal.
@@ -103,6 +115,10 @@ public:
     const SamplerStats& stats() const { return stats_; }
 
     // Internals, for the unit tests.
+    // Runs the Jones loop from the first point, without the dart stage; requires count() == 0.
+    void skip_dart_stage();
+    bool in_dart_stage() const { return dart_stage_; }
+    // The triangulation (only the ghosts while in the dart stage).
     const Delaunay& mesh() const { return dt_; }
     const Box& internal_domain() const { return box_; }
     double internal_radius() const { return r_; }
@@ -123,7 +139,12 @@ private:
 
     void set_frame(const Box& domain, double radius);
     void ensure_room(std::size_t points);
+    bool has_room_for_one() const;
     bool add_one();
+    void finish_dart_stage();
+    void insert_dart_points(Delaunay& into, std::vector<std::uint32_t>* vertex_of_point) const;
+    Delaunay mesh_of_dart_points() const;
+    bool dart_pattern_has_room() const;
     void draw_batch(std::size_t n);
     bool still_free(const Point& p) const;
     void drop_queue();
@@ -144,8 +165,12 @@ private:
     }
     template <class Visit>
     void for_each_neighbour(std::uint32_t v, const Visit& visit) const {
-        const QuadEdgeMesh& m = dt_.mesh();
-        const EdgeRef first = dt_.edge_of(v);
+        for_each_neighbour_in(dt_, v, visit);
+    }
+    template <class Visit>
+    static void for_each_neighbour_in(const Delaunay& dt, std::uint32_t v, const Visit& visit) {
+        const QuadEdgeMesh& m = dt.mesh();
+        const EdgeRef first = dt.edge_of(v);
         EdgeRef e = first;
         do {
             visit(m.dest(e));
@@ -159,6 +184,10 @@ private:
     int scale_exp_ = 0;  // internal = user * 2^scale_exp_
     Box box_;            // internal frame
     double r_ = 0.0;     // internal radius (capped at twice the diagonal)
+    bool dart_stage_ = true;
+    std::unique_ptr<DartGrid> darts_;       // the dart stage's grid, once it has begun
+    std::vector<std::uint32_t> emitted_;    // dart-stage point i is vertex emitted_[i]
+    std::size_t reserved_points_ = 0;       // room made by ensure_room
     Delaunay dt_;
     FreeAreaTree tree_;  // one leaf per site: an upper bound on its free area
     std::vector<Candidate> queue_;                // the current batch, consumed in order

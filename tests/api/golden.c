@@ -9,6 +9,9 @@
  * split changes them. A deliberate change to the sampler that alters its
  * output must update them, and say so in the release notes: the same seed
  * then gives other points (still with the same law).
+ *
+ * History: re-pinned for 1.1.0, whose dart stage (src/dart_grid.hpp) draws
+ * the opening points from the generator in a different way.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -28,10 +31,10 @@ struct golden {
 };
 
 static const struct golden cases[] = {
-    {0.01, 1, 0, 0.0, 0, 7067, 0x3b996d86eea5186bull},
-    {0.01, 1, 0, 0.0, 97, 7067, 0x3b996d86eea5186bull}, /* split: same bytes */
-    {0.02, 7, 1, 0.015, 0, 13537, 0x71572616ae33913eull},
-    {0.05, 12345678901234567ull, 0, 0.0, 0, 292, 0x120967536bcea443ull},
+    {0.01, 1, 0, 0.0, 0, 7048, 0x24f25a7990fba47cull},
+    {0.01, 1, 0, 0.0, 97, 7048, 0x24f25a7990fba47cull}, /* split: same bytes */
+    {0.02, 7, 1, 0.015, 0, 13531, 0x72b45bb3f3220347ull},
+    {0.05, 12345678901234567ull, 0, 0.0, 0, 304, 0x06bd299d7a5890dcull},
 };
 
 static uint64_t fingerprint(const double *v, size_t n)

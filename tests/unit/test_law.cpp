@@ -71,14 +71,23 @@ double ks_scaled(std::vector<double> a, std::vector<double> b) {
     return d * std::sqrt(n * m / (n + m));
 }
 
-void compare_laws(const pds::Box& box, double r, int runs) {
+enum class Stages { darts_then_jones, jones_only };
+
+void compare_laws(const pds::Box& box, double r, int runs, Stages stages) {
     Stats jones, darts;
     SaturatedDartThrowing reference(box, r);
+    std::size_t from_darts = 0, total = 0;
     for (int seed = 1; seed <= runs; ++seed) {
         pds::Sampler s(r, static_cast<std::uint64_t>(seed));
         s.set_domain(box);
+        if (stages == Stages::jones_only) s.skip_dart_stage();
         bool maximal = false;
+        // Both stages must take part: run until the hand-over, count.
+        while (s.in_dart_stage() && s.run(1, &maximal) == 1) {
+        }
+        from_darts += s.in_dart_stage() ? s.count() : s.count() - (s.count() > 0 ? 1 : 0);
         s.run(0, &maximal);
+        total += s.count();
         ck_assert(maximal);
         std::vector<double> xy(2 * s.count());
         s.copy_points(0, s.count(), xy.data());
@@ -86,6 +95,12 @@ void compare_laws(const pds::Box& box, double r, int runs) {
         for (std::size_t i = 0; i < p.size(); ++i) p[i] = {xy[2 * i], xy[2 * i + 1]};
         add(jones, p, r);
         add(darts, reference.run(static_cast<std::uint64_t>(1000000 + seed)), r);
+    }
+    if (stages == Stages::darts_then_jones) {
+        // The dart stage must place a real share of the points, and leave
+        // the Jones loop a real share too, or this test would not test both.
+        const double share = static_cast<double>(from_darts) / static_cast<double>(total);
+        ck_assert_msg(share > 0.3 && share < 0.95, "dart stage placed %.3f of the points", share);
     }
     const double z_count = z_score(jones.count, darts.count);
     const double z_pairs = z_score(jones.close_pairs, darts.close_pairs);
@@ -120,10 +135,20 @@ START_TEST(reference_is_maximal) {
 }
 END_TEST
 
-START_TEST(law_in_the_unit_square) { compare_laws(pds::Box{0, 0, 1, 1}, 0.1, test_light() ? 400 : 3000); }
+START_TEST(law_in_the_unit_square) {
+    compare_laws(pds::Box{0, 0, 1, 1}, 0.1, test_light() ? 400 : 3000, Stages::darts_then_jones);
+}
 END_TEST
 
-START_TEST(law_in_a_rectangle) { compare_laws(pds::Box{0, 0, 2, 0.5}, 0.12, test_light() ? 300 : 2000); }
+START_TEST(law_in_a_rectangle) {
+    compare_laws(pds::Box{0, 0, 2, 0.5}, 0.12, test_light() ? 300 : 2000, Stages::darts_then_jones);
+}
+END_TEST
+
+START_TEST(law_of_the_jones_loop_alone) {
+    // The Jones loop from the first point (it alone serves refine()).
+    compare_laws(pds::Box{0, 0, 1, 1}, 0.1, test_light() ? 300 : 2000, Stages::jones_only);
+}
 END_TEST
 
 Suite* law_suite() {
@@ -133,6 +158,7 @@ Suite* law_suite() {
     tcase_add_test(t, reference_is_maximal);
     tcase_add_test(t, law_in_the_unit_square);
     tcase_add_test(t, law_in_a_rectangle);
+    tcase_add_test(t, law_of_the_jones_loop_alone);
     suite_add_tcase(s, t);
     return s;
 }
