@@ -4,7 +4,8 @@
 #   make demo       build, write a maximal pattern to build/demo.txt, print a summary
 #   make check      install what the tests need (Debian, as root), then run them all,
 #                   and the same suites again under Valgrind memcheck
-#   make bench      benchmark figures (not assertions)
+#   make bench      benchmark figures against two baselines (not assertions);
+#                   make bench-quick: the two smaller sizes only
 #   make install    PREFIX, DESTDIR, LIBDIR, INCLUDEDIR, BINDIR, MANDIR, PKGCONFIGDIR
 #   make uninstall, make clean
 #   make abi-baseline   regenerate abi/libpoissondisk.abi (only with a map-node bump)
@@ -68,7 +69,8 @@ CHECK_LIBS = $$(pkg-config --libs check)
 
 .PHONY: all demo check bench install uninstall clean deps abi-baseline \
         check-unit check-api check-header check-symbols check-abi check-man \
-        check-examples check-python check-pkgconfig check-cli check-valgrind
+        check-examples check-python check-pkgconfig check-cli check-valgrind \
+        bench-quick check-bench
 
 all: $(LIB_SO) $(B)/libpoissondisk.so $(B)/$(SONAME) $(LIB_A) $(CLI)
 
@@ -106,8 +108,8 @@ deps:
 
 check: deps all
 	@$(MAKE) --no-print-directory check-header check-symbols check-abi check-unit \
-	    check-api check-examples check-cli check-python check-pkgconfig check-man \
-	    check-valgrind
+	    check-api check-examples check-cli check-bench check-python check-pkgconfig \
+	    check-man check-valgrind
 	@echo "make check: all checks passed"
 
 $(UNIT_BIN): $(UNIT_SRC) $(CORE_OBJ) $(wildcard tests/unit/*.hpp)
@@ -169,11 +171,22 @@ abi-baseline: $(LIB_SO)
 	abidw --no-corpus-path --headers-dir include --drop-private-types --exported-interfaces-only $(LIB_SO) > abi/libpoissondisk.abi
 
 # ---- benchmark -----------------------------------------------------------------------
-$(B)/bench: bench/bench.c include/poissondisk.h $(LIB_A)
-	$(CC) $(PDS_CFLAGS) -O2 $(CFLAGS) -o $@ $< $(LIB_A) -lstdc++ -lm
+# The library against two baselines (Bridson, grid dart throwing) at 10^4..10^7
+# points: a table on stdout, $(B)/bench.csv and $(B)/bench.svg (the paper's
+# figure 7). A few minutes; bench-quick does 10^4 and 10^5 only. BENCH_ARGS adds
+# options, e.g. BENCH_ARGS='--repeats 5' (see ./build/bench --help).
+BENCH_SRC := $(sort $(wildcard bench/*.c))
+$(B)/bench: $(BENCH_SRC) $(wildcard bench/*.h) include/poissondisk.h $(LIB_A)
+	$(CC) $(PDS_CFLAGS) -O2 $(CFLAGS) -o $@ $(BENCH_SRC) $(LIB_A) -lstdc++ -lm
 
 bench: $(B)/bench
-	./$(B)/bench
+	./$(B)/bench --csv $(B)/bench.csv --svg $(B)/bench.svg $(BENCH_ARGS)
+
+bench-quick: $(B)/bench
+	./$(B)/bench --csv $(B)/bench-quick.csv --svg $(B)/bench-quick.svg $(BENCH_ARGS) 10000 100000
+
+check-bench: $(B)/bench
+	sh tests/check-bench.sh $(B)/bench
 
 # ---- install -------------------------------------------------------------------------
 install: all

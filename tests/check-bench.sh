@@ -1,0 +1,150 @@
+#!/bin/sh
+# check-bench.sh - smoke test of the benchmark program (make check-bench).
+#
+#   sh tests/check-bench.sh build/bench
+#
+# First the program's own self-test of its checks (close pairs must fail,
+# holes must be seen). Then the benchmark at two small sizes (1000 and 3000
+# points, one repeat, well under a second) and judges its CSV with awk: the columns, one row per method
+# and size, every method's minimum-distance check passed, the library's
+# pattern left nothing uncovered, the baselines' counts and coverage are what
+# Bridson and early-stopped dart throwing give (fewer points, small gaps that
+# the probes must see). Also the SVG's shape and the argument errors. Timings
+# are only checked to be positive: nothing here depends on the machine's speed.
+# Ends with "check-bench: N passed, M failed" and a non-zero status on failure.
+
+set -u
+
+bench=${1:?usage: sh tests/check-bench.sh PATH-TO-bench}
+case $bench in */*) ;; *) bench=./$bench ;; esac
+if [ ! -x "$bench" ]; then
+    echo "check-bench: $bench is not an executable file" >&2
+    exit 2
+fi
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/check-bench.XXXXXX") || exit 2
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 130' INT TERM
+
+passed=0
+failed=0
+ok() { passed=$((passed + 1)); }
+bad() {
+    failed=$((failed + 1))
+    echo "FAIL: $*" >&2
+}
+# expect DESCRIPTION COMMAND...: the command (a test) must succeed.
+expect() {
+    e_desc=$1
+    shift
+    if "$@"; then ok; else bad "$e_desc"; fi
+}
+
+header='method,N_target,N_points,radius,seconds_median,ns_per_point,ns_per_NlogN,peak_bytes_per_point,instructions_per_point,uncovered_fraction,uncovered_stderr,min_distance_ok'
+
+# csv_all DESCRIPTION AWK-CONDITION: the condition holds on every data row of
+# $tmp/b.csv (fields by name: see the header above); prints the rows where it
+# does not.
+csv_all() {
+    c_desc=$1
+    awk -F, "
+        NR == 1 { next }
+        !($2) { print \"  row \" NR \": \" \$0 > \"/dev/stderr\"; bad = 1 }
+        END { exit bad }" "$tmp/b.csv"
+    if [ $? -eq 0 ]; then ok; else bad "$c_desc"; fi
+}
+
+# field ROW-METHOD N COLUMN: one value from $tmp/b.csv.
+field() {
+    awk -F, -v m="$1" -v n="$2" -v c="$3" '
+        NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+        $1 == m && $2 == n { print $(col[c]); exit }' "$tmp/b.csv"
+}
+
+# ---- the checks themselves, on patterns with known answers ----------------------------
+"$bench" --self-test > "$tmp/self.out" 2>&1
+rc=$?
+expect "bench --self-test passes (got $rc: $(grep FAILED "$tmp/self.out" | head -n 3))" [ "$rc" -eq 0 ]
+
+# ---- a normal run ---------------------------------------------------------------------
+"$bench" --repeats 1 --csv "$tmp/b.csv" --svg "$tmp/b.svg" 1000 3000 \
+    > "$tmp/b.out" 2> "$tmp/b.err"
+rc=$?
+expect "bench exits 0 (got $rc; stderr: $(head -c 300 "$tmp/b.err"))" [ "$rc" -eq 0 ]
+expect "the table is printed" grep -q '^method  *N  *points' "$tmp/b.out"
+expect "the table has a row per method and size" \
+    [ "$(grep -cE '^(poissondisk|bridson|dart) +(1000|3000) ' "$tmp/b.out")" -eq 6 ]
+expect "the table gives the speed ratios" \
+    [ "$(grep -c 'time relative to poissondisk:  bridson [0-9.]*  dart [0-9.]*$' "$tmp/b.out")" -eq 2 ]
+expect "the CSV exists" [ -s "$tmp/b.csv" ]
+expect "the CSV header is the documented one" [ "$(head -n 1 "$tmp/b.csv")" = "$header" ]
+expect "the CSV has 6 data rows" [ "$(wc -l < "$tmp/b.csv" | tr -d ' ')" -eq 7 ]
+
+csv_all "every row has 12 fields" 'NF == 12'
+csv_all "every row is one of the three methods" '$1 == "poissondisk" || $1 == "bridson" || $1 == "dart"'
+csv_all "N_target is 1000 or 3000" '$2 == 1000 || $2 == 3000'
+for m in poissondisk bridson dart; do
+    for n in 1000 3000; do
+        expect "a row for $m at N=$n" [ -n "$(field $m $n N_target)" ]
+    done
+done
+csv_all "the radius is sqrt(0.6966/N)" \
+    '$4 > 0 && ($4 * $4 * $2 / 0.6966 - 1) ^ 2 < 1e-12'
+csv_all "times are positive numbers" '$5 > 0 && $6 > 0 && $7 > 0'
+csv_all "ns_per_point is seconds / points" '(1e9 * $5 / $3 / $6 - 1) ^ 2 < 1e-8'
+csv_all "instructions per point: empty or a positive number" '$9 == "" || $9 > 0'
+csv_all "the uncovered fraction is in [0, 1) and its error is not negative" \
+    '$10 >= 0 && $10 < 1 && $11 >= 0'
+csv_all "every method's minimum-distance check passed" '$12 == 1'
+
+# The library: maximal, so no probe is uncovered; and the RSA count (R was
+# chosen for about N points; small squares have a few more at the edges).
+csv_all "poissondisk leaves nothing uncovered" '$1 != "poissondisk" || ($10 == 0 && $11 == 0)'
+csv_all "poissondisk gives about N points" '$1 != "poissondisk" || ($3 >= 0.97 * $2 && $3 <= 1.08 * $2)'
+# The baselines are not maximal: clearly fewer points (about 88% here) and a
+# small uncovered fraction that the probes must detect (about 1e-3).
+for m in bridson dart; do
+    for n in 1000 3000; do
+        ours=$(field poissondisk $n N_points)
+        theirs=$(field $m $n N_points)
+        gap=$(field $m $n uncovered_fraction)
+        expect "$m count at N=$n is plausible ($theirs vs poissondisk $ours)" \
+            awk -v a="$theirs" -v b="$ours" 'BEGIN { exit !(a >= 0.80 * b && a <= 0.96 * b) }'
+        expect "$m leaves a small uncovered fraction at N=$n (got $gap)" \
+            awk -v p="$gap" 'BEGIN { exit !(p > 0 && p < 0.01) }'
+    done
+done
+
+# ---- the chart ------------------------------------------------------------------------
+expect "the SVG exists" [ -s "$tmp/b.svg" ]
+expect "the SVG is one <svg> element" \
+    awk 'NR == 1 && !/^<\?xml / { exit 1 } /<svg / { o++ } /<\/svg>/ { c++ } END { exit !(o == 1 && c == 1) }' "$tmp/b.svg"
+expect "the SVG has a line per method" [ "$(grep -c '<polyline' "$tmp/b.svg")" -eq 3 ]
+for m in poissondisk bridson dart; do
+    expect "the SVG legend names $m" grep -q ">$m</text>" "$tmp/b.svg"
+done
+
+# ---- options --------------------------------------------------------------------------
+"$bench" --repeats 1 --methods poissondisk --csv - 1000 > "$tmp/o.out" 2> "$tmp/o.err"
+rc=$?
+expect "--csv -: exit 0 (got $rc)" [ "$rc" -eq 0 ]
+expect "--csv -: the CSV on stdout" [ "$(head -n 1 "$tmp/o.out")" = "$header" ]
+expect "--methods poissondisk: one row" [ "$(wc -l < "$tmp/o.out" | tr -d ' ')" -eq 2 ]
+expect "--csv -: the table on stderr" grep -q '^poissondisk  *1000 ' "$tmp/o.err"
+
+usage_case() {
+    u_desc=$1
+    shift
+    "$bench" "$@" > "$tmp/u.out" 2> "$tmp/u.err"
+    rc=$?
+    expect "$u_desc: exit 2 (got $rc)" [ "$rc" -eq 2 ]
+    expect "$u_desc: a message and the usage" grep -q '^usage: ' "$tmp/u.err"
+}
+usage_case "--repeats 0" --repeats 0 1000
+usage_case "--methods with an unknown name" --methods poissondisk,nope 1000
+usage_case "a size of 5" 5
+usage_case "a size that is not a number" 10k
+usage_case "an unknown option" --bogus 1000
+
+echo "check-bench: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
