@@ -40,10 +40,6 @@ bool Delaunay::has_room_for_one() const {
            mesh_.spare_records() >= 3;
 }
 
-bool Delaunay::right_of(const Point& p, EdgeRef e) const {
-    return orient2d(p, points_[mesh_.dest(e)], points_[mesh_.org(e)]) > 0;
-}
-
 EdgeRef Delaunay::locate(const Point& p, EdgeRef e) const {
     // The walk visits each triangle at most once on a Delaunay mesh; the bound
     // only turns a broken invariant into an error instead of a hang.

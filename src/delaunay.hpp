@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "point.hpp"
+#include "predicates.hpp"
 #include "quadedge.hpp"
 
 namespace pds {
@@ -66,7 +67,10 @@ public:
     void prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t n) const;
 
 private:
-    bool right_of(const Point& p, EdgeRef e) const;
+    // Inline: the walk and the flip loop call it at every step.
+    bool right_of(const Point& p, EdgeRef e) const {
+        return orient2d(p, points_[mesh_.dest(e)], points_[mesh_.org(e)]) > 0;
+    }
     void swap_edge(EdgeRef e);
     void delete_edge(EdgeRef e);
 
