@@ -146,11 +146,12 @@ PDS_API double pds_radius(const pds_sampler *s) PDS_NOEXCEPT;
 /*
  * pds_free_area - area of the domain farther than R from every point, where a
  * new point could still go; exactly 0 once the pattern is maximal; the whole
- * domain's area before the first point; NaN for NULL. Cost: O(1) when the
- * pattern is maximal, otherwise O(N): the sampler keeps only upper bounds of
- * the cells' areas while it runs, and this call measures the cells not yet
- * known to be covered (without changing anything, so calling it never
- * changes later points). (1.0)
+ * domain's area before the first point; NaN for NULL (or when memory runs
+ * out). Cost: O(1) when the pattern is maximal, otherwise O(N): the sampler
+ * keeps only upper bounds of the cells' areas while it runs, and this call
+ * measures the cells not yet known to be covered; early in a run, while
+ * points come from the dart stage, it first triangulates them, O(N log N).
+ * It changes nothing, so calling it never changes later points. (1.0)
  */
 PDS_API double pds_free_area(const pds_sampler *s) PDS_NOEXCEPT;
 

@@ -173,7 +173,13 @@ PDS_API double pds_radius(const pds_sampler* s) PDS_NOEXCEPT {
 }
 
 PDS_API double pds_free_area(const pds_sampler* s) PDS_NOEXCEPT {
-    return s ? s->core->free_area() : std::numeric_limits<double>::quiet_NaN();
+    if (s == nullptr) return std::numeric_limits<double>::quiet_NaN();
+    // Early in a run this builds a triangulation, which may run out of memory.
+    try {
+        return s->core->free_area();
+    } catch (...) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
 }
 
 PDS_API int pds_verify(pds_sampler* s) PDS_NOEXCEPT {

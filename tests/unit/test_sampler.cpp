@@ -132,6 +132,45 @@ START_TEST(partial_patterns_are_valid) {
 }
 END_TEST
 
+START_TEST(dart_stage_and_hand_over) {
+    // Queries in the dart stage (no triangulation kept) against independent
+    // answers, then the hand-over: points keep their order and values.
+    pds::Sampler s(0.02, 11);
+    s.set_domain(pds::Box{0, 0, 1.5, 0.8});
+    bool maximal = true;
+    s.run(800, &maximal);
+    ck_assert(s.in_dart_stage());
+    ck_assert(!maximal);
+    // Free area against the fraction of a fine probe grid farther than R.
+    const std::vector<double> xy = user_points(s);
+    const int g = test_light() ? 300 : 900;
+    long uncovered = 0;
+    for (int i = 0; i < g; ++i)
+        for (int j = 0; j < g; ++j) {
+            const double x = 1.5 * (i + 0.5) / g, y = 0.8 * (j + 0.5) / g;
+            bool covered = false;
+            for (std::size_t k = 0; k < xy.size() / 2 && !covered; ++k) {
+                const double dx = xy[2 * k] - x, dy = xy[2 * k + 1] - y;
+                covered = dx * dx + dy * dy < 0.02 * 0.02;
+            }
+            uncovered += !covered;
+        }
+    const double probed = 1.5 * 0.8 * static_cast<double>(uncovered) / (static_cast<double>(g) * g);
+    ck_assert_double_gt(probed, 0.01);
+    ck_assert_double_lt(std::fabs(s.free_area() - probed), 0.03 * probed);
+    check_pattern(s, false);
+    ck_assert(s.in_dart_stage());  // the queries changed nothing
+    // Hand over (somewhere in the next points) and run to the end: the
+    // first 800 points are the same, in the same order.
+    s.run(0, &maximal);
+    ck_assert(maximal);
+    ck_assert(!s.in_dart_stage());
+    const std::vector<double> all = user_points(s);
+    ck_assert(std::equal(xy.begin(), xy.end(), all.begin()));
+    check_pattern(s, true);
+}
+END_TEST
+
 START_TEST(refine_continues_at_the_smaller_radius) {
     pds::Sampler s(0.06, 17);
     s.set_domain(pds::Box{0, 0, 2, 1});
@@ -196,6 +235,7 @@ Suite* sampler_suite() {
     tcase_set_timeout(t, 600);
     tcase_add_test(t, maximal_patterns_over_seeds_and_domains);
     tcase_add_test(t, partial_patterns_are_valid);
+    tcase_add_test(t, dart_stage_and_hand_over);
     tcase_add_test(t, refine_continues_at_the_smaller_radius);
     suite_add_tcase(s, t);
     t = tcase_create("determinism");
