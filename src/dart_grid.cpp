@@ -54,18 +54,22 @@ DartGrid::DartGrid(const Box& domain, double radius)
 
 void DartGrid::reserve(std::size_t points) { points_.reserve(points); }
 
-std::size_t DartGrid::cell_of(const Point& p) const {
+DartGrid::CellXY DartGrid::column_row(const Point& p) const {
     // Clamped: rounding may put a point on the far edge of the last cell.
     const double fx = (p.x - box_.x0) * inv_side_, fy = (p.y - box_.y0) * inv_side_;
-    std::size_t cx = fx > 0.0 ? static_cast<std::size_t>(fx) : 0;
-    std::size_t cy = fy > 0.0 ? static_cast<std::size_t>(fy) : 0;
-    cx = std::min(cx, cols_ - 1);
-    cy = std::min(cy, rows_ - 1);
-    return (cy + kPad) * stride_ + cx + kPad;
+    const std::size_t cx = fx > 0.0 ? static_cast<std::size_t>(fx) : 0;
+    const std::size_t cy = fy > 0.0 ? static_cast<std::size_t>(fy) : 0;
+    return CellXY{std::min(cx, cols_ - 1), std::min(cy, rows_ - 1)};
 }
 
-Point DartGrid::read(std::size_t cell) const {
-    return Point{from_bits(~cells_[cell].x_bits), from_bits(~cells_[cell].y_bits)};
+std::size_t DartGrid::cell_of(const Point& p) const {
+    const CellXY c = column_row(p);
+    return (c.y + kPad) * stride_ + c.x + kPad;
+}
+
+Point DartGrid::read(const Cell& cell) const {
+    // Empty cells read as NaN: every comparison with such a point is false.
+    return Point{from_bits(~cell.x_bits), from_bits(~cell.y_bits)};
 }
 
 void DartGrid::write(std::size_t cell, const Point& p) {
@@ -97,13 +101,11 @@ bool DartGrid::is_free(const Point& p, std::size_t cell) const {
     const Cell* row = cells_.get() + cell - kPad * stride_ - kPad;
     for (int i = 0; i < 2 * kPad + 1; ++i, row += stride_) {
         for (int j = 0; j < 2 * kPad + 1; ++j) {
-            // Empty cells read as NaN: every comparison below is false.
-            const double dx = from_bits(~row[j].x_bits) - p.x;
-            const double dy = from_bits(~row[j].y_bits) - p.y;
+            const Point q = read(row[j]);
+            const double dx = q.x - p.x, dy = q.y - p.y;
             const double d2 = dx * dx + dy * dy;
             if (d2 < r2_low_) return false;
-            if (d2 < r2_high_ && compare_distance(p, read(static_cast<std::size_t>(row - cells_.get()) + j), r_) < 0)
-                return false;
+            if (d2 < r2_high_ && compare_distance(p, q, r_) < 0) return false;
         }
     }
     return true;
@@ -135,9 +137,9 @@ bool DartGrid::add_one(Rng& rng) {
 std::uint32_t DartGrid::hilbert_key(const Point& p) const {
     // Position along a Hilbert curve over the cells (rotating each quadrant
     // so the curve stays continuous); nearby keys are nearby cells.
-    const std::size_t c = cell_of(p);
-    std::uint32_t x = static_cast<std::uint32_t>(c % stride_ - kPad);
-    std::uint32_t y = static_cast<std::uint32_t>(c / stride_ - kPad);
+    const CellXY c = column_row(p);
+    std::uint32_t x = static_cast<std::uint32_t>(c.x);
+    std::uint32_t y = static_cast<std::uint32_t>(c.y);
     std::uint32_t key = 0;
     for (std::uint32_t s = hilbert_side_ / 2; s > 0; s /= 2) {
         const std::uint32_t rx = (x & s) != 0, ry = (y & s) != 0;

@@ -48,10 +48,9 @@ public:
 
     // Throws darts until one is at least R from every point: appends it and
     // returns true. Returns false, with nothing added, once the stage is over
-    // (the acceptance rate over a window of darts fell below kMinAcceptance);
-    // over() stays true from then on.
+    // (the acceptance rate over a window of darts fell below kMinAcceptance),
+    // and from then on.
     bool add_one(Rng& rng);
-    bool over() const { return over_; }
 
     std::size_t count() const { return points_.size(); }
     // In the order they were added.
@@ -86,9 +85,13 @@ private:
         void operator()(Cell* p) const { std::free(p); }
     };
 
-    std::size_t cell_of(const Point& p) const;
+    struct CellXY {
+        std::size_t x, y;  // column and row, from 0, without the padding
+    };
+    CellXY column_row(const Point& p) const;
+    std::size_t cell_of(const Point& p) const;  // index into cells_
     std::uint32_t hilbert_key(const Point& p) const;
-    Point read(std::size_t cell) const;
+    Point read(const Cell& cell) const;
     void write(std::size_t cell, const Point& p);
     void draw_batch(Rng& rng);
     bool is_free(const Point& p, std::size_t cell) const;

@@ -40,6 +40,12 @@ public:
     void reserve(std::size_t vertices);
     // True when insert() can run without allocating.
     bool has_room_for_one() const;
+    // True when the mesh has room for `vertices` vertices in all (ghosts
+    // included) without allocating, as reserve(vertices) makes.
+    bool has_room_for(std::size_t vertices) const {
+        return points_.capacity() >= vertices && vertex_edge_.capacity() >= vertices &&
+               mesh_.record_count() + mesh_.spare_records() >= 3 * vertices;
+    }
 
     // Inserts p, which must be strictly inside the ghost square and distinct
     // from every vertex; `near` is where the walk starts. Returns p's vertex.

@@ -3,8 +3,6 @@
 // The filters are inline in the header; these are the exact fallbacks.
 #include "predicates.hpp"
 
-#include <cmath>
-
 #include "expansion.hpp"
 
 namespace pds {

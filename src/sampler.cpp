@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 
 #include "cell_coverage.hpp"
@@ -108,13 +107,15 @@ void Sampler::ensure_room(std::size_t points) {
         darts_->reserve(points);
         emitted_.reserve(points);
     }
-    reserved_points_ = std::max(reserved_points_, points);
 }
 
 bool Sampler::has_room_for_one() const {
     const std::size_t n = count();
-    if (dart_stage_) return darts_ && darts_->has_room_for_one() && reserved_points_ > n;
-    return dt_.has_room_for_one() && tree_.capacity() > n;
+    // In the dart stage the triangulation holds only the ghosts; the hand-over
+    // may come with the next point, so it needs room for one more as well.
+    const bool mesh_room = dart_stage_ ? dt_.has_room_for(n + 1 + Delaunay::kGhosts) : dt_.has_room_for_one();
+    const bool stage_room = !dart_stage_ || (darts_ && darts_->has_room_for_one() && emitted_.capacity() > n);
+    return mesh_room && stage_room && tree_.capacity() > n;
 }
 
 bool Sampler::step() {
@@ -159,19 +160,17 @@ void Sampler::refine(double radius) {
     tree_.rebuild();
 }
 
-CellMeasure Sampler::cell_measure(std::size_t site) const {
-    return measure_cell(cell_query(site), ring_of(vertex_of(site)));
+CellMeasure Sampler::cell_measure(std::size_t site) const { return measure_in(dt_, vertex_of(site)); }
+
+CellMeasure Sampler::measure_in(const Delaunay& mesh, std::uint32_t v) const {
+    return measure_cell(CellQuery{mesh.point(v), box_, r_}, ring_of(mesh, v));
 }
 
 CellQuery Sampler::cell_query(std::size_t site) const {
     return CellQuery{dt_.point(vertex_of(site)), box_, r_};
 }
 
-std::vector<Point> Sampler::cell_ring(std::size_t site) const {
-    std::vector<Point> ring;
-    for_each_neighbour(vertex_of(site), [&](std::uint32_t n) { ring.push_back(dt_.point(n)); });
-    return ring;
-}
+std::vector<Point> Sampler::cell_ring(std::size_t site) const { return ring_points(dt_, vertex_of(site)); }
 
 bool Sampler::add_one() {
     if (dart_stage_) {
@@ -226,7 +225,7 @@ void Sampler::insert_dart_points(Delaunay& into, std::vector<std::uint32_t>* ver
 
 void Sampler::finish_dart_stage() {
     // Room for all of this was reserved with the dart stage's (ensure_room),
-    // except the sweep order, allocated first: std::bad_alloc changes nothing.
+    // except the insertion order, allocated first: std::bad_alloc changes nothing.
     const std::size_t n = count();
     insert_dart_points(dt_, &emitted_);
     tree_.resize(n);
@@ -280,7 +279,7 @@ void Sampler::draw_batch(std::size_t n) {
         const CellQuery q = cell_query(site);
         // One pass: the chunk holding target u * U; if the exact area A falls
         // short of the target, the selection is rejected.
-        const CellSelection sel = select_in_cell(q, ring_of(v), rng_.next_double() * bound[k]);
+        const CellSelection sel = select_in_cell(q, ring_of(dt_, v), rng_.next_double() * bound[k]);
         const cell_detail::Chunk* chunk = &sel.chunk();
         if (!sel.found()) {
             // The whole cell was measured: settle doubt, tighten the bound
@@ -346,8 +345,19 @@ void Sampler::insert_point(const Point& p, std::uint32_t near) {
     draw_failures_ = 0;
 }
 
-bool Sampler::covered_exactly(std::size_t site) const {
-    return cell_is_covered_exact(dt_.point(vertex_of(site)), cell_ring(site), box_, r_);
+bool Sampler::covered_exactly_in(const Delaunay& mesh, std::uint32_t v) const {
+    return cell_is_covered_exact(mesh.point(v), ring_points(mesh, v), box_, r_);
+}
+
+bool Sampler::has_free_region_in(const Delaunay& mesh, std::uint32_t v) const {
+    const CellMeasure m = measure_in(mesh, v);
+    if (m.area == 0.0) return false;
+    if (!m.doubtful) return true;
+    try {
+        return !covered_exactly_in(mesh, v);
+    } catch (const std::bad_alloc&) {
+        return true;  // cannot tell without memory: say there may be room
+    }
 }
 
 void Sampler::give_up(std::size_t site) {
@@ -360,15 +370,8 @@ bool Sampler::dart_pattern_has_room() const {
     if (darts_->finds_free_spot()) return true;
     // None of the grid's probes is free: decide on the triangulation.
     const Delaunay mesh = mesh_of_dart_points();
-    for (std::uint32_t v = Delaunay::kGhosts; v < mesh.vertex_count(); ++v) {
-        std::vector<Point> ring;
-        for_each_neighbour_in(mesh, v, [&](std::uint32_t n) { ring.push_back(mesh.point(n)); });
-        const CellMeasure m = measure_cell(CellQuery{mesh.point(v), box_, r_}, [&](const auto& visit) {
-            for (const Point& p : ring) visit(p);
-        });
-        if (m.area == 0.0) continue;
-        if (!m.doubtful || !cell_is_covered_exact(mesh.point(v), ring, box_, r_)) return true;
-    }
+    for (std::uint32_t v = Delaunay::kGhosts; v < mesh.vertex_count(); ++v)
+        if (has_free_region_in(mesh, v)) return true;
     return false;
 }
 
@@ -387,15 +390,7 @@ bool Sampler::has_room() const {
         if (still_free(queue_[k].p)) return true;
     if (tree_.total() == 0.0) return false;
     const auto free_cell = [&](std::size_t site) {
-        if (tree_.weight(site) == 0.0) return false;
-        const CellMeasure m = cell_measure(site);
-        if (m.area == 0.0) return false;
-        if (!m.doubtful) return true;
-        try {
-            return !covered_exactly(site);
-        } catch (const std::bad_alloc&) {
-            return true;  // cannot tell without memory: say there may be room
-        }
+        return tree_.weight(site) != 0.0 && has_free_region_in(dt_, vertex_of(site));
     };
     if (free_cell(count() - 1)) return true;
     bool found = false;
@@ -406,16 +401,21 @@ bool Sampler::has_room() const {
     return found;
 }
 
+const Point& Sampler::point_at(std::size_t k) const {
+    // Points in the order they were added: the dart stage's own list; after
+    // the hand-over, its points through emitted_, then the Jones loop's
+    // vertices, which are numbered in that order.
+    if (darts_) return darts_->points()[k];
+    if (k < emitted_.size()) return dt_.point(emitted_[k]);
+    return dt_.point(vertex_of(k));
+}
+
 std::size_t Sampler::copy_points(std::size_t first, std::size_t n, double* xy) const {
     const std::size_t have = count();
     if (first >= have) return 0;
     n = std::min(n, have - first);
     for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t k = first + i;
-        const Point& p = darts_ ? darts_->points()[k]
-                         : k < emitted_.size()
-                             ? dt_.point(emitted_[k])
-                             : dt_.point(static_cast<std::uint32_t>(k + Delaunay::kGhosts));
+        const Point& p = point_at(first + i);
         xy[2 * i] = std::ldexp(p.x, -scale_exp_);
         xy[2 * i + 1] = std::ldexp(p.y, -scale_exp_);
     }
@@ -427,10 +427,7 @@ double Sampler::free_area() const {
     if (dart_stage_) {
         const Delaunay mesh = mesh_of_dart_points();
         double sum = 0.0;
-        for (std::uint32_t v = Delaunay::kGhosts; v < mesh.vertex_count(); ++v)
-            sum += measure_cell(CellQuery{mesh.point(v), box_, r_}, [&](const auto& visit) {
-                       for_each_neighbour_in(mesh, v, [&](std::uint32_t n) { visit(mesh.point(n)); });
-                   }).area;
+        for (std::uint32_t v = Delaunay::kGhosts; v < mesh.vertex_count(); ++v) sum += measure_in(mesh, v).area;
         return std::ldexp(sum, -2 * scale_exp_);
     }
     // The tree holds upper bounds; the exact area is re-measured, cell by cell,

@@ -150,7 +150,13 @@ private:
     void drop_queue();
     void insert_point(const Point& p, std::uint32_t near);
     void give_up(std::size_t site);
-    bool covered_exactly(std::size_t site) const;
+    // Cell queries on any triangulation of the points: the sampler's own, or
+    // one built on the fly for the dart stage's points.
+    CellMeasure measure_in(const Delaunay& mesh, std::uint32_t v) const;
+    bool covered_exactly_in(const Delaunay& mesh, std::uint32_t v) const;
+    bool has_free_region_in(const Delaunay& mesh, std::uint32_t v) const;
+    bool covered_exactly(std::size_t site) const { return covered_exactly_in(dt_, vertex_of(site)); }
+    const Point& point_at(std::size_t k) const;
     bool has_room() const;
     bool acceptable(const Point& p, std::uint32_t vertex) const;
 
@@ -158,10 +164,15 @@ private:
         return static_cast<std::uint32_t>(site + Delaunay::kGhosts);
     }
     // The ring functor measure_cell and select_in_cell expect.
-    auto ring_of(std::uint32_t v) const {
-        return [this, v](const auto& visit) {
-            for_each_neighbour(v, [&](std::uint32_t n) { visit(dt_.point(n)); });
+    static auto ring_of(const Delaunay& mesh, std::uint32_t v) {
+        return [&mesh, v](const auto& visit) {
+            for_each_neighbour_in(mesh, v, [&](std::uint32_t n) { visit(mesh.point(n)); });
         };
+    }
+    static std::vector<Point> ring_points(const Delaunay& mesh, std::uint32_t v) {
+        std::vector<Point> ring;
+        for_each_neighbour_in(mesh, v, [&](std::uint32_t n) { ring.push_back(mesh.point(n)); });
+        return ring;
     }
     template <class Visit>
     void for_each_neighbour(std::uint32_t v, const Visit& visit) const {
@@ -187,7 +198,6 @@ private:
     bool dart_stage_ = true;
     std::unique_ptr<DartGrid> darts_;       // the dart stage's grid, once it has begun
     std::vector<std::uint32_t> emitted_;    // dart-stage point i is vertex emitted_[i]
-    std::size_t reserved_points_ = 0;       // room made by ensure_room
     Delaunay dt_;
     FreeAreaTree tree_;  // one leaf per site: an upper bound on its free area
     std::vector<Candidate> queue_;                // the current batch, consumed in order

@@ -15,30 +15,10 @@
 
 set -u
 
-bench=${1:?usage: sh tests/check-bench.sh PATH-TO-bench}
-case $bench in */*) ;; *) bench=./$bench ;; esac
-if [ ! -x "$bench" ]; then
-    echo "check-bench: $bench is not an executable file" >&2
-    exit 2
-fi
-
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/check-bench.XXXXXX") || exit 2
-trap 'rm -rf "$tmp"' EXIT
-trap 'exit 130' INT TERM
-
-passed=0
-failed=0
-ok() { passed=$((passed + 1)); }
-bad() {
-    failed=$((failed + 1))
-    echo "FAIL: $*" >&2
-}
-# expect DESCRIPTION COMMAND...: the command (a test) must succeed.
-expect() {
-    e_desc=$1
-    shift
-    if "$@"; then ok; else bad "$e_desc"; fi
-}
+name=check-bench
+program=${1:?usage: sh tests/check-bench.sh PATH-TO-bench}
+. "$(dirname "$0")/harness.sh"
+bench=$program
 
 header='method,N_target,N_points,radius,seconds_median,ns_per_point,ns_per_NlogN,peak_bytes_per_point,instructions_per_point,uncovered_fraction,uncovered_stderr,min_distance_ok'
 
@@ -146,5 +126,4 @@ usage_case "a size of 5" 5
 usage_case "a size that is not a number" 10k
 usage_case "an unknown option" --bogus 1000
 
-echo "check-bench: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -11,32 +11,10 @@
 
 set -u
 
-cli=${1:?usage: sh tests/check-cli.sh PATH-TO-poissondisk}
-case $cli in */*) ;; *) cli=./$cli ;; esac
-if [ ! -x "$cli" ]; then
-    echo "check-cli: $cli is not an executable file" >&2
-    exit 2
-fi
-
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/check-cli.XXXXXX") || exit 2
-trap 'rm -rf "$tmp"' EXIT
-trap 'exit 130' INT TERM
-
-passed=0
-failed=0
-
-ok() { passed=$((passed + 1)); }
-bad() {
-    failed=$((failed + 1))
-    echo "FAIL: $*" >&2
-}
-# expect DESCRIPTION COMMAND...: the command (a test) must succeed.
-# (sh has no local variables: each helper uses names of its own.)
-expect() {
-    e_desc=$1
-    shift
-    if "$@"; then ok; else bad "$e_desc"; fi
-}
+name=check-cli
+program=${1:?usage: sh tests/check-cli.sh PATH-TO-poissondisk}
+. "$(dirname "$0")/harness.sh"
+cli=$program
 
 # run NAME ARGS...: run the program; stdout in $tmp/NAME.out, stderr in
 # $tmp/NAME.err, exit status in $rc.
@@ -268,5 +246,4 @@ if [ -w /dev/full ]; then
     expect "writing to /dev/full prints an error" grep -q 'poissondisk: ' "$tmp/full.err"
 fi
 
-echo "check-cli: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

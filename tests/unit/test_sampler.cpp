@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "mesh_checks.hpp"
@@ -36,42 +37,62 @@ void check_min_distance(const std::vector<double>& xy, double r) {
             ck_assert_int_ge(pds::compare_distance(p[i], p[j], r), 0);
 }
 
-// Random probes: every probe point has a sample within R (brute force on a
-// coarse grid of buckets). A probabilistic, mesh-free maximality check.
-void check_probes(const std::vector<double>& xy, const pds::Box& box, double r, int probes) {
-    const int g = std::max(1, static_cast<int>(std::min(box.width(), box.height()) / r));
-    const double cw = box.width() / g, ch = box.height() / g;
-    const int gx = static_cast<int>(box.width() / cw), gy = static_cast<int>(box.height() / ch);
-    std::vector<std::vector<std::size_t>> cells(static_cast<std::size_t>(gx + 1) * (gy + 1));
-    const auto cell_of = [&](double x, double y) {
-        const int cx = std::min(gx, std::max(0, static_cast<int>((x - box.x0) / cw)));
-        const int cy = std::min(gy, std::max(0, static_cast<int>((y - box.y0) / ch)));
-        return std::make_pair(cx, cy);
-    };
-    for (std::size_t i = 0; i < xy.size() / 2; ++i) {
-        const auto c = cell_of(xy[2 * i], xy[2 * i + 1]);
-        cells[c.second * (gx + 1) + c.first].push_back(i);
+// Whether a point has a sample within R: brute force over a coarse grid of
+// buckets, independent of the sampler's mesh.
+class CoverageOracle {
+public:
+    CoverageOracle(const std::vector<double>& xy, const pds::Box& box, double r)
+        : xy_(xy), box_(box), r_(r) {
+        const int g = std::max(1, static_cast<int>(std::min(box.width(), box.height()) / r));
+        cw_ = box.width() / g;
+        ch_ = box.height() / g;
+        gx_ = static_cast<int>(box.width() / cw_);
+        gy_ = static_cast<int>(box.height() / ch_);
+        cells_.resize(static_cast<std::size_t>(gx_ + 1) * (gy_ + 1));
+        for (std::size_t i = 0; i < xy.size() / 2; ++i) {
+            const auto c = cell_of(xy[2 * i], xy[2 * i + 1]);
+            cells_[c.second * (gx_ + 1) + c.first].push_back(i);
+        }
+        reach_ = static_cast<int>(std::ceil(r / std::min(cw_, ch_))) + 1;
     }
-    const int reach = static_cast<int>(std::ceil(r / std::min(cw, ch))) + 1;
+
+    bool covered(double x, double y) const {
+        const auto c = cell_of(x, y);
+        for (int dx = -reach_; dx <= reach_; ++dx)
+            for (int dy = -reach_; dy <= reach_; ++dy) {
+                const int cx = c.first + dx, cy = c.second + dy;
+                if (cx < 0 || cy < 0 || cx > gx_ || cy > gy_) continue;
+                for (std::size_t i : cells_[cy * (gx_ + 1) + cx]) {
+                    const double ddx = xy_[2 * i] - x, ddy = xy_[2 * i + 1] - y;
+                    if (ddx * ddx + ddy * ddy <= r_ * r_) return true;
+                }
+            }
+        return false;
+    }
+
+private:
+    std::pair<int, int> cell_of(double x, double y) const {
+        const int cx = std::min(gx_, std::max(0, static_cast<int>((x - box_.x0) / cw_)));
+        const int cy = std::min(gy_, std::max(0, static_cast<int>((y - box_.y0) / ch_)));
+        return {cx, cy};
+    }
+
+    const std::vector<double>& xy_;
+    pds::Box box_;
+    double r_, cw_, ch_;
+    int gx_, gy_, reach_;
+    std::vector<std::vector<std::size_t>> cells_;
+};
+
+// Random probes: every probe point has a sample within R. A probabilistic,
+// mesh-free maximality check.
+void check_probes(const std::vector<double>& xy, const pds::Box& box, double r, int probes) {
+    const CoverageOracle oracle(xy, box, r);
     std::mt19937_64 rng(99);
     std::uniform_real_distribution<double> ux(box.x0, box.x1), uy(box.y0, box.y1);
     for (int k = 0; k < probes; ++k) {
         const double x = ux(rng), y = uy(rng);
-        const auto c = cell_of(x, y);
-        bool covered = false;
-        for (int dx = -reach; dx <= reach && !covered; ++dx)
-            for (int dy = -reach; dy <= reach && !covered; ++dy) {
-                const int cx = c.first + dx, cy = c.second + dy;
-                if (cx < 0 || cy < 0 || cx > gx || cy > gy) continue;
-                for (std::size_t i : cells[cy * (gx + 1) + cx]) {
-                    const double ddx = xy[2 * i] - x, ddy = xy[2 * i + 1] - y;
-                    if (ddx * ddx + ddy * ddy <= r * r) {
-                        covered = true;
-                        break;
-                    }
-                }
-            }
-        ck_assert_msg(covered, "probe (%.17g, %.17g) is farther than R from every point", x, y);
+        ck_assert_msg(oracle.covered(x, y), "probe (%.17g, %.17g) is farther than R from every point", x, y);
     }
 }
 
@@ -143,18 +164,11 @@ START_TEST(dart_stage_and_hand_over) {
     ck_assert(!maximal);
     // Free area against the fraction of a fine probe grid farther than R.
     const std::vector<double> xy = user_points(s);
+    const CoverageOracle oracle(xy, s.domain(), s.radius());
     const int g = test_light() ? 300 : 900;
     long uncovered = 0;
     for (int i = 0; i < g; ++i)
-        for (int j = 0; j < g; ++j) {
-            const double x = 1.5 * (i + 0.5) / g, y = 0.8 * (j + 0.5) / g;
-            bool covered = false;
-            for (std::size_t k = 0; k < xy.size() / 2 && !covered; ++k) {
-                const double dx = xy[2 * k] - x, dy = xy[2 * k + 1] - y;
-                covered = dx * dx + dy * dy < 0.02 * 0.02;
-            }
-            uncovered += !covered;
-        }
+        for (int j = 0; j < g; ++j) uncovered += !oracle.covered(1.5 * (i + 0.5) / g, 0.8 * (j + 0.5) / g);
     const double probed = 1.5 * 0.8 * static_cast<double>(uncovered) / (static_cast<double>(g) * g);
     ck_assert_double_gt(probed, 0.01);
     ck_assert_double_lt(std::fabs(s.free_area() - probed), 0.03 * probed);
