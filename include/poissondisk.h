@@ -27,7 +27,13 @@
  *     buffers; no memory allocated by the library crosses this interface.
  *   - Version numbers in the comments say in which release a name appeared.
  *   - The same seed gives the same points however the work is split: one
- *     pds_run, many bounded pds_run calls or pds_step calls all agree.
+ *     pds_run, many bounded pds_run calls or pds_step calls all agree, and
+ *     so does everything after a pds_refine that follows any of them.
+ *   - Small calls are cheap: memory grows geometrically, so a loop of
+ *     pds_run(s, 1, NULL) or pds_step costs O(1) amortized per point.
+ *   - The radius and the domain are judged together when they are first used
+ *     (the first point, or pds_refine once points exist), so they may be
+ *     given in any order.
  */
 #ifndef POISSONDISK_H
 #define POISSONDISK_H
@@ -42,7 +48,7 @@ extern "C" {
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
 #define PDS_VERSION_MINOR 1
-#define PDS_VERSION_PATCH 0
+#define PDS_VERSION_PATCH 1
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
 
@@ -52,12 +58,17 @@ extern "C" {
 #define PDS_ESTATE (-3)    /* the call is not allowed in the sampler's current state:
                               pds_set_domain after the first point, or any change
                               after an earlier PDS_EINTERNAL                         */
-#define PDS_ERANGE (-4)    /* the radius is too small for the domain: the pattern
-                              would not fit in the index type or address space, or
-                              double precision cannot resolve it                     */
+#define PDS_ERANGE (-4)    /* the radius is too small for the domain: the points
+                              asked for would not fit in the index type or address
+                              space, or double precision cannot resolve them         */
 #define PDS_EINTERNAL (-5) /* an internal invariant failed (a bug); the sampler
                               refuses further changes (PDS_ESTATE) but can still be
                               read and destroyed                                     */
+
+/* Named non-error results of pds_step, pds_run and pds_verify. (1.1.1) */
+#define PDS_DONE 0 /* the pattern is maximal: no room is left for another point */
+#define PDS_MORE 1 /* pds_step: a point was added; pds_run: max_new points were
+                      added and room is left; pds_verify: valid, room is left */
 
 /* Export control: symbols are visible only when the library is being built. */
 #if defined(PDS_BUILDING_LIBRARY) && defined(__GNUC__)
@@ -81,8 +92,10 @@ typedef struct pds_sampler pds_sampler;
  *   out     receives the new sampler; set to NULL on failure. Must not be NULL.
  *   radius  the minimum distance R between points; finite and > 0.
  *   seed    any value; the same seed and version give byte-identical points.
- * Returns 0, PDS_EINVAL (out NULL, radius not finite or <= 0), PDS_ERANGE (radius
- * too small for the square, see PDS_ERANGE), PDS_ENOMEM.
+ * Returns 0, PDS_EINVAL (out NULL, radius not finite or <= 0), PDS_ENOMEM. The
+ * radius is judged against the domain at the first point (see pds_run), so a
+ * radius meant for a smaller domain set later is fine (since 1.1.1; 1.0 and
+ * 1.1.0 returned PDS_ERANGE here).
  * The caller owns *out and releases it with pds_destroy(). (1.0)
  */
 PDS_API int pds_create(pds_sampler **out, double radius, uint64_t seed) PDS_NOEXCEPT;
@@ -94,16 +107,18 @@ PDS_API void pds_destroy(pds_sampler *s) PDS_NOEXCEPT;
  * pds_set_domain - sample the closed rectangle [x0,x1]x[y0,y1] instead.
  * All four values finite, x0 < x1 and y0 < y1. Allowed only before the first
  * point. Returns 0, PDS_EINVAL (NULL, non-finite, empty or inverted rectangle),
- * PDS_ESTATE (points exist already), PDS_ERANGE (radius too small for this
- * rectangle). (1.0)
+ * PDS_ESTATE (points exist already). The radius is judged against it at the
+ * first point (since 1.1.1; earlier versions returned PDS_ERANGE here). (1.0)
  */
 PDS_API int pds_set_domain(pds_sampler *s, double x0, double y0, double x1, double y1) PDS_NOEXCEPT;
 
 /*
  * pds_step - add one point, uniform over the free area.
- * Returns 1 when a point was added, 0 when the pattern is maximal (nothing
- * added), or PDS_EINVAL (NULL), PDS_ENOMEM, PDS_ESTATE (sampler broken by an
- * earlier PDS_EINTERNAL), PDS_EINTERNAL. (1.0)
+ * Returns PDS_MORE (1) when a point was added, PDS_DONE (0) when the pattern
+ * is maximal (nothing added), or PDS_EINVAL (NULL), PDS_ERANGE (at the first
+ * point: the radius is below double precision for the domain; or the index
+ * space is full), PDS_ENOMEM (as for pds_run), PDS_ESTATE (sampler broken by
+ * an earlier PDS_EINTERNAL), PDS_EINTERNAL. (1.0)
  */
 PDS_API int pds_step(pds_sampler *s) PDS_NOEXCEPT;
 
@@ -111,11 +126,27 @@ PDS_API int pds_step(pds_sampler *s) PDS_NOEXCEPT;
  * pds_run - add points until the pattern is maximal or max_new were added.
  *   max_new  the most points to add in this call; 0 means no limit.
  *   added    if not NULL, receives how many points this call added (also on error).
- * Returns 0 when the pattern is maximal, 1 when max_new points were added and
- * room is left, or PDS_EINVAL (NULL s), PDS_ENOMEM, PDS_ESTATE, PDS_EINTERNAL.
- * Memory for the whole run is reserved before the first point is added, so a
- * PDS_ENOMEM leaves the pattern exactly as it was. After PDS_EINTERNAL the
- * points added before the failure stay, and *added counts them. (1.0)
+ * Returns PDS_DONE (0) when the pattern is maximal, PDS_MORE (1) when max_new
+ * points were added and room is left (decided exactly), or:
+ *   PDS_EINVAL     s is NULL;
+ *   PDS_ERANGE     nothing added: at the first point, the radius is below
+ *                  double precision for the domain (2^-26 of its largest
+ *                  |coordinate|); or the points asked for cannot fit the
+ *                  index type (about 3.5e8 points): for max_new == 0, a
+ *                  maximal pattern might not fit (Oler's bound
+ *                  2A/(sqrt(3)R^2) + P/(2R) + 1); for max_new > 0, the
+ *                  current count plus max_new (or that bound, if smaller);
+ *   PDS_ENOMEM     memory for the call is reserved before its first point,
+ *                  so normally nothing was added. Only the exact-arithmetic
+ *                  fallback (for cells rounding cannot classify, rare)
+ *                  allocates while points are added, and so does the final
+ *                  "room left?" decision; if that fails, the points added
+ *                  before stay, *added counts them, and the sampler is
+ *                  exactly where an undisturbed run would be after them: a
+ *                  later call gives the same points as if nothing had failed;
+ *   PDS_ESTATE, PDS_EINTERNAL: see the codes. After PDS_EINTERNAL the
+ *                  points added before the failure stay, and *added counts
+ *                  them. (1.0; PDS_ERANGE and the PDS_ENOMEM wording 1.1.1)
  */
 PDS_API int pds_run(pds_sampler *s, size_t max_new, size_t *added) PDS_NOEXCEPT;
 
@@ -125,7 +156,10 @@ PDS_API int pds_run(pds_sampler *s, size_t max_new, size_t *added) PDS_NOEXCEPT;
  * Allowed at any time. The existing points keep their indices and new points
  * follow them; running to the end gives a pattern maximal at the new radius.
  * Returns 0, PDS_EINVAL (NULL, non-finite, <= 0 or larger than the current
- * radius), PDS_ERANGE (too small for the domain), PDS_ENOMEM, PDS_ESTATE. (1.0)
+ * radius), PDS_ERANGE (points exist and the radius is below double precision
+ * for the domain; the count limit is judged by the next pds_run), PDS_ENOMEM
+ * (nothing changed that a later call could see: retrying gives the same
+ * points), PDS_ESTATE. (1.0)
  */
 PDS_API int pds_refine(pds_sampler *s, double radius) PDS_NOEXCEPT;
 
@@ -161,9 +195,10 @@ PDS_API double pds_free_area(const pds_sampler *s) PDS_NOEXCEPT;
  * through a spatial hash), the triangulation valid and Delaunay, and
  * maximality decided exactly (every Voronoi vertex inside the domain within R
  * of its site, every side of the domain covered). O(N) expected time.
- * Returns 0 when the pattern is valid and maximal, 1 when it is valid and room
- * is left, PDS_EINTERNAL when a check fails (a bug: please report it; the
- * message says which check; the sampler stays usable), PDS_EINVAL (NULL),
+ * Returns PDS_DONE (0) when the pattern is valid and maximal, PDS_MORE (1) when
+ * it is valid and room is left, PDS_EINTERNAL when a check fails (a bug:
+ * please report it; the message says which check and names the point by its
+ * index in insertion order; the sampler stays usable), PDS_EINVAL (NULL),
  * PDS_ENOMEM. Works on a sampler made read-only by an earlier error. (1.0)
  */
 PDS_API int pds_verify(pds_sampler *s) PDS_NOEXCEPT;

@@ -65,6 +65,9 @@ int guarded(pds_sampler* s, const char* what, F&& f, bool changes = true) PDS_NO
         return f();
     } catch (const std::bad_alloc&) {
         return fail(s, PDS_ENOMEM, "%s: out of memory", what);
+    } catch (const pds::LimitError& e) {
+        // Thrown before anything changed.
+        return fail(s, PDS_ERANGE, "%s: %s (radius %g)", what, limit_text(e.limit()), e.radius());
     } catch (const std::exception& e) {
         if (changes) s->broken = true;
         return fail(s, PDS_EINTERNAL, "%s: internal error (please report): %s", what, e.what());
@@ -86,8 +89,7 @@ PDS_API int pds_create(pds_sampler** out, double radius, uint64_t seed) PDS_NOEX
     if (out == nullptr) return PDS_EINVAL;
     *out = nullptr;
     if (!std::isfinite(radius) || radius <= 0.0) return PDS_EINVAL;
-    if (pds::Sampler::check_limits(pds::Box{0.0, 0.0, 1.0, 1.0}, radius) != pds::Limit::ok)
-        return PDS_ERANGE;
+    // The radius is judged with the domain when both are first used (sampler.hpp).
     try {
         *out = new pds_sampler(std::make_unique<pds::Sampler>(radius, seed));
         return 0;
@@ -112,10 +114,6 @@ PDS_API int pds_set_domain(pds_sampler* s, double x0, double y0, double x1, doub
         return fail(s, PDS_ESTATE, "pds_set_domain: points exist already (%zu); set the domain "
                     "before the first point", s->core->count());
     const pds::Box box{x0, y0, x1, y1};
-    const pds::Limit limit = pds::Sampler::check_limits(box, s->core->radius());
-    if (limit != pds::Limit::ok)
-        return fail(s, PDS_ERANGE, "pds_set_domain: %s (radius %g)", limit_text(limit),
-                    s->core->radius());
     return guarded(s, "pds_set_domain", [&] {
         s->core->set_domain(box);
         return 0;
@@ -125,7 +123,7 @@ PDS_API int pds_set_domain(pds_sampler* s, double x0, double y0, double x1, doub
 PDS_API int pds_step(pds_sampler* s) PDS_NOEXCEPT {
     if (s == nullptr) return PDS_EINVAL;
     if (s->broken) return refuse_broken(s, "pds_step");
-    return guarded(s, "pds_step", [&] { return s->core->step() ? 1 : 0; });
+    return guarded(s, "pds_step", [&] { return s->core->step() ? PDS_MORE : PDS_DONE; });
 }
 
 PDS_API int pds_run(pds_sampler* s, size_t max_new, size_t* added) PDS_NOEXCEPT {
@@ -136,7 +134,7 @@ PDS_API int pds_run(pds_sampler* s, size_t max_new, size_t* added) PDS_NOEXCEPT 
     const int rc = guarded(s, "pds_run", [&] {
         bool maximal = false;
         s->core->run(max_new, &maximal);
-        return maximal ? 0 : 1;
+        return maximal ? PDS_DONE : PDS_MORE;
     });
     if (added != nullptr) *added = s->core->count() - before;
     return rc;
@@ -152,9 +150,6 @@ PDS_API int pds_refine(pds_sampler* s, double radius) PDS_NOEXCEPT {
         return fail(s, PDS_EINVAL, "pds_refine: the radius %g is larger than the current %g",
                     radius, current);
     if (radius == current) return 0;
-    const pds::Limit limit = pds::Sampler::check_limits(s->core->domain(), radius);
-    if (limit != pds::Limit::ok)
-        return fail(s, PDS_ERANGE, "pds_refine: %s (radius %g)", limit_text(limit), radius);
     return guarded(s, "pds_refine", [&] {
         s->core->refine(radius);
         return 0;
@@ -191,7 +186,7 @@ PDS_API int pds_verify(pds_sampler* s) PDS_NOEXCEPT {
             if (!rep.valid)
                 return fail(s, PDS_EINTERNAL, "pds_verify: check failed (please report): %s",
                             rep.failure.c_str());
-            return rep.maximal ? 0 : 1;
+            return rep.maximal ? PDS_DONE : PDS_MORE;
         },
         false);
 }

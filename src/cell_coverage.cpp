@@ -4,6 +4,7 @@
 
 #include <cstddef>
 
+#include "circumcentre.hpp"
 #include "expansion.hpp"
 
 namespace pds {
@@ -14,15 +15,6 @@ using E = Expansion;
 
 // x/2 exactly (a power-of-two scaling; our frame keeps values far from underflow).
 E half(double x) { return E(x * 0.5); }
-
-// Parameter of the circumcentre of (c, n, q) on the bisector of c and n.
-Rational circumcentre_parameter(const Point& c, const Point& n, const Point& q) {
-    const E bx = E::diff(n.x, c.x), by = E::diff(n.y, c.y);
-    const E dx = E::diff(q.x, c.x), dy = E::diff(q.y, c.y);
-    const E num = dx * E::diff(q.x, n.x) + dy * E::diff(q.y, n.y);
-    const E den = (bx * dy - by * dx).scaled(2.0);
-    return make_rational(num, den);
-}
 
 struct Interval {
     Rational lo, hi;
@@ -75,8 +67,8 @@ bool cell_is_covered_exact(const Point& c, const std::vector<Point>& ring, const
         const Point& left = ring[(j + 1) % k];       // triangle (c, n, left) is CCW
         const Point& right = ring[(j + k - 1) % k];  // triangle (c, right, n) is CCW
         Interval t;
-        t.raise_lo(circumcentre_parameter(c, n, right));
-        t.lower_hi(circumcentre_parameter(c, n, left));
+        t.raise_lo(bisector_parameter(c, n, right));
+        t.lower_hi(bisector_parameter(c, n, left));
         // P(t) = (c + n)/2 + t * (-by, bx) must stay inside the box.
         const E bx = E::diff(n.x, c.x), by = E::diff(n.y, c.y);
         const E mx = half(c.x) + half(n.x), my = half(c.y) + half(n.y);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "batch.hpp"
 #include "predicates.hpp"
 
 namespace pds {
@@ -62,10 +63,9 @@ EdgeRef Delaunay::locate(const Point& p, EdgeRef e) const {
 }
 
 void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) const {
-    constexpr std::size_t kMax = 64;
     constexpr int kMaxSteps = 12;  // typical rings have about 6 edges
-    EdgeRef edge[kMax], first[kMax];
-    if (n > kMax) n = kMax;
+    EdgeRef edge[kMaxBatch], first[kMaxBatch];
+    if (n > kMaxBatch) n = kMaxBatch;
     for (std::size_t k = 0; k < n; ++k) {
         __builtin_prefetch(&vertex_edge_[vertices[k]]);
         __builtin_prefetch(&points_[vertices[k]]);
@@ -87,7 +87,7 @@ void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) cons
 }
 
 void Delaunay::prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t n) const {
-    constexpr std::size_t kMax = 1024;
+    constexpr std::size_t kMax = 16 * kMaxBatch;  // rings have about 6 edges: ample
     EdgeRef edge[kMax];
     std::size_t m = 0;
     // Round 1: each ring edge c -> a; its left triangle's third side a -> b

@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "indices.hpp"
 #include "point.hpp"
 #include "predicates.hpp"
 #include "quadedge.hpp"
@@ -31,7 +32,7 @@ namespace pds {
 
 class Delaunay {
 public:
-    static constexpr std::uint32_t kGhosts = 4;
+    static constexpr VertexIndex kGhosts = kGhostVertices;
 
     explicit Delaunay(const Box& domain);
 
@@ -57,6 +58,17 @@ public:
     static bool is_ghost(std::uint32_t v) { return v < kGhosts; }
     // An edge whose origin is v.
     EdgeRef edge_of(std::uint32_t v) const { return vertex_edge_[v]; }
+    // Calls visit(n) for every neighbour n of v, counterclockwise (ghosts
+    // included): the one walk around a vertex ring.
+    template <class Visit>
+    void for_each_neighbour(VertexIndex v, const Visit& visit) const {
+        const EdgeRef first = vertex_edge_[v];
+        EdgeRef e = first;
+        do {
+            visit(mesh_.dest(e));
+            e = mesh_.onext(e);
+        } while (e != first);
+    }
     const QuadEdgeMesh& mesh() const { return mesh_; }
 
     // The triangle (left face of the returned edge) that contains p, walking

@@ -4,11 +4,18 @@
 #include <cstring>
 #include <new>
 
+#include "batch.hpp"
+
 namespace pds {
 
 namespace {
 
 std::size_t round_up(std::size_t n, std::size_t m) { return (n + m - 1) / m * m; }
+
+// sum_of_children and pick_child spell out the pairwise order of eight children.
+static_assert(FreeAreaTree::kFanout == 8, "the pairwise sums are written for eight children");
+// One group of children fills one 64-byte cache line.
+static_assert(FreeAreaTree::kFanout * sizeof(double) == 64, "a group is one cache line");
 
 }  // namespace
 
@@ -115,9 +122,9 @@ std::size_t FreeAreaTree::select(double u) const {
 }
 
 void FreeAreaTree::select_many(const double* u, std::size_t n, std::size_t* leaves) const {
-    double rest[64];
-    for (std::size_t done = 0; done < n; done += 64) {
-        const std::size_t m = n - done < 64 ? n - done : 64;
+    double rest[kMaxBatch];
+    for (std::size_t done = 0; done < n; done += kMaxBatch) {
+        const std::size_t m = n - done < kMaxBatch ? n - done : kMaxBatch;
         for (std::size_t k = 0; k < m; ++k) {
             rest[k] = u[done + k];
             leaves[done + k] = 0;

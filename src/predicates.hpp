@@ -28,12 +28,13 @@
 #include <cmath>
 
 #include "point.hpp"
+#include "roundoff.hpp"
 
 namespace pds {
 
 namespace predicate_detail {
 
-constexpr double kU = 1.1102230246251565e-16;  // 2^-53
+constexpr double kU = kUnitRoundoff;
 constexpr double kOrientBound = (3.0 + 16.0 * kU) * kU;
 constexpr double kInCircleBound = (10.0 + 96.0 * kU) * kU;
 constexpr double kDistanceBound = 8.0 * kU;

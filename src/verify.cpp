@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "expansion.hpp"
-#include "free_area.hpp"
+#include "circumcentre.hpp"
+#include "mesh_invariants.hpp"
+#include "roundoff.hpp"
 #include "predicates.hpp"
 #include "spatial_hash.hpp"
 
@@ -16,17 +18,13 @@ namespace pds {
 namespace {
 
 using E = Expansion;
-using Q = QuadEdgeMesh;
-
-std::string at_point(const char* what, std::size_t index) {
-    return std::string(what) + " (point " + std::to_string(index) + ")";
-}
 
 bool check_points(const Delaunay& dt, const Box& box, double r, VerifyReport& rep) {
     const std::vector<Point>& pts = dt.points();
     for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
         if (!box.contains(pts[i])) {
-            rep.failure = at_point("a point lies outside the domain", i - Delaunay::kGhosts);
+            rep.failure = "a point lies outside the domain";
+            rep.vertex = static_cast<VertexIndex>(i);
             return false;
         }
     }
@@ -37,7 +35,8 @@ bool check_points(const Delaunay& dt, const Box& box, double r, VerifyReport& re
             if (j < i && compare_distance(pts[i], pts[j], r) < 0) close = true;
         });
         if (close) {
-            rep.failure = at_point("two points are closer than the radius", i - Delaunay::kGhosts);
+            rep.failure = "two points are closer than the radius";
+            rep.vertex = static_cast<VertexIndex>(i);
             return false;
         }
     }
@@ -45,72 +44,9 @@ bool check_points(const Delaunay& dt, const Box& box, double r, VerifyReport& re
 }
 
 bool check_mesh(const Delaunay& dt, VerifyReport& rep) {
-    const QuadEdgeMesh& m = dt.mesh();
-    const std::size_t records = m.record_count();
-    for (std::size_t r = 0; r < records; ++r) {
-        if (!m.is_live(r)) continue;
-        for (std::uint32_t k = 0; k < 4; ++k) {
-            const EdgeRef e = static_cast<EdgeRef>(4 * r + k);
-            const EdgeRef n = m.onext(e);
-            if ((n >> 2) >= records || !m.is_live(n >> 2) || Q::rot(m.onext(Q::rot(n))) != e) {
-                rep.failure = "the quad-edge structure is inconsistent";
-                return false;
-            }
-        }
-        const EdgeRef e = static_cast<EdgeRef>(4 * r);
-        if (m.org(m.onext(e)) != m.org(e)) {
-            rep.failure = "a vertex ring mixes origins";
-            return false;
-        }
-    }
-    // Faces: one quadrilateral (outside the ghosts), all others CCW triangles,
-    // each edge with triangles on both sides locally Delaunay; Euler's formula.
-    std::vector<std::uint8_t> seen(4 * records, 0);
-    std::size_t faces = 0, outer = 0;
-    for (std::size_t r = 0; r < records; ++r) {
-        if (!m.is_live(r)) continue;
-        for (std::uint32_t k = 0; k < 4; k += 2) {
-            const EdgeRef start = static_cast<EdgeRef>(4 * r + k);
-            if (seen[start]) continue;
-            ++faces;
-            std::size_t sides = 0;
-            EdgeRef e = start;
-            do {
-                seen[e] = 1;
-                e = m.lnext(e);
-                ++sides;
-            } while (e != start && sides <= 4);
-            if (e != start || sides < 3) {
-                rep.failure = "a face of the mesh is not a triangle";
-                return false;
-            }
-            if (sides == 4) {
-                ++outer;
-                continue;
-            }
-            const Point& a = dt.point(m.org(start));
-            const Point& b = dt.point(m.dest(start));
-            const Point& c = dt.point(m.dest(m.lnext(start)));
-            if (orient2d(a, b, c) <= 0) {
-                rep.failure = "a triangle of the mesh is not counterclockwise";
-                return false;
-            }
-            // The neighbour across `start`, if it is a triangle.
-            const EdgeRef s = Q::sym(start);
-            if (m.lnext(m.lnext(m.lnext(s))) == s) {
-                const Point& d = dt.point(m.dest(m.lnext(s)));
-                if (incircle(a, b, c, d) > 0) {
-                    rep.failure = "the mesh is not Delaunay";
-                    return false;
-                }
-            }
-        }
-    }
-    if (outer != 1 || dt.vertex_count() + faces != m.live_count() + 2) {
-        rep.failure = "the mesh is not a triangulation of the ghost square";
-        return false;
-    }
-    return true;
+    const MeshReport mesh = check_mesh_invariants(dt);
+    if (!mesh.ok) rep.failure = mesh.failure;
+    return mesh.ok;
 }
 
 // ---- maximality: Voronoi vertices ----------------------------------------------
@@ -118,19 +54,16 @@ bool check_mesh(const Delaunay& dt, VerifyReport& rep) {
 // True when the circumcentre of the CCW triangle (a, b, c) lies in the closed box
 // and is farther than r from the corners (an uncovered Voronoi vertex).
 bool uncovered_vertex(const Point& a, const Point& b, const Point& c, const Box& box, double r) {
-    const E bx = E::diff(b.x, a.x), by = E::diff(b.y, a.y);
-    const E dx = E::diff(c.x, a.x), dy = E::diff(c.y, a.y);
-    const E bb = bx * bx + by * by, dd = dx * dx + dy * dy;
-    const E den = (bx * dy - by * dx).scaled(2.0);  // > 0
-    const E nx = dy * bb - by * dd, ny = bx * dd - dx * bb;
+    const ExactCentre centre = exact_circumcentre(a, b, c);
+    const E& den = centre.den;  // > 0
     // centre = a + (nx, ny) / den; inside the box iff x0*den <= a.x*den + nx <= x1*den.
     const auto within = [&](double lo, double at, double hi, const E& n) {
         const E pos = n + den.scaled(at);
         return (pos - den.scaled(lo)).sign() >= 0 && (den.scaled(hi) - pos).sign() >= 0;
     };
-    if (!within(box.x0, a.x, box.x1, nx) || !within(box.y0, a.y, box.y1, ny)) return false;
+    if (!within(box.x0, a.x, box.x1, centre.nx) || !within(box.y0, a.y, box.y1, centre.ny)) return false;
     const E rr = E::product(r, r);
-    return (nx * nx + ny * ny - rr * den * den).sign() > 0;
+    return (centre.nx * centre.nx + centre.ny * centre.ny - rr * den * den).sign() > 0;
 }
 
 // Float filter for uncovered_vertex: 1 certainly uncovered, 0 certainly not,
@@ -138,10 +71,10 @@ bool uncovered_vertex(const Point& a, const Point& b, const Point& c, const Box&
 int uncovered_vertex_fast(const Point& a, const Point& b, const Point& c, const Box& box, double r) {
     const Point rb{b.x - a.x, b.y - a.y}, rd{c.x - a.x, c.y - a.y};
     if (!(rb.x * rd.y - rb.y * rd.x > 0.0)) return -1;  // too flat to bound: decide exactly
-    const cell_detail::Vtx centre = cell_detail::voronoi_vertex(rb, rd);
+    const RelativeCentre centre = relative_circumcentre(rb, rd);
     const double vx = centre.x, vy = centre.y;
     // The vertex's own bound, plus the rounding of moving it back to a's frame.
-    const double err = centre.err + 0x1.0p-50 * (std::fabs(a.x) + std::fabs(a.y) + std::fabs(vx) + std::fabs(vy));
+    const double err = centre.err + 8.0 * kUnitRoundoff * (std::fabs(a.x) + std::fabs(a.y) + std::fabs(vx) + std::fabs(vy));
     const double cx = a.x + vx, cy = a.y + vy;
     const auto side = [&](double v, double lo, double hi) {
         if (v < lo - err || v > hi + err) return 0;  // certainly outside
@@ -151,7 +84,7 @@ int uncovered_vertex_fast(const Point& a, const Point& b, const Point& c, const 
     const int in_x = side(cx, box.x0, box.x1), in_y = side(cy, box.y0, box.y1);
     if (in_x == 0 || in_y == 0) return 0;
     const double d2 = centre.d2, r2 = r * r;
-    const double margin = 2.0 * r * err + err * err + 8.0 * 0x1.0p-53 * r2;
+    const double margin = 2.0 * r * err + err * err + 8.0 * kUnitRoundoff * r2;
     if (d2 < r2 - margin) return 0;
     if (in_x == 1 && in_y == 1 && d2 > r2 + margin) return 1;
     return -1;
@@ -275,6 +208,10 @@ bool sides_covered(const Delaunay& dt, const Box& box, double r, VerifyReport& r
 }
 
 }  // namespace
+
+void name_point(VerifyReport& rep, PointIndex k) {
+    rep.failure += " (point " + std::to_string(k) + ")";
+}
 
 VerifyReport verify_pattern(const Delaunay& dt, const Box& domain, double radius) {
     VerifyReport rep;

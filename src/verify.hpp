@@ -18,6 +18,7 @@
 #include <string>
 
 #include "delaunay.hpp"
+#include "indices.hpp"
 #include "point.hpp"
 
 namespace pds {
@@ -26,9 +27,16 @@ struct VerifyReport {
     bool valid = true;     // false: a guarantee is broken (the text says which)
     bool maximal = false;  // meaningful when valid
     std::string failure;
+    // The mesh vertex a failure is about, if any: the caller names it in the
+    // user's point order (indices.hpp), which only it knows.
+    VertexIndex vertex = kNoVertex;
 };
 
+// Checks the pattern of dt's real vertices. A failure about one point sets
+// rep.vertex; the caller maps it to the user's order and calls name_point.
 VerifyReport verify_pattern(const Delaunay& dt, const Box& domain, double radius);
+// Appends " (point k)" to the failure: k in the user's order.
+void name_point(VerifyReport& rep, PointIndex k);
 
 }  // namespace pds
 

@@ -15,13 +15,13 @@
 namespace {
 
 std::vector<pds::Point> real_points(const pds::Sampler& s) {
-    const auto& all = s.mesh().points();
+    const auto& all = s.jones().mesh().points();
     return std::vector<pds::Point>(all.begin() + pds::Delaunay::kGhosts, all.end());
 }
 
 double measured_area(const pds::Sampler& s, std::size_t site) {
-    const std::vector<pds::Point> ring = s.cell_ring(site);
-    return pds::measure_cell(s.cell_query(site), [&](const auto& visit) {
+    const std::vector<pds::Point> ring = s.jones().cells().ring_points(pds::vertex_of(site));
+    return pds::measure_cell(s.jones().cells().query(pds::vertex_of(site)), [&](const auto& visit) {
                for (const pds::Point& p : ring) visit(p);
            }).area;
 }
@@ -50,8 +50,8 @@ START_TEST(area_matches_integration) {
         s.run(cs.points, &maximal);
         ck_assert_uint_eq(real_points(s).size(), cs.points);
         const std::vector<pds::Point> pts = real_points(s);
-        const double r_int = s.internal_radius();
-        const pds::Box& box = s.internal_domain();
+        const double r_int = s.frame().r();
+        const pds::Box& box = s.frame().box();
         double total = 0;
         for (std::size_t i = 0; i < pts.size(); i += (test_light() ? 7 : 1)) {
             const double got = measured_area(s, i);
@@ -80,11 +80,11 @@ START_TEST(pieces_cover_the_cases) {
         {{3, 0}, {-3, 0.1}, 2},      // angle beyond 90 degrees
     };
     for (const Tri& t : tris) {
-        pds::cell_detail::Piece pieces[2];
-        const int n = pds::cell_detail::split_fan_triangle(t.a, t.b, 1.0, pieces);
+        pds::Piece pieces[2];
+        const int n = pds::split_fan_triangle(t.a, t.b, 1.0, pieces);
         ck_assert_int_eq(n, t.pieces);
         double area = 0;
-        for (int i = 0; i < n; ++i) area += pds::cell_detail::piece_area(pieces[i], 1.0);
+        for (int i = 0; i < n; ++i) area += pds::piece_area(pieces[i], 1.0);
         // Reference: the triangle's area outside the disk, by a fine grid.
         const int g = test_light() ? 600 : 2000;
         double minx = std::min({0.0, t.a.x, t.b.x}), maxx = std::max({0.0, t.a.x, t.b.x});
@@ -120,13 +120,13 @@ START_TEST(float_classification_is_certified) {
             bool maximal = false;
             s.run(stop, &maximal);
             for (std::size_t i = 0; i < s.count(); ++i) {
-                const std::vector<pds::Point> ring = s.cell_ring(i);
-                const pds::CellMeasure m = pds::measure_cell(s.cell_query(i), [&](const auto& visit) {
+                const std::vector<pds::Point> ring = s.jones().cells().ring_points(pds::vertex_of(i));
+                const pds::CellMeasure m = pds::measure_cell(s.jones().cells().query(pds::vertex_of(i)), [&](const auto& visit) {
                     for (const pds::Point& p : ring) visit(p);
                 });
                 if (m.doubtful) continue;
-                const bool exact = pds::cell_is_covered_exact(s.cell_query(i).site, ring,
-                                                              s.internal_domain(), s.internal_radius());
+                const bool exact = pds::cell_is_covered_exact(s.jones().cells().query(pds::vertex_of(i)).site, ring,
+                                                              s.frame().box(), s.frame().r());
                 ck_assert_int_eq(exact, m.area == 0.0);
             }
             if (stop == 0) ck_assert(maximal);
@@ -166,12 +166,12 @@ void add_uniformity_chi2(const pds::Sampler& s, std::size_t site, int n, std::ui
                          double* total_chi2, int* total_dof) {
     const std::vector<pds::Point> pts = real_points(s);
     const pds::Point c = pts[site];
-    const std::vector<pds::Point> ring = s.cell_ring(site);
-    const pds::CellQuery q = s.cell_query(site);
+    const std::vector<pds::Point> ring = s.jones().cells().ring_points(pds::vertex_of(site));
+    const pds::CellQuery q = s.jones().cells().query(pds::vertex_of(site));
     const auto ring_fn = [&](const auto& visit) {
         for (const pds::Point& p : ring) visit(p);
     };
-    const pds::Box& box = s.internal_domain();
+    const pds::Box& box = s.frame().box();
     const double r = q.radius;
     const auto accept = [&](const pds::Point& p) { return box.contains(p) && in_free_region_of(p, c, pts, r); };
     double reach = 0;
@@ -187,7 +187,7 @@ void add_uniformity_chi2(const pds::Sampler& s, std::size_t site, int n, std::ui
         if (accept(p)) want.push_back(p);
     }
     pds::Rng rng(seed + 1);
-    const double area = s.cell_measure(site).area;
+    const double area = s.jones().cells().measure(pds::vertex_of(site)).area;
     std::vector<pds::Point> got;
     while (static_cast<int>(got.size()) < n) {
         const pds::CellSelection sel = pds::select_in_cell(q, ring_fn, rng.next_double() * area);
@@ -244,7 +244,7 @@ START_TEST(draws_are_uniform_in_free_regions) {
         // The cells with the largest free areas.
         std::vector<double> area(s.count());
         std::vector<std::size_t> order(s.count());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i, area[i] = s.cell_measure(i).area;
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i, area[i] = s.jones().cells().measure(pds::vertex_of(i)).area;
         std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return area[x] > area[y]; });
         const int cells = test_light() ? 1 : 4;
         for (int k = 0; k < cells; ++k) {

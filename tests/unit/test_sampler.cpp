@@ -102,11 +102,11 @@ void check_pattern(const pds::Sampler& s, bool expect_maximal) {
     for (std::size_t i = 0; i < xy.size() / 2; ++i)
         ck_assert(d.contains(pds::Point{xy[2 * i], xy[2 * i + 1]}));
     check_min_distance(xy, s.radius());
-    check_delaunay_mesh(s.mesh());
+    check_delaunay_mesh(s.jones().mesh());
     const pds::VerifyReport rep = s.verify();
     ck_assert_msg(rep.valid, "verify: %s", rep.failure.c_str());
     ck_assert_int_eq(rep.maximal, expect_maximal);
-    ck_assert_uint_eq(s.stats().gave_up_cells, 0);
+    ck_assert_uint_eq(s.jones().stats().gave_up_cells, 0);
     if (expect_maximal) {
         ck_assert(s.free_area() == 0.0);
         check_probes(xy, d, s.radius(), test_light() ? 2000 : 20000);
@@ -230,16 +230,53 @@ START_TEST(same_seed_same_bytes) {
 END_TEST
 
 START_TEST(limits) {
-    ck_assert(pds::Sampler::check_limits({0, 0, 1, 1}, 0.01) == pds::Limit::ok);
-    ck_assert(pds::Sampler::check_limits({0, 0, 1, 1}, 1e-5) == pds::Limit::too_many_points);
-    ck_assert(pds::Sampler::check_limits({1e15, 0, 1e15 + 1, 1}, 0.05) ==
-              pds::Limit::radius_below_precision);
-    ck_assert(pds::Sampler::check_limits({0, 0, 1e-300, 1e-300}, 1e-302) == pds::Limit::coordinates_too_small);
-    ck_assert(pds::Sampler::check_limits({-1e308, -1e308, 1e308, 1e308}, 1e306) == pds::Limit::ok);
+    using pds::Frame;
+    using pds::Limit;
+    ck_assert(Frame({0, 0, 1, 1}, 0.01).precision_limit() == Limit::ok);
+    ck_assert(Frame({0, 0, 1, 1}, 1e-5).precision_limit() == Limit::ok);
+    ck_assert_double_gt(Frame({0, 0, 1, 1}, 1e-5).count_bound(), static_cast<double>(Frame::max_points()));
+    ck_assert(Frame({1e15, 0, 1e15 + 1, 1}, 0.05).precision_limit() == Limit::radius_below_precision);
+    ck_assert(Frame({0, 0, 1e-300, 1e-300}, 1e-302).precision_limit() == Limit::coordinates_too_small);
+    ck_assert(Frame({-1e308, -1e308, 1e308, 1e308}, 1e306).precision_limit() == Limit::ok);
     // Oler's bound really bounds: a hexagonal packing at spacing R fits under it.
     const double r = 0.01;
     const double rows = std::floor(1.0 / (r * std::sqrt(3.0) / 2)) + 1, cols = std::floor(1.0 / r) + 1;
-    ck_assert_double_ge(pds::Sampler::count_bound({0, 0, 1, 1}, r), rows * cols - rows / 2);
+    ck_assert_double_ge(Frame({0, 0, 1, 1}, r).count_bound(), rows * cols - rows / 2);
+}
+END_TEST
+
+START_TEST(limits_judged_at_first_use) {
+    bool maximal = true;
+    // A maximal pattern would not fit 32-bit indices: only bounded runs, and
+    // without the dart stage (its grid would be huge).
+    pds::Sampler huge(1e-5, 1);
+    try {
+        huge.run(0, &maximal);
+        ck_abort_msg("an unbounded run at R = 1e-5 must throw LimitError");
+    } catch (const pds::LimitError& e) {
+        ck_assert(e.limit() == pds::Limit::too_many_points);
+    }
+    ck_assert_uint_eq(huge.count(), 0);
+    ck_assert_uint_eq(huge.run(100, &maximal), 100);
+    ck_assert(!maximal);
+    ck_assert(!huge.in_dart_stage());
+    ck_assert(huge.verify().valid);
+    // The same radius for a domain it suits, given in either order.
+    pds::Sampler tiny(1e-5, 2);
+    tiny.set_domain(pds::Box{0, 0, 4e-4, 4e-4});
+    tiny.run(0, &maximal);
+    ck_assert(maximal);
+    ck_assert_uint_gt(tiny.count(), 500);
+    // Precision: refused at the first point, with nothing changed.
+    pds::Sampler far(0.05, 3);
+    far.set_domain(pds::Box{1e15, 0, 1e15 + 1, 1});
+    try {
+        far.step();
+        ck_abort_msg("a radius below precision must throw LimitError");
+    } catch (const pds::LimitError& e) {
+        ck_assert(e.limit() == pds::Limit::radius_below_precision);
+    }
+    ck_assert_uint_eq(far.count(), 0);
 }
 END_TEST
 
@@ -258,6 +295,7 @@ Suite* sampler_suite() {
     suite_add_tcase(s, t);
     t = tcase_create("limits");
     tcase_add_test(t, limits);
+    tcase_add_test(t, limits_judged_at_first_use);
     suite_add_tcase(s, t);
     return s;
 }

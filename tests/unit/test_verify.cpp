@@ -48,9 +48,9 @@ START_TEST(missing_point_is_not_maximal) {
     pds::Sampler s(0.07, 3);
     bool maximal = false;
     s.run(0, &maximal);
-    const pds::Box& box = s.internal_domain();
-    const double r = s.internal_radius();
-    const auto& all = s.mesh().points();
+    const pds::Box& box = s.frame().box();
+    const double r = s.frame().r();
+    const auto& all = s.jones().mesh().points();
     std::vector<pds::Point> pts(all.begin() + pds::Delaunay::kGhosts, all.end());
     ck_assert(pds::verify_pattern(build(pts, box), box, r).maximal);
     for (std::size_t drop = 0; drop < pts.size(); drop += (test_light() ? 40 : 9)) {

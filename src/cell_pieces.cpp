@@ -1,30 +1,13 @@
-// free_area.cpp - fan-triangle geometry of a cell's free region (Jones 2006,
-// section 3.1, cases 1-4; see free_area.hpp).
-#include "free_area.hpp"
+// cell_pieces.cpp - fan-triangle geometry of a cell's free region (Jones 2006,
+// section 3.1, cases 1-4; see cell_pieces.hpp).
+#include "cell_pieces.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
 #include "angle.hpp"
+#include "vec.hpp"
 
 namespace pds {
-namespace cell_detail {
-
-namespace {
-
-double cross(const Point& a, const Point& b) { return a.x * b.y - a.y * b.x; }
-double dot(const Point& a, const Point& b) { return a.x * b.x + a.y * b.y; }
-
-// The fan triangle's pieces, skipping triangles inside the disk: when both ends
-// of the far side are within R, so is the whole triangle (it is convex).
-int fan_pieces(const Vtx& va, const Vtx& vb, double r2, Piece out[2]) {
-    if (va.d2 <= r2 && vb.d2 <= r2) return 0;
-    return split_fan_triangle(Point{va.x, va.y}, Point{vb.x, vb.y}, r2, out);
-}
-
-}  // namespace
-
-void degenerate_triangle() { throw std::logic_error("degenerate Delaunay triangle around a site"); }
 
 int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]) {
     const double ex = b.x - a.x, ey = b.y - a.y;
@@ -126,35 +109,4 @@ bool draw_in_piece(const Piece& piece, double r, double r2, Rng& rng, Point* out
     return true;
 }
 
-void CellSink::edge(const Vtx& a, const Vtx& b) {
-    if (done()) return;
-    Piece pieces[2];
-    const int n = fan_pieces(a, b, r2_, pieces);
-    if (n == 0) flush();  // the boundary runs inside the disk here
-    for (int i = 0; i < n; ++i) {
-        if (chunk_().extends_with(pieces[i])) {
-            chunk_().extend(pieces[i], selecting());
-        } else {
-            flush();
-            chunk_().begin(pieces[i], selecting());
-        }
-    }
-}
-
-void CellSink::flush() {
-    Chunk& c = chunk_();
-    if (c.count == 0) return;
-    const double a = c.area(r2_);
-    sum_ += a;
-    // Keep the chunk where the sum first passes the target, or else the last
-    // one with positive area; once found, later chunks only add to the sum.
-    if (selecting() && a > 0.0) {
-        building_ = 1 - building_;  // the chunk just built becomes the chosen one
-        if (sum_ > target_) found_ = true;
-        else fallback_ = true;
-    }
-    chunk_().count = 0;
-}
-
-}  // namespace cell_detail
 }  // namespace pds

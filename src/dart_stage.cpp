@@ -1,11 +1,12 @@
-// dart_grid.cpp - dart throwing on a background grid (see dart_grid.hpp).
-#include "dart_grid.hpp"
+// dart_stage.cpp - dart throwing on a background grid (see dart_stage.hpp).
+#include "dart_stage.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <new>
 
+#include "mesh_cells.hpp"
 #include "predicates.hpp"
 
 namespace pds {
@@ -31,12 +32,12 @@ std::size_t cells_along(double length, double side) {
 
 }  // namespace
 
-DartGrid::DartGrid(const Box& domain, double radius)
+DartStage::DartStage(const Box& domain, double radius)
     : box_(domain),
       r_(radius),
-      r2_low_(radius * radius * (1.0 - 0x1.0p-40)),
-      r2_high_(radius * radius * (1.0 + 0x1.0p-40)),
-      side_(0.99 * radius / std::sqrt(2.0)),
+      r2_low_(radius * radius * (1.0 - kFilterSlack)),
+      r2_high_(radius * radius * (1.0 + kFilterSlack)),
+      side_(kCellShrink * radius / std::sqrt(2.0)),
       inv_side_(1.0 / side_) {
     cols_ = cells_along(domain.width(), side_);
     rows_ = cells_along(domain.height(), side_);
@@ -47,14 +48,21 @@ DartGrid::DartGrid(const Box& domain, double radius)
     if (!cells_) throw std::bad_alloc();
     // A window long enough that its acceptance rate is a fair estimate, short
     // enough that the stage ends soon after the rate falls.
-    window_ = std::max<std::size_t>(256, cols_ * rows_ / 16);
+    window_ = std::max<std::size_t>(kMinWindow, cols_ * rows_ / 16);
     hilbert_side_ = 1;
     while (hilbert_side_ < cols_ || hilbert_side_ < rows_) hilbert_side_ *= 2;
 }
 
-void DartGrid::reserve(std::size_t points) { points_.reserve(points); }
+void DartStage::reserve(std::size_t points) {
+    // Each reserve either succeeds or leaves its vector as it was.
+    points_.reserve(points);
+    order_.reserve(points);
+    tmp_order_.reserve(points);
+    key_.reserve(points);
+    tmp_key_.reserve(points);
+}
 
-DartGrid::CellXY DartGrid::column_row(const Point& p) const {
+DartStage::CellXY DartStage::column_row(const Point& p) const {
     // Clamped: rounding may put a point on the far edge of the last cell.
     const double fx = (p.x - box_.x0) * inv_side_, fy = (p.y - box_.y0) * inv_side_;
     const std::size_t cx = fx > 0.0 ? static_cast<std::size_t>(fx) : 0;
@@ -62,22 +70,22 @@ DartGrid::CellXY DartGrid::column_row(const Point& p) const {
     return CellXY{std::min(cx, cols_ - 1), std::min(cy, rows_ - 1)};
 }
 
-std::size_t DartGrid::cell_of(const Point& p) const {
+std::size_t DartStage::cell_of(const Point& p) const {
     const CellXY c = column_row(p);
     return (c.y + kPad) * stride_ + c.x + kPad;
 }
 
-Point DartGrid::read(const Cell& cell) const {
+Point DartStage::read(const Cell& cell) const {
     // Empty cells read as NaN: every comparison with such a point is false.
     return Point{from_bits(~cell.x_bits), from_bits(~cell.y_bits)};
 }
 
-void DartGrid::write(std::size_t cell, const Point& p) {
+void DartStage::write(std::size_t cell, const Point& p) {
     cells_[cell].x_bits = ~bits_of(p.x);
     cells_[cell].y_bits = ~bits_of(p.y);
 }
 
-void DartGrid::draw_batch(Rng& rng) {
+void DartStage::draw_batch(Rng& rng) {
     const double w = static_cast<double>(cols_) * side_, h = static_cast<double>(rows_) * side_;
     for (std::size_t k = 0; k < kBatch; ++k) {
         Dart& d = batch_[k];
@@ -95,7 +103,7 @@ void DartGrid::draw_batch(Rng& rng) {
     batch_size_ = kBatch;
 }
 
-bool DartGrid::is_free(const Point& p, std::size_t cell) const {
+bool DartStage::is_free(const Point& p, std::size_t cell) const {
     // An occupied cell is covered whole (its diagonal is under R).
     if (cells_[cell].x_bits != 0) return false;
     const Cell* row = cells_.get() + cell - kPad * stride_ - kPad;
@@ -111,38 +119,45 @@ bool DartGrid::is_free(const Point& p, std::size_t cell) const {
     return true;
 }
 
-void DartGrid::end_of_window() {
+void DartStage::end_of_window() {
     if (static_cast<double>(window_hits_) < kMinAcceptance * static_cast<double>(window_darts_))
         over_ = true;
     window_darts_ = window_hits_ = 0;
 }
 
-bool DartGrid::add_one(Rng& rng) {
+const Point* DartStage::next(Rng& rng) {
+    if (has_pending_) return &batch_[batch_head_ - 1].p;
     while (!over_) {
         if (batch_head_ == batch_size_) draw_batch(rng);
-        const Dart d = batch_[batch_head_++];
+        const Dart& d = batch_[batch_head_++];
         ++window_darts_;
         const bool hit = box_.contains(d.p) && is_free(d.p, d.cell);
-        if (hit) {
-            write(d.cell, d.p);
-            points_.push_back(d.p);
-            ++window_hits_;
-        }
+        if (hit) ++window_hits_;
         if (window_darts_ == window_) end_of_window();
-        if (hit) return true;
+        if (hit) {
+            has_pending_ = true;
+            return &d.p;
+        }
     }
-    return false;
+    return nullptr;
 }
 
-std::uint32_t DartGrid::hilbert_key(const Point& p) const {
+void DartStage::add_next() {
+    const Dart& d = batch_[batch_head_ - 1];
+    write(d.cell, d.p);
+    points_.push_back(d.p);
+    has_pending_ = false;
+}
+
+std::uint64_t DartStage::hilbert_key(const Point& p) const {
     // Position along a Hilbert curve over the cells (rotating each quadrant
-    // so the curve stays continuous); nearby keys are nearby cells.
+    // so the curve stays continuous); nearby keys are nearby cells. 64 bits:
+    // a side of up to 2^32 cells.
     const CellXY c = column_row(p);
-    std::uint32_t x = static_cast<std::uint32_t>(c.x);
-    std::uint32_t y = static_cast<std::uint32_t>(c.y);
-    std::uint32_t key = 0;
-    for (std::uint32_t s = hilbert_side_ / 2; s > 0; s /= 2) {
-        const std::uint32_t rx = (x & s) != 0, ry = (y & s) != 0;
+    std::uint64_t x = c.x, y = c.y;
+    std::uint64_t key = 0;
+    for (std::uint64_t s = hilbert_side_ / 2; s > 0; s /= 2) {
+        const std::uint64_t rx = (x & s) != 0, ry = (y & s) != 0;
         key += s * s * ((3 * rx) ^ ry);
         if (ry == 0) {
             if (rx == 1) {
@@ -155,30 +170,33 @@ std::uint32_t DartGrid::hilbert_key(const Point& p) const {
     return key;
 }
 
-std::vector<std::uint32_t> DartGrid::insertion_order() const {
+void DartStage::insertion_order(std::uint32_t* order, std::uint64_t* key, std::uint32_t* tmp_order,
+                                std::uint64_t* tmp_key) const {
     // Biased randomized insertion order (Amenta, Choi and Rote 2003): the
     // points come in rounds, each about three times the points before it,
     // and each round is sorted along the Hilbert curve. A round's points then
     // fall inside the triangulation of the earlier ones, near where the last
     // one went, so walks are short and flips stay local. The points are in
     // random order already (the order they were added in), so the rounds are
-    // prefixes.
+    // prefixes: ends n, n/4, n/16, ... down to 256 or fewer points.
     const std::size_t n = points_.size();
-    std::vector<std::uint32_t> order(n), key(n), tmp_key(n), tmp_order(n);
-    std::vector<std::size_t> ends;
-    for (std::size_t end = n; end > 0; end = end > 256 ? end / 4 : 0) ends.push_back(end);
+    std::size_t ends[64];
+    std::size_t rounds = 0;
+    for (std::size_t end = n; end > 0; end = end > 256 ? end / 4 : 0) ends[rounds++] = end;
+    // Keys have 2 log2(side) bits: enough 11-bit radix passes to cover them.
+    int key_bits = 0;
+    while ((std::uint64_t{1} << key_bits) < hilbert_side_ * hilbert_side_ && key_bits < 64) ++key_bits;
+    constexpr int kDigit = 11;
+    constexpr std::uint64_t kMask = (std::uint64_t{1} << kDigit) - 1;
     std::size_t begin = 0;
-    for (auto it = ends.rbegin(); it != ends.rend(); ++it) {
-        const std::size_t end = *it;
+    for (std::size_t r = rounds; r-- > 0;) {
+        const std::size_t end = ends[r];
         for (std::size_t i = begin; i < end; ++i) {
             key[i] = hilbert_key(points_[i]);
             order[i] = static_cast<std::uint32_t>(i);
         }
-        // Three 10-bit radix passes: keys stay below 2^30 (the grid is
-        // bounded by the point count, see Sampler::max_points).
-        constexpr int kDigit = 10;
-        constexpr std::uint32_t kMask = (1u << kDigit) - 1;
-        for (int shift = 0; shift < 3 * kDigit; shift += kDigit) {
+        // Stable LSD radix sort of [begin, end) by key.
+        for (int shift = 0; shift < key_bits; shift += kDigit) {
             std::size_t count[kMask + 2] = {};
             for (std::size_t i = begin; i < end; ++i) ++count[((key[i] >> shift) & kMask) + 1];
             for (std::size_t d = 0; d <= kMask; ++d) count[d + 1] += count[d];
@@ -187,31 +205,49 @@ std::vector<std::uint32_t> DartGrid::insertion_order() const {
                 tmp_key[at] = key[i];
                 tmp_order[at] = order[i];
             }
-            std::copy(tmp_key.begin() + begin, tmp_key.begin() + end, key.begin() + begin);
-            std::copy(tmp_order.begin() + begin, tmp_order.begin() + end, order.begin() + begin);
+            std::copy(tmp_key + begin, tmp_key + end, key + begin);
+            std::copy(tmp_order + begin, tmp_order + end, order + begin);
         }
         begin = end;
     }
-    return order;
 }
 
-bool DartGrid::finds_free_spot() const {
-    // Candidates: each empty cell's centre and corners, moved into the domain.
-    for (std::size_t cy = 0; cy < rows_; ++cy) {
-        for (std::size_t cx = 0; cx < cols_; ++cx) {
-            const std::size_t cell = (cy + kPad) * stride_ + cx + kPad;
-            if (cells_[cell].x_bits != 0) continue;
-            for (int k = 0; k < 5; ++k) {
-                const double fx = k == 4 ? 0.5 : (k & 1), fy = k == 4 ? 0.5 : (k >> 1);
-                Point p{box_.x0 + (static_cast<double>(cx) + fx) * side_,
-                        box_.y0 + (static_cast<double>(cy) + fy) * side_};
-                p.x = std::min(std::max(p.x, box_.x0), box_.x1);
-                p.y = std::min(std::max(p.y, box_.y0), box_.y1);
-                if (is_free(p, cell_of(p))) return true;
-            }
-        }
-    }
-    return false;
+const std::uint32_t* DartStage::handover_order() {
+    // Sizes within the reserved capacity: no allocation.
+    const std::size_t n = points_.size();
+    order_.resize(n);
+    tmp_order_.resize(n);
+    key_.resize(n);
+    tmp_key_.resize(n);
+    insertion_order(order_.data(), key_.data(), tmp_order_.data(), tmp_key_.data());
+    return order_.data();
+}
+
+Delaunay DartStage::triangulate(std::vector<std::uint32_t>& order) const {
+    const std::size_t n = points_.size();
+    order.resize(n);
+    std::vector<std::uint32_t> tmp_order(n);
+    std::vector<std::uint64_t> key(n), tmp_key(n);
+    insertion_order(order.data(), key.data(), tmp_order.data(), tmp_key.data());
+    Delaunay mesh(box_);
+    mesh.reserve(n + Delaunay::kGhosts);
+    VertexIndex previous = 0;  // each walk starts at the last point: a neighbour
+    for (std::size_t i = 0; i < n; ++i) previous = mesh.insert(points_[order[i]], previous);
+    return mesh;
+}
+
+double DartStage::free_area() const {
+    std::vector<std::uint32_t> order;
+    const Delaunay mesh = triangulate(order);
+    return MeshCells(mesh, box_, r_).total_free_area();
+}
+
+VerifyReport DartStage::verify() const {
+    std::vector<std::uint32_t> order;
+    const Delaunay mesh = triangulate(order);
+    VerifyReport rep = verify_pattern(mesh, box_, r_);
+    if (rep.vertex != kNoVertex) name_point(rep, order[site_of(rep.vertex)]);
+    return rep;
 }
 
 }  // namespace pds

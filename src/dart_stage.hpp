@@ -1,4 +1,4 @@
-// dart_grid.hpp - the opening of a run: dart throwing on a background grid.
+// dart_stage.hpp - the opening of a run: dart throwing on a background grid.
 //
 // Early in a run most of the domain is free, and the cheapest exact way to
 // draw the next point uniformly from the free region is to throw darts
@@ -22,8 +22,13 @@
 // Memory-level parallelism: darts are drawn in batches and their blocks are
 // prefetched before any is tested, so the cache misses of a batch overlap.
 // The batch persists across calls, so splitting a run does not change it.
-#ifndef PDS_DART_GRID_HPP
-#define PDS_DART_GRID_HPP
+//
+// The stage keeps no triangulation. Queries (free area, verify) build one on
+// the fly; the hand-over inserts the points into the Jones stage's mesh in
+// an order that keeps walks short (handover_order), using scratch memory
+// reserved with the points, so the hand-over itself never allocates.
+#ifndef PDS_DART_STAGE_HPP
+#define PDS_DART_STAGE_HPP
 
 #include <cstddef>
 #include <cstdint>
@@ -31,46 +36,54 @@
 #include <memory>
 #include <vector>
 
+#include "batch.hpp"
+#include "delaunay.hpp"
 #include "point.hpp"
 #include "rng.hpp"
+#include "stage.hpp"
 
 namespace pds {
 
-class DartGrid {
+class DartStage final : public Stage {
 public:
     // Allocates the grid (zeroed: address space until points land); throws
     // std::bad_alloc and changes nothing else.
-    DartGrid(const Box& domain, double radius);
+    DartStage(const Box& domain, double radius);
 
-    // Room for `points` points in all; strong guarantee (std::bad_alloc).
+    // Room for `points` points in all, and the hand-over's scratch; strong
+    // guarantee (std::bad_alloc).
     void reserve(std::size_t points);
-    bool has_room_for_one() const { return points_.size() < points_.capacity(); }
+    bool has_room_for(std::size_t points) const { return points_.capacity() >= points && order_.capacity() >= points; }
 
-    // Throws darts until one is at least R from every point: appends it and
-    // returns true. Returns false, with nothing added, once the stage is over
-    // (the acceptance rate over a window of darts fell below kMinAcceptance),
-    // and from then on.
-    bool add_one(Rng& rng);
+    std::size_t count() const override { return points_.size(); }
+    const Point& point(PointIndex k) const override { return points_[k]; }
+    // Throws darts until one is at least R from every point and returns it.
+    // Returns nullptr once the stage is over (the acceptance rate over a
+    // window of darts fell below kMinAcceptance), and from then on.
+    const Point* next(Rng& rng) override;
+    void add_next() override;
+    double free_area() const override;
+    VerifyReport verify() const override;
 
-    std::size_t count() const { return points_.size(); }
-    // In the order they were added.
     const std::vector<Point>& points() const { return points_; }
-
-    // The points' indices in an order that makes inserting them into a
-    // triangulation fast (see the .cpp).
-    std::vector<std::uint32_t> insertion_order() const;
-
-    // Exact: true if some point of the domain is at least R from every point
-    // (a cell centre or corner); false means none was found by this search,
-    // not that the pattern is maximal.
-    bool finds_free_spot() const;
+    // The points' indices in the order the hand-over inserts them (see the
+    // .cpp); written into the reserved scratch: never allocates.
+    const std::uint32_t* handover_order();
 
 private:
     // Fraction of darts that must still land free, over a window, to go on.
     // Chosen by measurement (make bench): below about 4% a dart costs more per
     // point than the Delaunay stage does.
     static constexpr double kMinAcceptance = 0.04;
-    static constexpr std::size_t kBatch = 64;
+    static constexpr std::size_t kBatch = kMaxBatch;
+    static constexpr std::size_t kMinWindow = 256;  // darts per window, at least
+    // Cells of side kCellShrink * R / sqrt 2: a diagonal under R even after
+    // rounding, so a cell never holds two points.
+    static constexpr double kCellShrink = 0.99;
+    // The float filter decides |p - q|^2 against R^2 (1 -+ kFilterSlack): far
+    // wider than the rounding of either (a few units of 2^-53), so only
+    // distances within the slack go to the exact predicate.
+    static constexpr double kFilterSlack = 0x1.0p-40;
     static constexpr int kPad = 2;  // empty cells around the grid: no bounds tests
 
     struct Dart {
@@ -90,7 +103,14 @@ private:
     };
     CellXY column_row(const Point& p) const;
     std::size_t cell_of(const Point& p) const;  // index into cells_
-    std::uint32_t hilbert_key(const Point& p) const;
+    std::uint64_t hilbert_key(const Point& p) const;
+    // Writes the insertion order into order[0, n); the other three arrays
+    // are scratch of n entries each.
+    void insertion_order(std::uint32_t* order, std::uint64_t* key, std::uint32_t* tmp_order,
+                         std::uint64_t* tmp_key) const;
+    // A triangulation of the points, for queries; vertex v holds point
+    // order[v - kGhosts].
+    Delaunay triangulate(std::vector<std::uint32_t>& order) const;
     Point read(const Cell& cell) const;
     void write(std::size_t cell, const Point& p);
     void draw_batch(Rng& rng);
@@ -104,9 +124,12 @@ private:
     double inv_side_;
     std::size_t cols_ = 0, rows_ = 0;  // real cells; the padded row has cols_ + 2 kPad
     std::size_t stride_ = 0;
-    std::uint32_t hilbert_side_ = 1;   // a power of two at least cols_ and rows_
+    std::uint64_t hilbert_side_ = 1;   // a power of two at least cols_ and rows_
     std::unique_ptr<Cell[], Free> cells_;
     std::vector<Point> points_;
+    // The hand-over's scratch, reserved with the points.
+    std::vector<std::uint32_t> order_, tmp_order_;
+    std::vector<std::uint64_t> key_, tmp_key_;
 
     Dart batch_[kBatch];
     std::size_t batch_head_ = 0, batch_size_ = 0;
@@ -114,6 +137,7 @@ private:
     std::size_t window_darts_ = 0;   // thrown in the current window
     std::size_t window_hits_ = 0;    // of which kept
     bool over_ = false;
+    bool has_pending_ = false;  // batch_[batch_head_ - 1] is the dart next() returned
 };
 
 }  // namespace pds

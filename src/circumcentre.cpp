@@ -1,0 +1,27 @@
+// circumcentre.cpp - exact forms of the circumcentre (see circumcentre.hpp).
+#include "circumcentre.hpp"
+
+#include <stdexcept>
+
+namespace pds {
+
+void degenerate_triangle() { throw std::logic_error("degenerate Delaunay triangle around a site"); }
+
+ExactCentre exact_circumcentre(const Point& a, const Point& b, const Point& c) {
+    using E = Expansion;
+    const E bx = E::diff(b.x, a.x), by = E::diff(b.y, a.y);
+    const E dx = E::diff(c.x, a.x), dy = E::diff(c.y, a.y);
+    const E bb = bx * bx + by * by, dd = dx * dx + dy * dy;
+    return ExactCentre{dy * bb - by * dd, bx * dd - dx * bb, (bx * dy - by * dx).scaled(2.0)};
+}
+
+Rational bisector_parameter(const Point& a, const Point& b, const Point& c) {
+    using E = Expansion;
+    const E bx = E::diff(b.x, a.x), by = E::diff(b.y, a.y);
+    const E dx = E::diff(c.x, a.x), dy = E::diff(c.y, a.y);
+    const E num = dx * E::diff(c.x, b.x) + dy * E::diff(c.y, b.y);
+    const E den = (bx * dy - by * dx).scaled(2.0);
+    return make_rational(num, den);
+}
+
+}  // namespace pds

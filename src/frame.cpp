@@ -1,0 +1,89 @@
+// frame.cpp - internal coordinates and limits (see frame.hpp).
+#include "frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "delaunay.hpp"
+#include "quadedge.hpp"
+
+namespace pds {
+
+namespace {
+
+// Coordinates are scaled so the largest magnitude is in [1, 2); the radius
+// must keep this many bits of resolution below it.
+constexpr double kMinInternalRadius = 0x1.0p-26;
+constexpr double kMinMagnitude = 0x1.0p-900;
+// Upper bound on memory per point, for the address-space check on 32-bit.
+constexpr std::size_t kBytesPerPointBudget = 256;
+
+double max_magnitude(const Box& b) {
+    return std::max(std::max(std::fabs(b.x0), std::fabs(b.x1)),
+                    std::max(std::fabs(b.y0), std::fabs(b.y1)));
+}
+
+Box scaled(const Box& b, int k) {
+    return Box{std::ldexp(b.x0, k), std::ldexp(b.y0, k), std::ldexp(b.x1, k), std::ldexp(b.y1, k)};
+}
+
+// Any radius at least the diagonal gives the same one-point pattern; capping
+// keeps R^2 finite.
+double effective_radius(const Box& b, double r) {
+    const double w = b.width(), h = b.height();
+    const double cap = 2.0 * std::sqrt(w * w + h * h);  // not hypot: see delaunay.cpp
+    return r < cap ? r : cap;
+}
+
+}  // namespace
+
+Frame::Frame(const Box& user_domain, double user_radius)
+    : user_domain_(user_domain), user_radius_(user_radius) {
+    set_domain(user_domain);
+}
+
+void Frame::set_domain(const Box& user_domain) {
+    user_domain_ = user_domain;
+    // Coordinates too small to scale keep k = 0; precision_limit() refuses them.
+    scale_exp_ = max_magnitude(user_domain) < kMinMagnitude ? 0 : -std::ilogb(max_magnitude(user_domain));
+    box_ = scaled(user_domain, scale_exp_);
+    set_radius(user_radius_);
+}
+
+void Frame::set_radius(double user_radius) {
+    user_radius_ = user_radius;
+    r_ = effective_radius(box_, std::ldexp(user_radius, scale_exp_));
+}
+
+Limit Frame::precision_limit() const {
+    if (max_magnitude(user_domain_) < kMinMagnitude) return Limit::coordinates_too_small;
+    if (!(std::ldexp(user_radius_, scale_exp_) >= kMinInternalRadius)) return Limit::radius_below_precision;
+    return Limit::ok;
+}
+
+double Frame::count_bound() const {
+    // Oler (1961): points at mutual distance >= R in a convex region of area A
+    // and perimeter P number at most 2A/(sqrt(3) R^2) + P/(2R) + 1.
+    const double w = box_.width() / r_, h = box_.height() / r_;
+    return 2.0 / std::sqrt(3.0) * w * h + (w + h) + 1.0;
+}
+
+std::size_t Frame::count_bound_points() const {
+    const double bound = count_bound();
+    const double cap = static_cast<double>(max_points()) + 1.0;
+    return static_cast<std::size_t>(bound < cap ? bound : cap);
+}
+
+std::size_t Frame::max_points() {
+    const std::size_t by_edges = kMaxEdgeRecords / 3 - Delaunay::kGhosts;
+    const std::size_t by_memory = static_cast<std::size_t>(-1) / 2 / kBytesPerPointBudget;
+    return std::min(by_edges, by_memory);
+}
+
+Point Frame::to_user(const Point& p) const {
+    return Point{std::ldexp(p.x, -scale_exp_), std::ldexp(p.y, -scale_exp_)};
+}
+
+double Frame::area_to_user(double a) const { return std::ldexp(a, -2 * scale_exp_); }
+
+}  // namespace pds

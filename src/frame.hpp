@@ -1,0 +1,82 @@
+// frame.hpp - the sampler's frame: the user's domain and radius, the
+// internal coordinates every other layer works in, and the limits of both.
+//
+// Internally every coordinate is the user's multiplied by 2^k, chosen so the
+// domain's largest |coordinate| lies in [1, 2). Scaling by a power of two is
+// exact both ways, so every exact decision (distances, orientation) is the
+// same in both frames, while products of coordinates can neither overflow nor
+// underflow. Points are returned scaled back, bit for bit what was decided on.
+//
+// Limits (judged when the pair radius/domain is first used, see sampler.hpp):
+//   - precision: R must be at least 2^-26 of the largest |coordinate|, so a
+//     double still resolves the free regions; coordinates must not all lie
+//     below 2^-900;
+//   - count: points index a 32-bit mesh (max_points()); count_bound() is a
+//     rigorous bound on any pattern's size (Oler's inequality).
+#ifndef PDS_FRAME_HPP
+#define PDS_FRAME_HPP
+
+#include <cstddef>
+#include <stdexcept>
+
+#include "point.hpp"
+
+namespace pds {
+
+// Why a domain and radius cannot be sampled.
+enum class Limit {
+    ok,
+    too_many_points,         // the points asked for exceed 32-bit indices or the address space
+    radius_below_precision,  // R under 2^-26 of the coordinates' magnitude
+    coordinates_too_small,   // |coordinates| all below 2^-900
+};
+
+// Thrown before anything changes when a call asks what the limits forbid.
+class LimitError : public std::runtime_error {
+public:
+    LimitError(Limit limit, double user_radius)
+        : std::runtime_error("limit"), limit_(limit), radius_(user_radius) {}
+    Limit limit() const { return limit_; }
+    double radius() const { return radius_; }  // the radius judged
+
+private:
+    Limit limit_;
+    double radius_;
+};
+
+class Frame {
+public:
+    // Requires x0 < x1, y0 < y1 finite and a finite radius > 0.
+    Frame(const Box& user_domain, double user_radius);
+
+    const Box& user_domain() const { return user_domain_; }
+    double user_radius() const { return user_radius_; }
+    // The internal frame.
+    const Box& box() const { return box_; }
+    double r() const { return r_; }
+
+    void set_domain(const Box& user_domain);
+    void set_radius(double user_radius);
+
+    Limit precision_limit() const;
+    // Upper bound on the number of points of any pattern (Oler, 1961).
+    double count_bound() const;
+    // count_bound() as a count, saturated at max_points() + 1.
+    std::size_t count_bound_points() const;
+    // Largest number of points the index types and address space allow.
+    static std::size_t max_points();
+
+    Point to_user(const Point& p) const;
+    double area_to_user(double a) const;
+
+private:
+    Box user_domain_;
+    double user_radius_;
+    int scale_exp_ = 0;  // internal = user * 2^scale_exp_
+    Box box_;
+    double r_ = 0.0;     // internal radius (capped at twice the diagonal)
+};
+
+}  // namespace pds
+
+#endif

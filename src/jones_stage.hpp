@@ -1,0 +1,137 @@
+// jones_stage.hpp - the Jones loop (Jones 2006, figure 1): pick a Voronoi
+// cell with probability proportional to its free area, draw a point
+// uniformly in its free region, insert it, and account for the areas that
+// changed.
+//
+// Lazy areas (our change to the paper's step 5): inserting a point only
+// shrinks its neighbours' cells, so their old free areas remain upper bounds.
+// The tree holds these bounds U >= A instead of exact areas, and neighbours are
+// not recomputed at insertion. A cell is selected with probability
+// proportional to U, measured exactly in the same pass that picks a piece with
+// target u * U, and kept with probability A / U (the target falls inside the
+// exact area); otherwise its weight is tightened to A and the selection starts
+// over. Every accepted cell is therefore chosen with probability proportional
+// to A, as the paper's exact recomputation would give, with a fraction of the
+// work; and the loop ends only when every weight has been measured 0.
+//
+// Batches (memory-level parallelism, batch.hpp): free regions only shrink, so
+// a point drawn uniformly from an older free region and kept only if it is
+// still free (at least R from the points added since) is exactly uniform over
+// the current one. So candidates are drawn in batches from one state of the
+// pattern: the tree is descended for all of them level by level and their
+// cells' rings are walked in step, so their misses overlap; then each is
+// computed from cache, and the queue is consumed in order, dropping
+// candidates the newer points cover. The batch size adapts to how many
+// candidates survive; the queue persists across calls, so splitting a run
+// does not change its points.
+//
+// Guarantees (with the predicates' exactness):
+//   - every accepted point is inside the domain, at least R from its cell's site
+//     and inside that cell (so at least R from every point), checked exactly;
+//   - each new point is uniform over the free area: the cell is chosen by area
+//     (tree), the piece by area, the point by rejection inside the piece;
+//   - next() returns nullptr only when every cell is covered: certified in
+//     floating point or decided exactly (cell_coverage.hpp).
+// Memory: reserve() makes room for the points beforehand; only the exact
+// coverage test allocates while points are drawn. If it runs out, the batch
+// being drawn is undone (generator, weights, queue) before std::bad_alloc
+// leaves, so the stage is exactly as before the batch and a later call draws
+// the same points.
+#ifndef PDS_JONES_STAGE_HPP
+#define PDS_JONES_STAGE_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "batch.hpp"
+#include "delaunay.hpp"
+#include "free_area_tree.hpp"
+#include "indices.hpp"
+#include "mesh_cells.hpp"
+#include "point.hpp"
+#include "point_order.hpp"
+#include "rng.hpp"
+#include "stage.hpp"
+
+namespace pds {
+
+// What the stage could not do, for tests and diagnostics.
+struct JonesStats {
+    std::size_t gave_up_cells = 0;  // cells still free that no draw could reach
+};
+
+class JonesStage final : public Stage {
+public:
+    // box and r in the internal frame; may throw std::bad_alloc.
+    JonesStage(const Box& box, double r);
+
+    // Room for `points` points in all; strong guarantee (std::bad_alloc).
+    void reserve(std::size_t points);
+    bool has_room_for(std::size_t points) const;
+
+    // The hand-over: inserts the dart stage's points (point k of `points`
+    // is the k-th added) in the order given, measures every cell and builds
+    // the tree. Requires count() == 0 and room; never allocates.
+    void adopt(const std::vector<Point>& points, const std::uint32_t* order);
+    // Continues at a smaller radius: drops drawn candidates (they were drawn
+    // for the old free region) and measures every cell again.
+    void set_radius(double r);
+
+    std::size_t count() const override { return dt_.vertex_count() - Delaunay::kGhosts; }
+    const Point& point(PointIndex k) const override { return dt_.point(order_.vertex(k)); }
+    const Point* next(Rng& rng) override;
+    void add_next() override;
+    double free_area() const override;
+    VerifyReport verify() const override;
+
+    // Internals, for the unit tests.
+    const Delaunay& mesh() const { return dt_; }
+    MeshCells cells() const { return MeshCells(dt_, box_, r_); }
+    const JonesStats& stats() const { return stats_; }
+
+private:
+    static constexpr int kMaxDraws = 64;  // per piece; a healthy piece accepts > 1/2 of draws
+    static constexpr int kFailuresPerGiveUp = 8;
+
+    // A point drawn from the free region as it was when its batch was drawn.
+    struct Candidate {
+        Point p;
+        VertexIndex source;  // the vertex whose cell it was drawn in
+    };
+    // A tree weight as it was before the batch being drawn changed it.
+    struct WeightUndo {
+        SiteIndex site;
+        double weight;
+    };
+
+    void adapt_batch_size();
+    void drop_queue();
+    bool still_free(const Point& p) const;
+    void draw_batch(std::size_t n, Rng& rng);
+    void draw_batch_unguarded(std::size_t n, Rng& rng);
+    void set_weight(SiteIndex site, double weight);
+    void give_up(SiteIndex site);
+    bool acceptable(const Point& p, VertexIndex vertex) const;
+    void insert_point(const Point& p, VertexIndex near);
+
+    Box box_;
+    double r_;
+    Delaunay dt_;
+    FreeAreaTree tree_;  // one leaf per site: an upper bound on its free area
+    PointOrder order_;
+    std::vector<Candidate> queue_;            // the current batch, consumed in order
+    std::size_t queue_head_ = 0;
+    std::vector<VertexIndex> since_batch_;    // vertices added since it was drawn
+    std::size_t batch_size_ = 1;
+    int draw_failures_ = 0;                   // failed chunk samplings since the last point
+    Candidate first_{};                       // the first point, drawn over the whole domain
+    bool has_first_ = false;
+    WeightUndo undo_[2 * kMaxBatch];          // at most two weight changes per candidate
+    std::size_t undo_count_ = 0;
+    JonesStats stats_;  // counters only: never steer the sampling
+};
+
+}  // namespace pds
+
+#endif
