@@ -89,6 +89,9 @@ public:
     const Delaunay& mesh() const { return dt_; }
     MeshCells cells() const { return MeshCells(dt_, box_, r_); }
     const JonesStats& stats() const { return stats_; }
+    // Draws the next batches n at a time (1 <= n <= kMaxBatch) until the
+    // adaptation changes it: lets a test put several cells in one batch.
+    void set_batch_size(std::size_t n) { batch_size_ = n < 1 ? 1 : (n > kMaxBatch ? kMaxBatch : n); }
 
 private:
     static constexpr int kMaxDraws = 64;  // per piece; a healthy piece accepts > 1/2 of draws

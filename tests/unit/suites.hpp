@@ -17,6 +17,7 @@ Suite* free_area_suite();
 Suite* verify_suite();
 Suite* sampler_suite();
 Suite* law_suite();
+Suite* out_of_memory_suite();
 
 // Under Valgrind (PDS_TEST_LIGHT set) loops shrink; every behaviour still runs.
 inline bool test_light() { return std::getenv("PDS_TEST_LIGHT") != nullptr; }

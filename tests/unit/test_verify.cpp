@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "delaunay.hpp"
+#include "jones_stage.hpp"
 #include "sampler.hpp"
 #include "suites.hpp"
 #include "verify.hpp"
@@ -88,11 +89,37 @@ START_TEST(sides_and_corners) {
 }
 END_TEST
 
+START_TEST(failure_names_the_users_point) {
+    // The hand-over inserts points in a spatial order, so mesh vertices and
+    // the user's order differ; the message must name the user's index.
+    // Points 0..4 spread over the square; point 5 is too close to point 1.
+    const pds::Box box{0, 0, 1, 1};
+    const std::vector<pds::Point> pts = {{0.9, 0.9}, {0.1, 0.1}, {0.9, 0.1}, {0.1, 0.9},
+                                         {0.5, 0.5}, {0.12, 0.1}};
+    const std::uint32_t order[] = {5, 4, 3, 2, 1, 0};  // the mesh sees them reversed
+    pds::JonesStage stage(box, 0.1);
+    stage.reserve(pts.size());
+    stage.adopt(pts, order);
+    const pds::VerifyReport rep = stage.verify();
+    ck_assert(!rep.valid);
+    // Vertex order: point 5 comes first, so its partner found later is point 1.
+    ck_assert_msg(std::strstr(rep.failure.c_str(), "(point 1)") != nullptr, "%s", rep.failure.c_str());
+    // Same pattern in the user's order: now point 5 is the later one.
+    const std::uint32_t same[] = {0, 1, 2, 3, 4, 5};
+    pds::JonesStage plain(box, 0.1);
+    plain.reserve(pts.size());
+    plain.adopt(pts, same);
+    const pds::VerifyReport rep2 = plain.verify();
+    ck_assert_msg(std::strstr(rep2.failure.c_str(), "(point 5)") != nullptr, "%s", rep2.failure.c_str());
+}
+END_TEST
+
 Suite* verify_suite() {
     Suite* s = suite_create("verify");
     TCase* t = tcase_create("certificate");
     tcase_set_timeout(t, 120);
     tcase_add_test(t, close_pair_is_invalid);
+    tcase_add_test(t, failure_names_the_users_point);
     tcase_add_test(t, point_outside_is_invalid);
     tcase_add_test(t, missing_point_is_not_maximal);
     tcase_add_test(t, sides_and_corners);
