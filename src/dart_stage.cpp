@@ -213,6 +213,11 @@ void DartStage::insertion_order(std::uint32_t* order, std::uint64_t* key, std::u
 }
 
 const std::uint32_t* DartStage::handover_order() {
+    // The stage ends here: its grid is released before the Jones stage's
+    // mesh is filled, so the two never peak together.
+    cells_.reset();
+    over_ = true;
+    has_pending_ = false;
     // Sizes within the reserved capacity: no allocation.
     const std::size_t n = points_.size();
     order_.resize(n);

@@ -67,7 +67,8 @@ public:
 
     const std::vector<Point>& points() const { return points_; }
     // The points' indices in the order the hand-over inserts them (see the
-    // .cpp); written into the reserved scratch: never allocates.
+    // .cpp); written into the reserved scratch: never allocates. Ends the
+    // stage and releases its grid.
     const std::uint32_t* handover_order();
 
 private:
