@@ -31,7 +31,8 @@ struct CellMeasure {
     bool doubtful = false;  // rounding left the classification open
 };
 
-// The smallest weight a possibly-free cell gets, so it stays selectable.
+// The smallest weight a possibly-free cell gets, so it stays selectable:
+// R^2 2^-100, far below any area rounding can resolve, far above underflow.
 inline double area_floor(double r) { return r * r * 0x1.0p-100; }
 
 // The sink's verdict on the cell as a whole.

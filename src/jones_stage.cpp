@@ -111,7 +111,8 @@ void JonesStage::drop_queue() {
 bool JonesStage::still_free(const Point& p) const {
     // It was free when drawn; only the points added since can cover it. Most
     // of those are far away: a box test skips them before the exact check.
-    const double reach = 1.5 * r_;
+    constexpr double kBoxReach = 1.5;  // any half-side >= R holds the disk; some margin
+    const double reach = kBoxReach * r_;
     for (VertexIndex v : since_batch_) {
         const Point& q = dt_.point(v);
         if (std::fabs(p.x - q.x) > reach || std::fabs(p.y - q.y) > reach) continue;

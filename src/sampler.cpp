@@ -49,7 +49,8 @@ void Sampler::prepare(std::size_t points) {
     const bool room = jones_->has_room_for(points) && (!darts_ || darts_->has_room_for(points));
     if (room) return;
     const std::size_t cap = std::min(frame_.count_bound_points(), Frame::max_points());
-    const std::size_t want = std::max(points, std::min(2 * count() + 64, cap));
+    constexpr std::size_t kFirstRoom = 64;  // points reserved at the first growth, at least
+    const std::size_t want = std::max(points, std::min(2 * count() + kFirstRoom, cap));
     jones_->reserve(want);
     if (darts_) darts_->reserve(want);
 }

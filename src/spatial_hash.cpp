@@ -5,13 +5,24 @@
 
 namespace pds {
 
+namespace {
+
+// Cells a little larger than the radius, so a pair closer than R never lands
+// two cells apart after the cell coordinates are rounded.
+constexpr double kCellSlack = 1.0 + 0x1.0p-20;
+// key() packs a cell's column and row into 32 bits each.
+constexpr double kMaxCellsPerAxis = 1e9;
+static_assert(kMaxCellsPerAxis < 4294967296.0, "cell coordinates must fit 32 bits");
+
+}  // namespace
+
 SpatialHash::SpatialHash(const std::vector<Point>& points, std::size_t first, const Box& domain,
                          double radius)
-    : domain_(domain), cell_(radius * (1.0 + 0x1.0p-20)) {
+    : domain_(domain), cell_(radius * kCellSlack) {
     // Cells per axis must fit in 32 bits; a cell that large holds more points,
     // which costs time, not correctness.
     const double span = domain.width() > domain.height() ? domain.width() : domain.height();
-    if (span / cell_ > 1e9) cell_ = span / 1e9;
+    if (span / cell_ > kMaxCellsPerAxis) cell_ = span / kMaxCellsPerAxis;
     next_.assign(points.size(), kEnd);
     cells_.reserve(points.size() - first);
     for (std::size_t i = first; i < points.size(); ++i) {
