@@ -46,7 +46,7 @@ public:
             if (++level > 60) break;  // squares below double resolution: not expected
             const std::size_t darts = active.size();
             for (std::size_t k = 0; k < darts && !active.empty(); ++k) {
-                const std::size_t pick = static_cast<std::size_t>(u01(rng) * active.size());
+                const std::size_t pick = static_cast<std::size_t>(u01(rng) * static_cast<double>(active.size()));
                 const Square sq = active[pick < active.size() ? pick : active.size() - 1];
                 const pds::Point p{sq.x + u01(rng) * side, sq.y + u01(rng) * side};
                 if (box_.contains(p) && !covered(p)) add(p);

@@ -99,7 +99,7 @@ START_TEST(pieces_cover_the_cases) {
                 if (c1 >= 0 && c2 >= 0 && c3 >= 0 && x * x + y * y >= 1) ++count;
             }
         }
-        const double want = count * hx * hy;
+        const double want = static_cast<double>(count) * hx * hy;
         ck_assert_double_le(std::fabs(area - want), 4e-3 * want + 10 * hx * hy * g * 0.01);
     }
 }

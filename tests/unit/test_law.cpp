@@ -51,7 +51,7 @@ double variance(const std::vector<double>& v) {
 }
 
 double z_score(const std::vector<double>& a, const std::vector<double>& b) {
-    const double se = std::sqrt(variance(a) / a.size() + variance(b) / b.size());
+    const double se = std::sqrt(variance(a) / static_cast<double>(a.size()) + variance(b) / static_cast<double>(b.size()));
     return (mean(a) - mean(b)) / se;
 }
 
@@ -65,7 +65,7 @@ double ks_scaled(std::vector<double> a, std::vector<double> b) {
         const double x = std::min(a[i], b[j]);
         while (i < a.size() && a[i] == x) ++i;
         while (j < b.size() && b[j] == x) ++j;
-        d = std::max(d, std::fabs(double(i) / a.size() - double(j) / b.size()));
+        d = std::max(d, std::fabs(double(i) / static_cast<double>(a.size()) - double(j) / static_cast<double>(b.size())));
     }
     const double n = static_cast<double>(a.size()), m = static_cast<double>(b.size());
     return d * std::sqrt(n * m / (n + m));
