@@ -131,7 +131,9 @@ PDS_API int pds_step(pds_sampler *s) PDS_NOEXCEPT;
  *   PDS_EINVAL     s is NULL;
  *   PDS_ERANGE     nothing added: at the first point, the radius is below
  *                  double precision for the domain (2^-26 of its largest
- *                  |coordinate|); or the points asked for cannot fit the
+ *                  |coordinate|), or a nonzero coordinate of the domain is
+ *                  below 2^-900 times the largest (or all are below 2^-900);
+ *                  or the points asked for cannot fit the
  *                  index type (about 3.5e8 points): for max_new == 0, a
  *                  maximal pattern might not fit (Oler's bound
  *                  2A/(sqrt(3)R^2) + P/(2R) + 1); for max_new > 0, the

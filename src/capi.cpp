@@ -49,7 +49,8 @@ const char* limit_text(pds::Limit limit) {
             return "the radius is too small relative to the domain's coordinates for double "
                    "precision (it must be at least 2^-26 of their magnitude)";
         case pds::Limit::coordinates_too_small:
-            return "the domain's coordinates are too close to zero (below 2^-900)";
+            return "the domain's coordinates are too close to zero (all below 2^-900, or a nonzero "
+                   "one below 2^-900 times the largest: use 0 there)";
         case pds::Limit::ok:
             break;
     }

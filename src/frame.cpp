@@ -56,7 +56,14 @@ void Frame::set_radius(double user_radius) {
 }
 
 Limit Frame::precision_limit() const {
-    if (max_magnitude(user_domain_) < kMinMagnitude) return Limit::coordinates_too_small;
+    const double m = max_magnitude(user_domain_);
+    if (m < kMinMagnitude) return Limit::coordinates_too_small;
+    // Scaling is exact only while no coordinate underflows: a nonzero one far
+    // below the largest would lose its bits (and exact products need room
+    // below every value).
+    const double coords[4] = {user_domain_.x0, user_domain_.y0, user_domain_.x1, user_domain_.y1};
+    for (double c : coords)
+        if (c != 0.0 && std::fabs(c) < m * kMinMagnitude) return Limit::coordinates_too_small;
     if (!(std::ldexp(user_radius_, scale_exp_) >= kMinInternalRadius)) return Limit::radius_below_precision;
     return Limit::ok;
 }

@@ -10,7 +10,8 @@
 // Limits (judged when the pair radius/domain is first used, see sampler.hpp):
 //   - precision: R must be at least 2^-26 of the largest |coordinate|, so a
 //     double still resolves the free regions; coordinates must not all lie
-//     below 2^-900;
+//     below 2^-900, and a nonzero one must not lie below 2^-900 times the
+//     largest (scaling would underflow it: found by the fuzzer);
 //   - count: points index a 32-bit mesh (max_points()); count_bound() is a
 //     rigorous bound on any pattern's size (Oler's inequality).
 #ifndef PDS_FRAME_HPP
@@ -28,7 +29,7 @@ enum class Limit {
     ok,
     too_many_points,         // the points asked for exceed 32-bit indices or the address space
     radius_below_precision,  // R under 2^-26 of the coordinates' magnitude
-    coordinates_too_small,   // |coordinates| all below 2^-900
+    coordinates_too_small,   // |coordinates| all below 2^-900, or one nonzero below 2^-900 of the largest
 };
 
 // Thrown before anything changes when a call asks what the limits forbid.

@@ -238,6 +238,10 @@ START_TEST(limits) {
     ck_assert(Frame({1e15, 0, 1e15 + 1, 1}, 0.05).precision_limit() == Limit::radius_below_precision);
     ck_assert(Frame({0, 0, 1e-300, 1e-300}, 1e-302).precision_limit() == Limit::coordinates_too_small);
     ck_assert(Frame({-1e308, -1e308, 1e308, 1e308}, 1e306).precision_limit() == Limit::ok);
+    // Found by the fuzzer: x0 and x1 underflowed to 0 when scaled.
+    ck_assert(Frame({1e-300, 0, 2e-300, 1e300}, 1e299).precision_limit() == Limit::coordinates_too_small);
+    ck_assert(Frame({0, 0, 1e-300, 1}, 0.1).precision_limit() == Limit::coordinates_too_small);
+    ck_assert(Frame({0, 0, 1e-200, 1e-200}, 1e-202).precision_limit() == Limit::ok);
     // Oler's bound really bounds: a hexagonal packing at spacing R fits under it.
     const double r = 0.01;
     const double rows = std::floor(1.0 / (r * std::sqrt(3.0) / 2)) + 1, cols = std::floor(1.0 / r) + 1;
