@@ -9,6 +9,13 @@
 #   make install    PREFIX, DESTDIR, LIBDIR, INCLUDEDIR, BINDIR, MANDIR, PKGCONFIGDIR
 #   make uninstall, make clean
 #   make abi-baseline   regenerate abi/libpoissondisk.abi (only with a map-node bump)
+#   make check-threads  4 threads, each with its own handle, must give the bytes each
+#                       gives alone (built normally; part of make check)
+#   make check-sanitizers   not part of make check (slow): check-asan, the unit and API
+#                       suites under ASan+UBSan (in build/asan), then check-tsan, the
+#                       thread test under ThreadSanitizer (in build/tsan)
+#   make fuzz       libFuzzer on the public API for FUZZ_SECONDS (300; clang), crashes in
+#                   build/fuzz/; make check runs it for 30 s (check-fuzz)
 
 # ---- version: read from the header, the one place it lives -------------------
 version_field = $(shell sed -n 's/^\#define PDS_VERSION_$(1) *\([0-9][0-9]*\).*/\1/p' include/poissondisk.h)
@@ -42,7 +49,10 @@ PDS_CXXFLAGS  := -std=c++17 -fPIC -fvisibility=hidden -fvisibility-inlines-hidde
                  -ffp-contract=off -fno-fast-math -fno-math-errno \
                  -DPDS_BUILDING_LIBRARY -Iinclude -Isrc $(PDS_WARN)
 PDS_CFLAGS    := -std=c99 -Iinclude -Wall -Wextra -pedantic
-PDS_TEST_CXXFLAGS := -std=c++17 -ffp-contract=off -Iinclude -Isrc -Wall -Wextra
+PDS_TEST_CXXFLAGS := -std=c++17 -ffp-contract=off -Iinclude -Isrc $(PDS_WARN)
+PDS_TEST_CFLAGS   := $(PDS_CFLAGS) -Wshadow -Wconversion -Wno-sign-conversion
+# Each object also writes a .d file naming the headers it includes (-include'd below).
+PDS_DEPFLAGS  := -MMD -MP
 
 B := build
 SONAME    := libpoissondisk.so.$(MAJOR)
@@ -70,14 +80,15 @@ CHECK_LIBS = $$(pkg-config --libs check)
 .PHONY: all demo check bench install uninstall clean deps abi-baseline \
         check-unit check-api check-header check-symbols check-abi check-man \
         check-examples check-python check-pkgconfig check-cli check-valgrind \
-        bench-quick check-bench
+        bench-quick check-bench check-threads check-sanitizers check-asan check-tsan
 
 all: $(LIB_SO) $(B)/libpoissondisk.so $(B)/$(SONAME) $(LIB_A) $(CLI)
 
 # ---- library -------------------------------------------------------------------------
-$(B)/obj/%.o: src/%.cpp $(wildcard src/*.hpp) include/poissondisk.h Makefile
+$(B)/obj/%.o: src/%.cpp include/poissondisk.h Makefile
 	@mkdir -p $(@D)
-	$(CXX) $(PDS_CXXFLAGS) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
+	$(CXX) $(PDS_CXXFLAGS) $(CPPFLAGS) $(CXXFLAGS) $(PDS_DEPFLAGS) -c $< -o $@
+-include $(LIB_OBJ:.o=.d)
 
 $(LIB_SO): $(LIB_OBJ) $(MAPFILE)
 	$(CXX) -shared -Wl,-soname,$(SONAME) -Wl,--version-script=$(MAPFILE) \
@@ -93,13 +104,13 @@ $(LIB_A): $(LIB_OBJ)
 	$(AR) rcs $@ $(LIB_OBJ)
 
 # ---- command-line program: public API only, linked against the static library --------
-$(CLI): tools/poissondisk.c include/poissondisk.h $(LIB_A)
-	$(CC) $(PDS_CFLAGS) $(CPPFLAGS) $(CFLAGS) -o $@ $< $(LIB_A) $(LDFLAGS) -lstdc++ -lm
+$(CLI): tools/poissondisk.c tools/cli_options.c tools/cli_options.h include/poissondisk.h $(LIB_A)
+	$(CC) $(PDS_CFLAGS) $(CPPFLAGS) $(CFLAGS) -o $@ $(filter %.c,$^) $(LIB_A) $(LDFLAGS) -lstdc++ -lm
 
 # ---- demo: the quick start's first command -------------------------------------------
 DEMO_RADIUS ?= 0.002
 demo: all
-	@./$(CLI) --radius $(DEMO_RADIUS) --seed 1 --verify --stats > $(B)/demo.txt
+	@$(CLI) --radius $(DEMO_RADIUS) --seed 1 --verify --stats > $(B)/demo.txt
 	@echo "points written to $(B)/demo.txt"
 
 # ---- tests ---------------------------------------------------------------------------
@@ -108,8 +119,8 @@ deps:
 
 check: deps all
 	@$(MAKE) --no-print-directory check-header check-symbols check-abi check-unit \
-	    check-api check-examples check-cli check-bench check-python check-pkgconfig \
-	    check-man check-valgrind
+	    check-api check-threads check-examples check-cli check-bench check-python check-pkgconfig \
+	    check-man check-valgrind check-fuzz check-alloc
 	@echo "make check: all checks passed"
 
 $(UNIT_BIN): $(UNIT_SRC) $(CORE_OBJ) $(wildcard tests/unit/*.hpp)
@@ -118,7 +129,7 @@ $(UNIT_BIN): $(UNIT_SRC) $(CORE_OBJ) $(wildcard tests/unit/*.hpp)
 
 $(API_BIN): $(API_SRC) $(wildcard tests/api/*.h) include/poissondisk.h $(LIB_SO) $(B)/libpoissondisk.so
 	@mkdir -p $(@D)
-	$(CC) $(PDS_CFLAGS) $(CFLAGS) -o $@ $(API_SRC) -L$(B) -lpoissondisk \
+	$(CC) $(PDS_TEST_CFLAGS) $(CFLAGS) -o $@ $(API_SRC) -L$(B) -lpoissondisk \
 	    -Wl,-rpath,'$$ORIGIN/..' $(CHECK_LIBS) -lm
 
 $(B)/examples/%: tests/man_examples/%.c include/poissondisk.h $(LIB_SO) $(B)/libpoissondisk.so
@@ -126,13 +137,13 @@ $(B)/examples/%: tests/man_examples/%.c include/poissondisk.h $(LIB_SO) $(B)/lib
 	$(CC) $(PDS_CFLAGS) $(CFLAGS) -o $@ $< -L$(B) -lpoissondisk -Wl,-rpath,'$$ORIGIN/..' -lm
 
 check-unit: $(UNIT_BIN)
-	./$(UNIT_BIN)
+	$(UNIT_BIN)
 
 check-api: $(API_BIN)
-	./$(API_BIN)
+	$(API_BIN)
 
 check-examples: $(EXAMPLE_BIN)
-	@for e in $(EXAMPLE_BIN); do echo "$$e"; ./$$e > /dev/null || exit 1; done
+	@for e in $(EXAMPLE_BIN); do echo "$$e"; "$$e" > /dev/null || exit 1; done
 
 check-header:
 	@mkdir -p $(B)/tests
@@ -163,27 +174,161 @@ check-pkgconfig: all
 VALGRIND_FLAGS := --error-exitcode=99 --leak-check=full --show-leak-kinds=all \
                   --errors-for-leak-kinds=all --track-origins=yes -q
 check-valgrind: $(UNIT_BIN) $(API_BIN)
-	CK_FORK=no PDS_TEST_LIGHT=1 $(VALGRIND) $(VALGRIND_FLAGS) ./$(UNIT_BIN)
-	CK_FORK=no PDS_TEST_LIGHT=1 $(VALGRIND) $(VALGRIND_FLAGS) ./$(API_BIN)
+	CK_FORK=no PDS_TEST_LIGHT=1 $(VALGRIND) $(VALGRIND_FLAGS) $(UNIT_BIN)
+	CK_FORK=no PDS_TEST_LIGHT=1 $(VALGRIND) $(VALGRIND_FLAGS) $(API_BIN)
 
 abi-baseline: $(LIB_SO)
 	@mkdir -p abi
 	abidw --no-corpus-path --headers-dir include --drop-private-types --exported-interfaces-only $(LIB_SO) > abi/libpoissondisk.abi
 
+# ---- threads and sanitizers ------------------------------------------------------------
+# check-threads: tests/threads/threads.c (public API only): 4 threads, each with its own
+# handle, run a whole script while calling the global functions; every thread's results
+# must equal, byte for byte, those of the same script run alone first.
+THREADS_BIN := $(B)/tests/threads
+$(THREADS_BIN): tests/threads/threads.c include/poissondisk.h $(LIB_SO) $(B)/libpoissondisk.so
+	@mkdir -p $(@D)
+	$(CC) $(PDS_TEST_CFLAGS) $(CFLAGS) -pthread -o $@ $< -L$(B) -lpoissondisk \
+	    -Wl,-rpath,'$$ORIGIN/..' -lm
+
+check-threads: $(THREADS_BIN)
+	$(THREADS_BIN)
+
+# check-sanitizers (not part of 'make check': slow) = check-asan + check-tsan. Each
+# sanitizer has its own copy of the library objects and shared library, in $(B)/asan
+# and $(B)/tsan; the test binaries find theirs through their rpath. Any report fails
+# the run: -fno-sanitize-recover and halt_on_error stop at the first one, and in
+# Check's fork mode a test whose process exits that way counts as an error (a leak
+# too: LeakSanitizer runs as each test's process exits). ASan makes the suites about
+# 4 times slower, so Check's per-test timeouts are stretched (its default 4 s is
+# too tight). About 4 minutes on 2 cores, build included; PDS_TEST_LIGHT=1 in the
+# environment shrinks the heavy loops (about 1 minute).
+ASAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+TSAN_FLAGS := -fsanitize=thread
+ASAN_ENV   := ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+              CK_TIMEOUT_MULTIPLIER=10
+TSAN_ENV   := TSAN_OPTIONS=halt_on_error=1
+ASAN_OBJ   := $(LIB_SRC:src/%.cpp=$(B)/asan/obj/%.o)
+TSAN_OBJ   := $(LIB_SRC:src/%.cpp=$(B)/tsan/obj/%.o)
+SAN_LINK   := -shared -Wl,-soname,$(SONAME) -Wl,--version-script=$(MAPFILE) -Wl,--no-undefined
+
+$(B)/asan/obj/%.o: src/%.cpp include/poissondisk.h Makefile
+	@mkdir -p $(@D)
+	$(CXX) $(PDS_CXXFLAGS) $(CPPFLAGS) $(CXXFLAGS) $(ASAN_FLAGS) $(PDS_DEPFLAGS) -c $< -o $@
+$(B)/tsan/obj/%.o: src/%.cpp include/poissondisk.h Makefile
+	@mkdir -p $(@D)
+	$(CXX) $(PDS_CXXFLAGS) $(CPPFLAGS) $(CXXFLAGS) $(TSAN_FLAGS) $(PDS_DEPFLAGS) -c $< -o $@
+-include $(ASAN_OBJ:.o=.d) $(TSAN_OBJ:.o=.d)
+
+# The shared library and its soname and link-time names, as in $(B).
+$(B)/asan/libpoissondisk.so: $(ASAN_OBJ) $(MAPFILE)
+	$(CXX) $(SAN_LINK) $(ASAN_FLAGS) $(LDFLAGS) -o $(@D)/$(REALNAME) $(ASAN_OBJ) -lm
+	ln -sf $(REALNAME) $(@D)/$(SONAME) && ln -sf $(SONAME) $@
+$(B)/tsan/libpoissondisk.so: $(TSAN_OBJ) $(MAPFILE)
+	$(CXX) $(SAN_LINK) $(TSAN_FLAGS) $(LDFLAGS) -o $(@D)/$(REALNAME) $(TSAN_OBJ) -lm
+	ln -sf $(REALNAME) $(@D)/$(SONAME) && ln -sf $(SONAME) $@
+
+$(B)/asan/tests/unit: $(UNIT_SRC) $(filter-out %/capi.o,$(ASAN_OBJ)) $(wildcard tests/unit/*.hpp)
+	@mkdir -p $(@D)
+	$(CXX) $(PDS_TEST_CXXFLAGS) $(CXXFLAGS) $(ASAN_FLAGS) -o $@ $(UNIT_SRC) \
+	    $(filter-out %/capi.o,$(ASAN_OBJ)) $(CHECK_LIBS)
+$(B)/asan/tests/api: $(API_SRC) $(wildcard tests/api/*.h) include/poissondisk.h $(B)/asan/libpoissondisk.so
+	@mkdir -p $(@D)
+	$(CC) $(PDS_TEST_CFLAGS) $(CFLAGS) $(ASAN_FLAGS) -o $@ $(API_SRC) -L$(B)/asan -lpoissondisk \
+	    -Wl,-rpath,'$$ORIGIN/..' $(CHECK_LIBS) -lm
+$(B)/tsan/tests/threads: tests/threads/threads.c include/poissondisk.h $(B)/tsan/libpoissondisk.so
+	@mkdir -p $(@D)
+	$(CC) $(PDS_TEST_CFLAGS) $(CFLAGS) $(TSAN_FLAGS) -pthread -o $@ $< -L$(B)/tsan -lpoissondisk \
+	    -Wl,-rpath,'$$ORIGIN/..' -lm
+
+check-asan: $(B)/asan/tests/unit $(B)/asan/tests/api
+	$(ASAN_ENV) $(B)/asan/tests/unit
+	$(ASAN_ENV) $(B)/asan/tests/api
+
+check-tsan: $(B)/tsan/tests/threads
+	$(TSAN_ENV) $(B)/tsan/tests/threads
+
+check-sanitizers: deps
+	@$(MAKE) --no-print-directory check-asan
+	@$(MAKE) --no-print-directory check-tsan
+	@echo "make check-sanitizers: all passed"
+
+# ---- fuzzing: clang + libFuzzer ------------------------------------------------------
+# make fuzz runs tests/fuzz/ (see fuzz_api.c) for FUZZ_SECONDS (default 300);
+# check-fuzz, part of make check, is the same rule for 30 s. The library is compiled
+# from src/ straight into the fuzz binary, with the mandatory flags plus ASan, UBSan
+# and coverage, in $(B)/fuzz/obj. libFuzzer writes new inputs into its first corpus
+# directory, so it works on a copy of the seeds in $(B)/fuzz/corpus-work; crashes go
+# to $(B)/fuzz/. The memory limits: see "Bounded work" in tests/fuzz/fuzz_ops.c;
+# allocator_may_return_null makes an allocation the system refuses PDS_ENOMEM.
+FUZZ_CC      ?= clang
+FUZZ_CXX     ?= clang++
+FUZZ_SECONDS ?= 300
+FUZZ_ARGS    ?=
+FUZZ_FLAGS   := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined \
+                -fno-sanitize-recover=undefined
+# Coverage guides the fuzzer through the library too; comparison tracing there would
+# cost a third of the time for nothing (the input reaches the library as doubles).
+FUZZ_LIB_COV := -fsanitize=fuzzer-no-link -fno-sanitize-coverage=trace-cmp
+FUZZ_BIN     := $(B)/fuzz/fuzz_api
+FUZZ_OBJ     := $(LIB_SRC:src/%.cpp=$(B)/fuzz/obj/%.o)
+FUZZ_HOBJ    := $(patsubst tests/fuzz/%.c,$(B)/fuzz/harness/%.o,$(sort $(wildcard tests/fuzz/*.c)))
+# -len_control=0: long call sequences from the start (the deeper states matter more
+# than the speed short inputs would give).
+FUZZ_RUN      = -max_total_time=$(FUZZ_SECONDS) -timeout=10 -max_len=512 -len_control=0 \
+                -rss_limit_mb=4096 -malloc_limit_mb=4096 -print_final_stats=1 \
+                -artifact_prefix=$(B)/fuzz/
+.PHONY: fuzz check-fuzz
+
+$(B)/fuzz/obj/%.o: src/%.cpp include/poissondisk.h Makefile
+	@mkdir -p $(@D)
+	$(FUZZ_CXX) $(PDS_CXXFLAGS) $(FUZZ_FLAGS) $(FUZZ_LIB_COV) $(PDS_DEPFLAGS) -c $< -o $@
+$(B)/fuzz/harness/%.o: tests/fuzz/%.c include/poissondisk.h Makefile
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(PDS_TEST_CFLAGS) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link $(PDS_DEPFLAGS) -c $< -o $@
+-include $(FUZZ_OBJ:.o=.d) $(FUZZ_HOBJ:.o=.d)
+
+$(FUZZ_BIN): $(FUZZ_HOBJ) $(FUZZ_OBJ)
+	$(FUZZ_CXX) $(FUZZ_FLAGS) -fsanitize=fuzzer -o $@ $^ -lm
+
+check-fuzz: FUZZ_SECONDS = 30
+fuzz check-fuzz: $(FUZZ_BIN)
+	@mkdir -p $(B)/fuzz/corpus-work
+	cp tests/fuzz/corpus/* $(B)/fuzz/corpus-work/
+	ASAN_OPTIONS=allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	    $(FUZZ_BIN) $(FUZZ_RUN) $(FUZZ_ARGS) $(B)/fuzz/corpus-work
+
+# ---- allocation failures ---------------------------------------------------------------
+# check-alloc: tests/alloc/ (public API only) replaces malloc and friends in the test
+# program (-rdynamic, so the library and libstdc++ bind to them), fails each allocation
+# of a fixed call sequence in turn and checks PDS_ENOMEM, no leak, and the same final
+# points. Never under Valgrind (it replaces the allocator). PDS_ALLOC_ALL=1: every one.
+ALLOC_BIN := $(B)/tests/alloc_fail
+$(ALLOC_BIN): $(wildcard tests/alloc/*.c tests/alloc/*.h) include/poissondisk.h $(LIB_SO) $(B)/libpoissondisk.so
+	@mkdir -p $(@D)
+	$(CC) $(PDS_TEST_CFLAGS) $(CFLAGS) -rdynamic -o $@ $(wildcard tests/alloc/*.c) -L$(B) \
+	    -lpoissondisk -Wl,-rpath,'$$ORIGIN/..' -lm
+.PHONY: check-alloc
+check-alloc: $(ALLOC_BIN)
+	$(ALLOC_BIN) small
+	$(ALLOC_BIN)
+
 # ---- benchmark -----------------------------------------------------------------------
 # The library against two baselines (Bridson, grid dart throwing) at 10^4..10^7
 # points: a table on stdout, $(B)/bench.csv and $(B)/bench.svg (the paper's
-# figure 7). A few minutes; bench-quick does 10^4 and 10^5 only. BENCH_ARGS adds
+# figure 7). Then the chunked section (bench/chunked.c): one pds_run against
+# pds_run(s, 1) and pds_step loops, same seed, at 10^5 points (--chunked N).
+# A few minutes; bench-quick does 10^4 and 10^5 only. BENCH_ARGS adds
 # options, e.g. BENCH_ARGS='--repeats 5' (see ./build/bench --help).
 BENCH_SRC := $(sort $(wildcard bench/*.c))
 $(B)/bench: $(BENCH_SRC) $(wildcard bench/*.h) include/poissondisk.h $(LIB_A)
 	$(CC) $(PDS_CFLAGS) -O2 $(CFLAGS) -o $@ $(BENCH_SRC) $(LIB_A) -lstdc++ -lm
 
 bench: $(B)/bench
-	./$(B)/bench --csv $(B)/bench.csv --svg $(B)/bench.svg $(BENCH_ARGS)
+	$(B)/bench --csv $(B)/bench.csv --svg $(B)/bench.svg $(BENCH_ARGS)
 
 bench-quick: $(B)/bench
-	./$(B)/bench --csv $(B)/bench-quick.csv --svg $(B)/bench-quick.svg $(BENCH_ARGS) 10000 100000
+	$(B)/bench --csv $(B)/bench-quick.csv --svg $(B)/bench-quick.svg $(BENCH_ARGS) 10000 100000
 
 check-bench: $(B)/bench
 	sh tests/check-bench.sh $(B)/bench

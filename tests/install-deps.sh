@@ -6,6 +6,7 @@
 #   mandoc                    : man page lint
 #   abidiff (abigail-tools)   : ABI comparison with the committed baseline
 #   pkg-config                : install test of poissondisk.pc
+#   clang, libclang-rt-N-dev  : make fuzz / check-fuzz (libFuzzer, ASan, UBSan runtimes)
 set -eu
 
 missing=""
@@ -15,6 +16,23 @@ command -v mandoc >/dev/null 2>&1 || missing="$missing mandoc"
 command -v abidiff >/dev/null 2>&1 || missing="$missing abigail-tools"
 command -v pkg-config >/dev/null 2>&1 || missing="$missing pkg-config"
 command -v python3 >/dev/null 2>&1 || missing="$missing python3"
+# libFuzzer: clang links a trivial fuzz target only when its runtime package (on
+# Debian 12, libclang-rt-14-dev, named after clang's major version) is installed.
+fuzzer_links() {
+    fl_dir=$(mktemp -d "${TMPDIR:-/tmp}/install-deps.XXXXXX") || return 1
+    printf '%s\n' '#include <stddef.h>' '#include <stdint.h>' \
+        'int LLVMFuzzerTestOneInput(const uint8_t *p, size_t n) { (void)p; (void)n; return 0; }' \
+        > "$fl_dir/f.c"
+    clang -fsanitize=fuzzer,address,undefined -o "$fl_dir/f" "$fl_dir/f.c" >/dev/null 2>&1
+    fl_rc=$?
+    rm -rf "$fl_dir"
+    return $fl_rc
+}
+if ! command -v clang >/dev/null 2>&1; then
+    missing="$missing clang libclang-rt-14-dev"
+elif ! fuzzer_links; then
+    missing="$missing libclang-rt-$(clang -dumpversion | cut -d. -f1)-dev"
+fi
 
 [ -z "$missing" ] && exit 0
 

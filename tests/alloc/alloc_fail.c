@@ -1,0 +1,484 @@
+/*
+ * alloc_fail.c - every allocation the library makes may fail (make check-alloc).
+ *
+ * Contract (spec 1.1.1, "Out of memory"): a call that runs out of memory
+ * returns PDS_ENOMEM (pds_free_area: NaN; pds_create: *out NULL), never
+ * aborts, leaves the handle usable, and once allocation works again,
+ * continuing gives the points an undisturbed sequence gives; pds_destroy
+ * frees everything. pds_run may have added points before the failure (the
+ * exact-arithmetic fallback): *added counts them and they are the undisturbed
+ * run's first ones.
+ *
+ * How: interpose.c replaces the allocator and counts the allocations made
+ * inside pds_* calls ("armed"). A fixed sequence of calls is run undisturbed
+ * (K armed allocations, the reference), then once more as the driver: before
+ * each call it forks one child per allocation k of that call, in which the
+ * k-th allocation fails (once) and the rest of the sequence runs with every
+ * check; an abort or a hang in a child is reported, not fatal. A call that
+ * fails is retried at once (pds_run with the rest of its budget).
+ *
+ * "alloc_fail small" tries every k of a ~300-point sequence. The default,
+ * ~7000-point sequence tries every k in calls that make at most 3 * SPAN
+ * allocations; in larger ones (pds_verify's exact arithmetic makes tens of
+ * thousands) the first SPAN, the last SPAN and SPAN spread evenly in
+ * between, so the run stays short. PDS_ALLOC_ALL=1 tries every k (~30 min).
+ *
+ * Plain C against the public header only; not run under Valgrind (it
+ * replaces the allocator). Ends with "alloc-fail: N passed, M failed".
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "interpose.h"
+#include "poissondisk.h"
+
+#define SEED 3
+#define SPAN 100
+
+/* Two sequences of the same shape. "small" (about 300 points, still with a
+ * dart stage and a hand-over) is short enough to try every allocation; the
+ * default one, at the radius of the issue's reproducer, samples its largest
+ * calls (pds_verify) unless PDS_ALLOC_ALL is set. */
+struct config {
+    const char *name;
+    double radius, refined;
+    size_t first_run, second_run;
+    int every_k;
+};
+static const struct config kSmall = {"small", 0.05, 0.035, 100, 50, 1};
+static const struct config kLarge = {"large", 0.01, 0.007, 2000, 500, 0};
+static const struct config *cfg = &kLarge;
+#define RADIUS (cfg->radius)
+#define REFINED (cfg->refined)
+
+/* The sequence: a run that stops in the middle (at 2000 of about 7000
+ * points, still in the dart stage), the queries that triangulate it, a run
+ * to the end, a refine, a bounded and an unbounded run, the queries again. */
+enum call {
+    CREATE, RUN_2000, FREE_AREA_1, VERIFY_1, RUN_END_1, REFINE, RUN_500, RUN_END_2,
+    POINTS, VERIFY_2, FREE_AREA_2, DESTROY, N_CALLS
+};
+
+/* What the undisturbed sequence gave, per call. */
+struct reference {
+    int rc[N_CALLS];
+    double value[N_CALLS];  /* pds_free_area, the radius after pds_refine */
+    size_t count[N_CALLS];  /* pds_count after the call */
+    long allocs[N_CALLS];   /* armed allocations up to the end of the call */
+    const char *name[N_CALLS];
+    double *xy;             /* the final points */
+    size_t n;
+};
+
+struct trial {
+    const struct reference *ref; /* NULL: the first undisturbed run, which records */
+    struct reference *record;
+    int call;   /* index of the current call in the sequence */
+    int errors; /* failed checks */
+    int enomem; /* calls that reported running out of memory */
+};
+
+#ifdef __GNUC__
+__attribute__((format(printf, 3, 4)))
+#endif
+static void error_at(struct trial *t, const char *what, const char *fmt, ...)
+{
+    va_list args;
+    if (t->errors++ >= 5)
+        return;
+    printf("  call %d, %s: ", t->call, what);
+    va_start(args, fmt);
+    vprintf(fmt, args);
+    va_end(args);
+    printf("\n");
+}
+
+/* After a call reported running out of memory: the failure must be the
+ * injected one, during this call; the message names the function. */
+static void check_injected(struct trial *t, long injected_before, pds_sampler *s,
+                           const char *what)
+{
+    t->enomem++;
+    if (alloc_failures() == injected_before)
+        error_at(t, what, "out of memory, though no allocation failed");
+    if (s != NULL && strncmp(pds_errmsg(s), what, strlen(what)) != 0)
+        error_at(t, what, "the message \"%s\" does not name %s", pds_errmsg(s), what);
+}
+
+/* The sampler's points are the first pds_count(s) of the reference's. */
+static void check_prefix(struct trial *t, pds_sampler *s, const char *what)
+{
+    size_t n = pds_count(s), i;
+    double *xy;
+    if (t->ref == NULL)
+        return;
+    if (n > t->ref->n) {
+        error_at(t, what, "%zu points, more than the undisturbed %zu", n, t->ref->n);
+        return;
+    }
+    xy = malloc((2 * n + 2) * sizeof *xy);
+    if (xy == NULL || pds_points(s, 0, n, xy) != n) {
+        error_at(t, what, "cannot copy the points");
+    } else {
+        for (i = 0; i < n; i++)
+            if (memcmp(xy + 2 * i, t->ref->xy + 2 * i, 2 * sizeof *xy) != 0)
+                break;
+        if (i < n)
+            error_at(t, what, "point %zu of %zu is not the undisturbed run's", i, n);
+    }
+    free(xy);
+}
+
+/* Records (undisturbed) or compares (trial) a call's outcome. */
+static void outcome(struct trial *t, pds_sampler *s, int rc, double value, const char *what)
+{
+    if (t->ref == NULL) {
+        t->record->rc[t->call] = rc;
+        t->record->value[t->call] = value;
+        t->record->count[t->call] = pds_count(s);
+        t->record->allocs[t->call] = alloc_armed_count();
+        t->record->name[t->call] = what;
+    } else {
+        if (rc != t->ref->rc[t->call])
+            error_at(t, what, "returned %d, undisturbed %d", rc, t->ref->rc[t->call]);
+        if (memcmp(&value, &t->ref->value[t->call], sizeof value) != 0)
+            error_at(t, what, "gave %.17g, undisturbed %.17g", value, t->ref->value[t->call]);
+        if (pds_count(s) != t->ref->count[t->call])
+            error_at(t, what, "count %zu, undisturbed %zu", pds_count(s), t->ref->count[t->call]);
+    }
+    t->call++;
+}
+
+static pds_sampler *do_create(struct trial *t)
+{
+    pds_sampler *s = (pds_sampler *)&s; /* not NULL: a failure must reset it */
+    long injected = alloc_failures();
+    int rc;
+    alloc_arm();
+    rc = pds_create(&s, RADIUS, SEED);
+    alloc_disarm();
+    if (rc == PDS_ENOMEM) {
+        check_injected(t, injected, NULL, "pds_create");
+        if (s != NULL)
+            error_at(t, "pds_create", "PDS_ENOMEM but *out is not NULL");
+        alloc_arm();
+        rc = pds_create(&s, RADIUS, SEED);
+        alloc_disarm();
+    }
+    if (rc != 0 || s == NULL) {
+        error_at(t, "pds_create", "returned %d", rc);
+        return NULL;
+    }
+    outcome(t, s, rc, 0.0, "pds_create");
+    return s;
+}
+
+static void do_run(struct trial *t, pds_sampler *s, size_t max_new)
+{
+    size_t before = pds_count(s), added = 777, more = 0;
+    long injected = alloc_failures();
+    int rc;
+    alloc_arm();
+    rc = pds_run(s, max_new, &added);
+    alloc_disarm();
+    if (rc == PDS_ENOMEM) {
+        check_injected(t, injected, s, "pds_run");
+        if (pds_count(s) != before + added || (max_new != 0 && added > max_new))
+            error_at(t, "pds_run", "PDS_ENOMEM with %zu reported added, but the count went "
+                     "from %zu to %zu", added, before, pds_count(s));
+        check_prefix(t, s, "pds_run after PDS_ENOMEM");
+        /* Allowed only for the rare exact-arithmetic fallback: shown, not judged. */
+        if (added > 0)
+            printf("  note: allocation %ld failing: pds_run returned PDS_ENOMEM after adding "
+                   "%zu points\n", alloc_fail_planned(), added);
+        /* Again with the rest of the budget. When a bounded run had added all
+         * its points and failed only on the "room left?" decision, nothing is
+         * left to do, and its answer is unknown: take the undisturbed one. */
+        if (max_new == 0 || added < max_new) {
+            alloc_arm();
+            rc = pds_run(s, max_new == 0 ? 0 : max_new - added, &more);
+            alloc_disarm();
+        } else if (t->ref != NULL) {
+            rc = t->ref->rc[t->call];
+        }
+    }
+    if (rc < 0)
+        error_at(t, "pds_run", "returned %d (%s)", rc, pds_errmsg(s));
+    outcome(t, s, rc, 0.0, max_new == 0 ? "pds_run(s, 0)" : "pds_run(s, max_new)");
+}
+
+static void do_free_area(struct trial *t, pds_sampler *s)
+{
+    long injected = alloc_failures();
+    double area;
+    alloc_arm();
+    area = pds_free_area(s);
+    alloc_disarm();
+    if (isnan(area)) {
+        check_injected(t, injected, NULL, "pds_free_area");
+        alloc_arm();
+        area = pds_free_area(s);
+        alloc_disarm();
+    }
+    outcome(t, s, 0, area, "pds_free_area");
+}
+
+static void do_verify(struct trial *t, pds_sampler *s)
+{
+    size_t before = pds_count(s);
+    long injected = alloc_failures();
+    int rc;
+    alloc_arm();
+    rc = pds_verify(s);
+    alloc_disarm();
+    if (rc == PDS_ENOMEM) {
+        check_injected(t, injected, s, "pds_verify");
+        if (pds_count(s) != before)
+            error_at(t, "pds_verify", "count changed from %zu to %zu", before, pds_count(s));
+        alloc_arm();
+        rc = pds_verify(s);
+        alloc_disarm();
+    }
+    outcome(t, s, rc, 0.0, "pds_verify");
+}
+
+static void do_refine(struct trial *t, pds_sampler *s, double r)
+{
+    size_t before = pds_count(s);
+    double radius = pds_radius(s);
+    long injected = alloc_failures();
+    int rc;
+    alloc_arm();
+    rc = pds_refine(s, r);
+    alloc_disarm();
+    if (rc == PDS_ENOMEM) {
+        check_injected(t, injected, s, "pds_refine");
+        if (pds_count(s) != before || pds_radius(s) != radius)
+            error_at(t, "pds_refine", "PDS_ENOMEM, yet the count went from %zu to %zu, the "
+                     "radius from %g to %g", before, pds_count(s), radius, pds_radius(s));
+        check_prefix(t, s, "pds_refine after PDS_ENOMEM");
+        alloc_arm();
+        rc = pds_refine(s, r);
+        alloc_disarm();
+    }
+    outcome(t, s, rc, pds_radius(s), "pds_refine");
+}
+
+/* Copies the final points: into the record, or compared with the reference. */
+static void do_points(struct trial *t, pds_sampler *s)
+{
+    size_t n = pds_count(s), got;
+    double *xy = malloc((2 * n + 2) * sizeof *xy);
+    if (xy == NULL) {
+        error_at(t, "pds_points", "no memory for the test's copy of %zu points", n);
+        return;
+    }
+    alloc_arm();
+    got = pds_points(s, 0, n, xy);
+    alloc_disarm();
+    if (got != n)
+        error_at(t, "pds_points", "copied %zu of %zu points", got, n);
+    outcome(t, s, 0, 0.0, "pds_points");
+    if (t->ref == NULL) {
+        t->record->xy = xy;
+        t->record->n = n;
+        return;
+    }
+    if (n != t->ref->n || memcmp(xy, t->ref->xy, 2 * n * sizeof *xy) != 0)
+        error_at(t, "pds_points", "the final points differ from the undisturbed run's (%zu vs "
+                 "%zu points)", n, t->ref->n);
+    free(xy);
+}
+
+/* Call c of the sequence on *s (made by CREATE, released by DESTROY). */
+static void do_call(struct trial *t, pds_sampler **s, int c)
+{
+    switch ((enum call)c) {
+    case CREATE: *s = do_create(t); break;
+    case RUN_2000: do_run(t, *s, cfg->first_run); break;
+    case RUN_500: do_run(t, *s, cfg->second_run); break;
+    case RUN_END_1:
+    case RUN_END_2: do_run(t, *s, 0); break;
+    case FREE_AREA_1:
+    case FREE_AREA_2: do_free_area(t, *s); break;
+    case VERIFY_1:
+    case VERIFY_2: do_verify(t, *s); break;
+    case REFINE: do_refine(t, *s, REFINED); break;
+    case POINTS: do_points(t, *s); break;
+    case DESTROY:
+        alloc_arm();
+        pds_destroy(*s);
+        alloc_disarm();
+        *s = NULL;
+        if (t->ref == NULL) {
+            t->record->allocs[c] = alloc_armed_count();
+            t->record->name[c] = "pds_destroy";
+        }
+        if (alloc_live() < 0)
+            error_at(t, "pds_destroy", "too many live blocks to track");
+        else if (alloc_live() != 0)
+            error_at(t, "pds_destroy", "%ld blocks allocated inside pds_* calls are still live "
+                     "(a leak)", alloc_live());
+        t->call++;
+        break;
+    case N_CALLS: break;
+    }
+}
+
+/* Calls first .. the end; stops early if the sampler could not be made. */
+static void run_from(struct trial *t, pds_sampler **s, int first)
+{
+    int c;
+    t->call = first;
+    for (c = first; c < N_CALLS; c++) {
+        if (c > CREATE && *s == NULL)
+            return;
+        do_call(t, s, c);
+    }
+}
+
+/* ---- driver ---------------------------------------------------------------------- */
+
+/* In a child: allocation k fails, then calls first .. the end run on a copy
+ * of the driver's state. Returns 0 when every check passed; *enomem receives
+ * how many calls reported running out of memory. */
+static int trial_in_child(const struct reference *ref, pds_sampler *s, int first, long k,
+                          int *enomem)
+{
+    int fds[2], status = 0, report[2] = {1, 0};
+    pid_t pid;
+    fflush(NULL); /* or the child would print our buffered output again */
+    if (pipe(fds) != 0)
+        return 1;
+    pid = fork();
+    if (pid < 0)
+        return 1;
+    if (pid == 0) {
+        struct trial t;
+        close(fds[0]);
+        memset(&t, 0, sizeof t);
+        t.ref = ref;
+        alarm(60); /* a hang fails instead of blocking */
+        alloc_fail_at(k);
+        run_from(&t, &s, first);
+        if (alloc_failures() != 1)
+            error_at(&t, "the sequence", "allocation %ld was never made (%ld in all)", k,
+                     alloc_armed_count());
+        report[0] = t.errors;
+        report[1] = t.enomem;
+        fflush(stdout);
+        _exit(write(fds[1], report, sizeof report) == (ssize_t)sizeof report ? 0 : 1);
+    }
+    close(fds[1]);
+    if (read(fds[0], report, sizeof report) != (ssize_t)sizeof report)
+        report[0] = -1;
+    close(fds[0]);
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        continue;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || report[0] < 0) {
+        printf("  allocation %ld: the child died (status 0x%x%s)\n", k, (unsigned)status,
+               WIFSIGNALED(status) && WTERMSIG(status) == SIGABRT ? ", aborted" : "");
+        return 1;
+    }
+    *enomem = report[1];
+    return report[0] != 0;
+}
+
+/* The j-th allocation to try among the m of a call (0 <= j < tries(m)). */
+static long tries(long m, int all)
+{
+    return all || m <= 3 * SPAN ? m : 3 * SPAN;
+}
+
+static long nth_try(long m, long j, int all)
+{
+    if (all || m <= 3 * SPAN || j < SPAN)
+        return j + 1;
+    if (j >= 2 * SPAN)
+        return m - (3 * SPAN - j) + 1;
+    return SPAN + 1 + (j - SPAN + 1) * (m - 2 * SPAN) / (SPAN + 1);
+}
+
+int main(int argc, char **argv)
+{
+    static struct reference ref;
+    struct trial t;
+    pds_sampler *s = NULL;
+    const char *env = getenv("PDS_ALLOC_ALL");
+    int all;
+    long K, tried = 0;
+    int c, passed = 0, failed = 0, with_enomem = 0;
+
+    if (argc > 1 && strcmp(argv[1], "small") == 0)
+        cfg = &kSmall;
+    else if (argc > 1) {
+        printf("usage: alloc_fail [small]\n");
+        return 2;
+    }
+    all = cfg->every_k || (env != NULL && env[0] != '\0' && strcmp(env, "0") != 0);
+    printf("alloc-fail: sequence \"%s\": R = %g, refined to %g\n", cfg->name, cfg->radius, cfg->refined);
+
+    /* The reference, once undisturbed; this also warms up whatever libstdc++
+     * allocates once. */
+    memset(&t, 0, sizeof t);
+    t.record = &ref;
+    alloc_reset();
+    run_from(&t, &s, CREATE);
+    K = alloc_armed_count();
+    if (t.errors != 0 || ref.xy == NULL) {
+        printf("alloc-fail: the undisturbed sequence failed\n");
+        return 1;
+    }
+    printf("alloc-fail: the sequence (%zu points) makes K = %ld armed allocations:", ref.n, K);
+    for (c = 0; c < N_CALLS; c++)
+        printf(" %s %ld%s", ref.name[c], ref.allocs[c] - (c > 0 ? ref.allocs[c - 1] : 0),
+               c + 1 < N_CALLS ? "," : "\n");
+
+    /* The driver: the same sequence again, undisturbed and checked against
+     * the reference, forking the trials of each call before making it. */
+    memset(&t, 0, sizeof t);
+    t.ref = &ref;
+    alloc_reset();
+    for (c = 0; c < N_CALLS; c++) {
+        const long first = c > 0 ? ref.allocs[c - 1] : 0, m = ref.allocs[c] - first;
+        long j;
+        for (j = 0; j < tries(m, all); j++) {
+            const long k = first + nth_try(m, j, all);
+            int enomem = 0;
+            if (trial_in_child(&ref, s, c, k, &enomem) != 0) {
+                printf("FAIL: allocation %ld of %ld (in %s) failing\n", k, K, ref.name[c]);
+                failed++;
+            } else {
+                passed++;
+            }
+            with_enomem += enomem > 0;
+            tried++;
+        }
+        do_call(&t, &s, c);
+        if (alloc_armed_count() != ref.allocs[c])
+            error_at(&t, ref.name[c], "%ld allocations so far, the first time %ld",
+                     alloc_armed_count(), ref.allocs[c]);
+    }
+    if (t.errors != 0) {
+        printf("FAIL: the undisturbed sequence, a second time, differs from the first\n");
+        failed++;
+    } else {
+        passed++;
+    }
+    printf("alloc-fail: tried %ld of the %ld allocations%s; %d surfaced as PDS_ENOMEM (or NaN)\n",
+           tried, K, all ? "" : " (PDS_ALLOC_ALL=1: every one)", with_enomem);
+    printf("alloc-fail: %d passed, %d failed\n", passed, failed);
+    free(ref.xy);
+    return failed == 0 ? 0 : 1;
+}

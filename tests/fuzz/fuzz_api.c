@@ -1,0 +1,115 @@
+/*
+ * fuzz_api.c - libFuzzer harness for the public API (C99, sees only the header).
+ *
+ *   make fuzz                      fuzz for FUZZ_SECONDS (default 300)
+ *   make check-fuzz                the same for 30 s (part of make check)
+ *   $(B)/fuzz/fuzz_api CRASH_FILE  replay one input (crashes land in $(B)/fuzz/)
+ *
+ * The seeds are tests/fuzz/corpus/ (made by make_corpus.py); make fuzz works on
+ * a copy in $(B)/fuzz/corpus-work, so the repository never gains new files.
+ *
+ * Input: the first bytes make a sampler (pds_create with a decoded radius and
+ * seed); then each byte names an operation (low 4 bits) with a small parameter
+ * (high 4 bits), and the operation reads its own arguments (fuzz_decode.c).
+ * Past the end every read gives zeros; at most 64 operations.
+ *
+ * Checked after every call (fuzz_check.c): the code is one the header allows
+ * for that call in that situation; pds_strerror and pds_errmsg are sane; a
+ * failed call leaves count, radius and points as they were; points never move
+ * once returned and lie inside the closed domain. After "maximal": every pair
+ * at least R apart, pds_verify 0, pds_free_area 0, nothing more can be added.
+ * Any violation calls abort(), which libFuzzer reports with the input.
+ *
+ * Bounded work (an input must run in milliseconds): calls that add points
+ * follow the policy in fuzz_ops.c; the reads asked for by operations
+ * (pds_verify, pds_free_area, the pair check) share a budget of FZ_READS point
+ * visits per input, while the checks after "maximal" and at the end always
+ * run. Under ASan and libFuzzer's tracing a maximal pattern costs some 20 us
+ * per point (pds_verify on a 1e6:1 strip about ten times that).
+ *
+ * PDS_FUZZ_TRACE=1 in the environment prints each operation (for replays).
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fuzz.h"
+
+#define FZ_READS 20000 /* points the O(n) reads (verify, free area, check) may visit */
+#define FZ_MAX_OPS 64
+
+static int tracing = -1;
+
+static void trace(const fz_state *st, const char *what)
+{
+    if (tracing < 0) tracing = getenv("PDS_FUZZ_TRACE") != NULL;
+    if (tracing)
+        fprintf(stderr, "fuzz: %-14s count %zu R %.17g domain [%.17g,%.17g]x[%.17g,%.17g] "
+                "bound %.3g%s\n", what, st->count, st->radius, st->dom[0], st->dom[2],
+                st->dom[1], st->dom[3], fz_count_bound(st), st->s ? "" : " (no sampler)");
+}
+
+/* Whether an O(n) read fits the input's read budget (and spend it). */
+static int afford_read(fz_state *st, size_t *reads)
+{
+    const size_t cost = st->count + 1;
+    if (cost > *reads) return 0;
+    *reads -= cost;
+    return 1;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fz_reader r;
+    fz_state st;
+    int ops;
+    size_t reads = FZ_READS;
+
+    r.p = data;
+    r.n = size;
+    memset(&st, 0, sizeof st);
+    st.budget = FZ_BUDGET;
+    fz_reset(&st, NULL, 1.0);
+    fz_op_create(&st, &r, 0);
+    for (ops = 0; ops < FZ_MAX_OPS && r.n > 0; ops++) {
+        const unsigned b = fz_u8(&r), arg = b >> 4;
+        static const char *const names[16] = {
+            "create", "set_domain", "step", "run", "refine", "points", "verify", "free_area",
+            "nulls", "strerror", "destroy", "run_to_end", "run_chunks", "create_bad",
+            "version", "check"};
+        trace(&st, names[b & 15]);
+        switch (b & 15) {
+            case 0: fz_op_create(&st, &r, arg); break;
+            case 1: fz_op_domain(&st, &r); break;
+            case 2: fz_op_step(&st, arg); break;
+            case 3: fz_op_run(&st, &r, arg); break;
+            case 4: fz_op_refine(&st, &r); break;
+            case 5: fz_op_points(&st, &r, arg); break;
+            case 6: /* a maximal pattern already verified would only repeat itself */
+                if (!st.checked && afford_read(&st, &reads)) fz_op_verify(&st);
+                break;
+            case 7: if (afford_read(&st, &reads)) fz_check_free_area(&st); break;
+            case 8: fz_op_nulls(&st); break;
+            case 9: fz_op_strerror(&st, &r); break;
+            case 10: pds_destroy(st.s); fz_reset(&st, NULL, 1.0); break;
+            case 11: fz_op_run_to_end(&st, arg); break;
+            case 12: fz_op_run_chunks(&st, arg); break;
+            case 13: fz_op_create_bad(&st, &r); break;
+            case 14: fz_op_version(); break;
+            default:
+                fz_sync(&st);
+                if (afford_read(&st, &reads)) fz_check_pattern(&st);
+                break;
+        }
+    }
+    trace(&st, "end");
+    /* Whatever the sequence left: a Poisson-disk set inside the domain. */
+    fz_sync(&st);
+    fz_check_pattern(&st);
+    pds_destroy(st.s);
+    free(st.pts);
+    free(st.tmp);
+    return 0;
+}

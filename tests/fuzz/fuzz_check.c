@@ -1,0 +1,223 @@
+/*
+ * fuzz_check.c - the contract checks of the fuzz harness (see fuzz.h).
+ *
+ * Distances are checked in the user's coordinates as (dx/R)^2 + (dy/R)^2 >= 1
+ * with a 1e-12 relative tolerance: the library decides exactly, the quotients
+ * here round, and a real bug (a pair at 0.98 R) is far outside the tolerance.
+ * Dividing by R first keeps the squares finite for coordinates near 1e300.
+ */
+#include "fuzz.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void fz_fail(const char *file, int line, const char *fmt, ...)
+{
+    va_list args;
+    fprintf(stderr, "\nfuzz contract violation at %s:%d: ", file, line);
+    va_start(args, fmt);
+    vfprintf(stderr, fmt, args);
+    va_end(args);
+    fputc('\n', stderr);
+    abort();
+}
+
+void fz_codes(fz_state *st, const char *fn, int rc, unsigned allowed)
+{
+    static int tracing = -1;
+    const char *text = pds_strerror(rc);
+    if (tracing < 0) tracing = getenv("PDS_FUZZ_TRACE") != NULL;
+    if (tracing) fprintf(stderr, "fuzz:   %s -> %d\n", fn, rc);
+    FZ_CHECK(rc != PDS_EINTERNAL, "%s: PDS_EINTERNAL: %s", fn, st->s ? pds_errmsg(st->s) : "");
+    FZ_CHECK(rc >= -5 && rc <= 1 && (allowed & FZ_BIT(rc)), "%s returned %d (%s), not a code "
+             "the contract allows here%s%s", fn, rc, text ? text : "(null)",
+             st->s ? ": " : "", st->s ? pds_errmsg(st->s) : "");
+    FZ_CHECK(text != NULL && text[0] != '\0', "pds_strerror(%d) is empty", rc);
+    if (st->s != NULL) {
+        const char *msg = pds_errmsg(st->s);
+        FZ_CHECK(msg != NULL && msg[0] != '\0', "pds_errmsg after %s is empty", fn);
+        if (rc < 0)
+            FZ_CHECK(strncmp(msg, fn, strlen(fn)) == 0, "%s failed (%d) but pds_errmsg says "
+                     "\"%s\"", fn, rc, msg);
+        else
+            FZ_CHECK(strcmp(msg, st->msg) == 0, "%s succeeded (%d) but pds_errmsg changed "
+                     "from \"%s\" to \"%s\"", fn, rc, st->msg, msg);
+        strncpy(st->msg, msg, sizeof st->msg - 1);
+        st->msg[sizeof st->msg - 1] = '\0';
+    }
+}
+
+static void grow(fz_state *st, size_t n)
+{
+    size_t cap = st->cap ? st->cap : 64;
+    while (cap < n) cap *= 2;
+    if (cap == st->cap) return;
+    st->pts = realloc(st->pts, 2 * cap * sizeof(double));
+    st->tmp = realloc(st->tmp, 2 * cap * sizeof(double));
+    FZ_CHECK(st->pts != NULL && st->tmp != NULL, "harness out of memory (%zu points)", n);
+    st->cap = cap;
+}
+
+static int inside(const double dom[4], double x, double y)
+{
+    return dom[0] <= x && x <= dom[2] && dom[1] <= y && y <= dom[3];
+}
+
+void fz_sync(fz_state *st)
+{
+    size_t n, got, i;
+    double *t;
+    double r;
+
+    if (st->s == NULL) return;
+    n = pds_count(st->s);
+    r = pds_radius(st->s);
+    FZ_CHECK(n == st->count, "pds_count is %zu, expected %zu", n, st->count);
+    FZ_CHECK(memcmp(&r, &st->radius, sizeof r) == 0, "pds_radius is %.17g, expected %.17g", r,
+             st->radius);
+    if (n == 0) return;
+    grow(st, n);
+    got = pds_points(st->s, 0, n, st->tmp);
+    FZ_CHECK(got == n, "pds_points(0, %zu) copied %zu", n, got);
+    /* The count never shrinks (checked above); nothing read before may move. */
+    for (i = 0; i < 2 * st->seen; i++)
+        FZ_CHECK(memcmp(&st->tmp[i], &st->pts[i], sizeof(double)) == 0, "point %zu changed "
+                 "from %.17g to %.17g (coordinate %zu)", i / 2, st->pts[i], st->tmp[i], i % 2);
+    for (i = 0; i < n; i++) {
+        const double x = st->tmp[2 * i], y = st->tmp[2 * i + 1];
+        FZ_CHECK(isfinite(x) && isfinite(y), "point %zu is (%g, %g)", i, x, y);
+        FZ_CHECK(inside(st->dom, x, y), "point %zu (%.17g, %.17g) outside [%.17g,%.17g]x"
+                 "[%.17g,%.17g]", i, x, y, st->dom[0], st->dom[2], st->dom[1], st->dom[3]);
+    }
+    t = st->pts;
+    st->pts = st->tmp;
+    st->tmp = t;
+    st->seen = n;
+}
+
+typedef struct {
+    double key, x, y;
+} swept;
+
+static int by_key(const void *a, const void *b)
+{
+    const double ka = ((const swept *)a)->key, kb = ((const swept *)b)->key;
+    return (ka > kb) - (ka < kb);
+}
+
+void fz_check_pattern(const fz_state *st)
+{
+    const size_t n = st->seen;
+    const double r = st->radius;
+    /* Sweep along the long side: few points lie in a window R wide across it. */
+    const int along_x = (st->dom[2] - st->dom[0]) >= (st->dom[3] - st->dom[1]);
+    swept *p;
+    size_t i, j;
+
+    if (n < 2) return;
+    p = malloc(n * sizeof *p);
+    FZ_CHECK(p != NULL, "harness out of memory (%zu points)", n);
+    for (i = 0; i < n; i++) {
+        p[i].x = st->pts[2 * i];
+        p[i].y = st->pts[2 * i + 1];
+        p[i].key = along_x ? p[i].x : p[i].y;
+        FZ_CHECK(inside(st->dom, p[i].x, p[i].y), "point %zu outside the domain", i);
+    }
+    qsort(p, n, sizeof *p, by_key);
+    for (i = 0; i < n; i++) {
+        for (j = i + 1; j < n; j++) {
+            const double u = (p[j].x - p[i].x) / r, v = (p[j].y - p[i].y) / r;
+            const double along = along_x ? u : v;
+            if (along > 1.0) break; /* this pair and every later one are >= R apart */
+            FZ_CHECK(u * u + v * v >= 1.0 - 1e-12, "points (%.17g, %.17g) and (%.17g, %.17g) "
+                     "are %.17g R apart (R = %.17g, %zu points)", p[i].x, p[i].y, p[j].x,
+                     p[j].y, sqrt(u * u + v * v), r, n);
+        }
+    }
+    free(p);
+}
+
+static double domain_area(const fz_state *st)
+{
+    return (st->dom[2] - st->dom[0]) * (st->dom[3] - st->dom[1]);
+}
+
+void fz_check_free_area(fz_state *st)
+{
+    const double a = pds_free_area(st->s), area = domain_area(st);
+
+    if (st->s == NULL) {
+        FZ_CHECK(isnan(a), "pds_free_area(NULL) is %g, not NaN", a);
+        return;
+    }
+    FZ_CHECK(!isnan(a) && a >= 0.0, "pds_free_area is %g", a);
+    if (st->maximal) FZ_CHECK(a == 0.0, "pds_free_area is %g on a maximal pattern", a);
+    if (isfinite(area) && area > 1e-290) {
+        if (st->count == 0)
+            FZ_CHECK(fabs(a - area) <= 1e-9 * area, "pds_free_area is %.17g before the first "
+                     "point, the domain's area is %.17g", a, area);
+        else
+            FZ_CHECK(a <= area * (1.0 + 1e-9), "pds_free_area %.17g exceeds the domain's area "
+                     "%.17g", a, area);
+    }
+}
+
+void fz_check_maximal(fz_state *st)
+{
+    size_t added = 1;
+    int rc;
+
+    if (st->checked) return;
+    rc = pds_verify(st->s);
+    fz_codes(st, "pds_verify", rc, FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM));
+    FZ_CHECK(rc == 0 || rc == PDS_ENOMEM, "pds_verify is %d on a pattern reported maximal", rc);
+    fz_check_free_area(st);
+    rc = pds_step(st->s);
+    fz_codes(st, "pds_step", rc, FZ_OK | FZ_BIT(PDS_ENOMEM));
+    rc = pds_run(st->s, (size_t)st->count % 3, &added); /* 0 (no limit), 1 or 2 */
+    fz_codes(st, "pds_run", rc, FZ_OK | FZ_BIT(PDS_ENOMEM));
+    FZ_CHECK(added == 0, "pds_run added %zu points to a maximal pattern", added);
+    fz_sync(st);
+    fz_check_pattern(st);
+    st->checked = 1;
+}
+
+void fz_reset(fz_state *st, pds_sampler *s, double radius)
+{
+    const char *msg;
+    st->s = s;
+    st->dom[0] = st->dom[1] = 0.0;
+    st->dom[2] = st->dom[3] = 1.0;
+    st->radius = radius;
+    st->count = st->seen = 0;
+    st->maximal = st->checked = 0;
+    msg = s ? pds_errmsg(s) : "";
+    FZ_CHECK(s == NULL || strcmp(msg, "no error") == 0, "a new sampler's pds_errmsg is \"%s\"",
+             msg);
+    strncpy(st->msg, msg, sizeof st->msg - 1);
+    st->msg[sizeof st->msg - 1] = '\0';
+}
+
+double fz_count_bound(const fz_state *st)
+{
+    /* Overflow gives inf (a huge bound), never NaN: the domain is non-empty. */
+    const double w = (st->dom[2] - st->dom[0]) / st->radius;
+    const double h = (st->dom[3] - st->dom[1]) / st->radius;
+    return 1.1547005383792515 * w * h + (w + h) + 1.0;
+}
+
+int fz_precision_ok(const fz_state *st, double radius)
+{
+    double m = 0.0;
+    int i;
+    for (i = 0; i < 4; i++)
+        if (fabs(st->dom[i]) > m) m = fabs(st->dom[i]);
+    /* A nonzero coordinate far below the largest would underflow when the
+     * library scales the domain (found by this harness): refused since 1.1.1. */
+    for (i = 0; i < 4; i++)
+        if (st->dom[i] != 0.0 && fabs(st->dom[i]) < 0x1p-890 * m) return 0;
+    return m >= 0x1p-890 && radius >= 0x1p-24 * m;
+}
