@@ -5,9 +5,12 @@
 #
 # Each check runs the program, then judges its exit status, stdout and stderr
 # with standard tools (awk, cmp, grep). Geometric facts (distances, bounds,
-# point counts) are recomputed here from the printed numbers rather than
-# taken from the program's own report. Ends with "check-cli: N passed, M failed"
-# and a non-zero status if anything failed.
+# point counts) are recomputed from the printed numbers (pattern_checks.sh)
+# rather than taken from the program's own report. Run from the top of the
+# tree, it also compares --version with include/poissondisk.h and the options
+# with man/poissondisk.1. Checks marked "[core 1.1.1]" need the library
+# behaviour of 1.1.1 (see the section "tiny radii"). Ends with
+# "check-cli: N passed, M failed" and a non-zero status if anything failed.
 
 set -u
 
@@ -27,64 +30,12 @@ run() {
 
 lines() { wc -l < "$1" | tr -d ' '; }
 
-# Every line is exactly two decimal floating-point numbers.
-two_numbers() {
-    awk 'BEGIN { num = "^-?[0-9]+(\\.[0-9]+)?([eE][-+]?[0-9]+)?$"; bad = 0 }
-         NF != 2 || $1 !~ num || $2 !~ num { bad = 1; exit }
-         END { exit bad }' "$1"
-}
+# The geometric checks: two_numbers, inside, min_dist_ok, covered, min_dist_grid,
+# covered_grid.
+. "$(dirname "$0")/pattern_checks.sh"
 
-# inside FILE X0 Y0 X1 Y1: every point lies in the closed rectangle.
-inside() {
-    awk -v x0="$2" -v y0="$3" -v x1="$4" -v y1="$5" '
-        $1 < x0 + 0 || $1 > x1 + 0 || $2 < y0 + 0 || $2 > y1 + 0 { bad = 1; exit }
-        END { exit bad }' "$1"
-}
-
-# min_dist_ok FILE R: brute force over all pairs, every pair at least R apart.
-# The tolerance only absorbs awk's rounding when printing/reading; a pair
-# genuinely closer than R by more than 1e-12 relative fails.
-min_dist_ok() {
-    awk -v r="$2" '
-        { x[NR] = $1; y[NR] = $2 }
-        END {
-            r2 = r * r * (1 - 1e-12)
-            for (i = 1; i <= NR; i++)
-                for (j = i + 1; j <= NR; j++) {
-                    dx = x[i] - x[j]; dy = y[i] - y[j]
-                    if (dx * dx + dy * dy < r2) {
-                        printf "points %d and %d closer than %s\n", i, j, r > "/dev/stderr"
-                        exit 1
-                    }
-                }
-        }' "$1"
-}
-
-# covered FILE R X0 Y0 X1 Y1 STEP: every probe of a STEP grid over the
-# rectangle is within R of some point (a necessary condition for maximality,
-# checked independently of the library).
-covered() {
-    awk -v r="$2" -v x0="$3" -v y0="$4" -v x1="$5" -v y1="$6" -v h="$7" '
-        { x[NR] = $1; y[NR] = $2 }
-        END {
-            r2 = r * r
-            nx = int((x1 - x0) / h + 0.5); ny = int((y1 - y0) / h + 0.5)
-            for (a = 0; a <= nx; a++)
-                for (b = 0; b <= ny; b++) {
-                    px = x0 + (x1 - x0) * a / nx; py = y0 + (y1 - y0) * b / ny
-                    hit = 0
-                    for (i = 1; i <= NR && !hit; i++) {
-                        dx = x[i] - px; dy = y[i] - py
-                        if (dx * dx + dy * dy <= r2) hit = 1
-                    }
-                    if (!hit) {
-                        printf "probe (%g, %g) is farther than %s from every point\n",
-                               px, py, r > "/dev/stderr"
-                        exit 1
-                    }
-                }
-        }' "$1"
-}
+# No line of stdout is a point: --help and --version must not sample.
+no_points() { ! grep -Eq '^-?[0-9][0-9.eE+-]* -?[0-9][0-9.eE+-]*$' "$1"; }
 
 # between N LO HI (integers)
 between() { [ "$1" -ge "$2" ] && [ "$1" -le "$3" ]; }
@@ -100,6 +51,73 @@ expect "--version exits 0 (got $rc)" [ "$rc" -eq 0 ]
 expect "--version prints 'poissondisk MAJOR.MINOR.PATCH'" \
     grep -Eqx 'poissondisk [0-9]+\.[0-9]+\.[0-9]+' "$tmp/version.out"
 expect "--version prints one line" [ "$(lines "$tmp/version.out")" -eq 1 ]
+expect "--version prints nothing on stderr" [ ! -s "$tmp/version.err" ]
+# The program links the library statically, so it must report the header's version.
+if [ -f include/poissondisk.h ]; then
+    hv=$(for f in MAJOR MINOR PATCH; do
+             sed -n "s/^#define PDS_VERSION_$f *\([0-9][0-9]*\).*/\1/p" include/poissondisk.h
+         done | paste -sd. -)
+    expect "--version says 'poissondisk $hv', the version of include/poissondisk.h" \
+        grep -qx "poissondisk $hv" "$tmp/version.out"
+fi
+
+# help_case NAME ARGS...: --help somewhere in ARGS: exit 0, the same help text
+# as plain --help, nothing on stderr, and no pattern printed.
+help_case() {
+    h_name=$1
+    shift
+    run "$h_name" "$@"
+    expect "$* exits 0 (got $rc)" [ "$rc" -eq 0 ]
+    expect "$* prints the same help as --help" cmp -s "$tmp/help.out" "$tmp/$h_name.out"
+    expect "$* prints nothing on stderr" [ ! -s "$tmp/$h_name.err" ]
+    expect "$* prints no point" no_points "$tmp/$h_name.out"
+}
+help_case help1 --radius 0.3 --help
+help_case help2 --help --radius 0.3
+help_case help3 --radius 0.05 --seed 7 --domain 0 0 2 1 --refine 0.04 --max-points 5 \
+    --verify --stats --help
+help_case help4 --help --bogus extra      # nothing after --help is read
+help_case help5 --help --radius -1
+
+# version_case NAME ARGS...: likewise for --version.
+version_case() {
+    v_name=$1
+    shift
+    run "$v_name" "$@"
+    expect "$* exits 0 (got $rc)" [ "$rc" -eq 0 ]
+    expect "$* prints the same line as --version" cmp -s "$tmp/version.out" "$tmp/$v_name.out"
+    expect "$* prints nothing on stderr" [ ! -s "$tmp/$v_name.err" ]
+}
+version_case ver1 --radius 0.3 --version
+version_case ver2 --version --radius 0.3
+version_case ver3 --radius 0.05 --verify --stats --max-points 5 --version
+version_case ver4 --version --bogus
+# Left to right: an error before --help or --version still counts.
+run helplate --radius abc --help
+expect "--radius abc --help: exit 2, the bad value comes first (got $rc)" [ "$rc" -eq 2 ]
+expect "--radius abc --help: no help on stdout" [ ! -s "$tmp/helplate.out" ]
+run verlate --bogus --version
+expect "--bogus --version: exit 2 (got $rc)" [ "$rc" -eq 2 ]
+
+# The help and the parser come from one table: every option the help lists is
+# known to the parser, and each has an entry in the manual.
+grep -Eo '^  --[a-z-]+' "$tmp/help.out" | tr -d ' ' > "$tmp/help-options"
+expect "--help lists the 9 options" [ "$(lines "$tmp/help-options")" -eq 9 ]
+sed -n '/^$/q;p' "$tmp/help.out" > "$tmp/help-usage"    # up to the first blank line
+while read -r opt; do
+    run optknown "$opt"
+    expect "$opt, listed by --help, is known to the parser" \
+        eval '! grep -q "unknown option" "$tmp/optknown.err"'
+    expect "the usage lines show $opt" grep -Eq -- "$opt([] .]|\$)" "$tmp/help-usage"
+    if [ -f man/poissondisk.1 ]; then
+        expect "man/poissondisk.1 describes $opt" \
+            grep -qx "\\.It Fl -${opt#--}.*" man/poissondisk.1
+    fi
+done < "$tmp/help-options"
+run usageonly --bogus
+grep -v "^poissondisk: \|^Try " "$tmp/usageonly.err" > "$tmp/error-usage"
+expect "an error prints the same usage lines as --help" \
+    cmp -s "$tmp/help-usage" "$tmp/error-usage"
 
 # ---- a small run ----------------------------------------------------------------
 run base --radius 0.05
@@ -154,6 +172,25 @@ head -n 10 "$tmp/base.out" > "$tmp/base10.out"
 expect "--max-points 10 prints the first 10 points of the full run" \
     cmp -s "$tmp/base10.out" "$tmp/cap.out"
 
+run capeq --radius 0.05 --max-points=10
+expect "--max-points=10 works like --max-points 10" cmp -s "$tmp/cap.out" "$tmp/capeq.out"
+
+run cap1 --radius 0.05 --max-points 1
+expect "--max-points 1 prints the first point (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && head -n 1 "$tmp/base.out" | cmp -s - "$tmp/cap1.out"'
+
+run capbig --radius 0.05 --max-points 100000 --stats
+expect "a cap above the maximal count changes nothing (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && cmp -s "$tmp/base.out" "$tmp/capbig.out"'
+expect "a cap above the maximal count: --stats says maximal" \
+    grep -q "N=$n .* coverage=1\\.0* maximal " "$tmp/capbig.err"
+
+run capexact --radius 0.05 --max-points "$n" --verify --stats
+expect "--max-points $n, exactly the maximal count: the whole pattern (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && cmp -s "$tmp/base.out" "$tmp/capexact.out"'
+expect "--max-points $n: --stats says maximal verified" \
+    grep -q "N=$n .* coverage=1\\.0* maximal verified" "$tmp/capexact.err"
+
 # ---- --refine ---------------------------------------------------------------------
 run refine --radius 0.05 --refine 0.03
 m=$(lines "$tmp/refine.out")
@@ -165,6 +202,14 @@ expect "--refine keeps the first $n points unchanged" \
 expect "--refine: every pair at least 0.03 apart" min_dist_ok "$tmp/refine.out" 0.03
 expect "--refine: no grid probe farther than 0.03 from all points" \
     covered "$tmp/refine.out" 0.03 0 0 1 1 0.02
+
+# A cap is a prefix of the uncapped output, also when it ends in a later stage.
+for k in 1 $((n + 1)) $((n + 7)); do
+    run refcap --radius 0.05 --refine 0.03 --max-points "$k"
+    head -n "$k" "$tmp/refine.out" > "$tmp/refine-k.out"
+    expect "--refine 0.03 --max-points $k prints the first $k points of --refine 0.03" \
+        eval '[ "$rc" -eq 0 ] && cmp -s "$tmp/refine-k.out" "$tmp/refcap.out"'
+done
 
 run refine2 --radius 0.05 --refine 0.04 --refine 0.03 --max-points 400 --verify --stats
 expect "two --refine stages and a cap exit 0 (got $rc)" [ "$rc" -eq 0 ]
@@ -222,21 +267,110 @@ usage_case "--max-points -3" "--max-points.*'-3'" --radius 0.1 --max-points -3
 usage_case "--refine nan" "--refine.*'nan'" --radius 0.1 --refine nan
 usage_case "--verify=1" '--verify' --radius 0.1 --verify=1
 usage_case "a stray argument" "'extra'" --radius 0.1 extra
+# More bad numbers.
+usage_case "--radius ''" "--radius.*''" --radius ''
+usage_case "--radius ' 1'" "--radius.*' 1'" --radius ' 1'
+usage_case "--radius 1e999 (overflow)" "--radius.*'1e999'" --radius 1e999
+usage_case "--radius=-0.5" "--radius.*'-0\\.5'" --radius=-0.5
+usage_case "--domain with nan" "--domain.*'nan'" --radius 0.1 --domain 0 nan 1 1
+usage_case "--domain with inf" "--domain.*'inf'" --radius 0.1 --domain 0 0 inf 1
+usage_case "--domain with 1e999" "--domain.*'1e999'" --radius 0.1 --domain 0 0 1 1e999
+usage_case "--seed ''" "--seed.*''" --radius 0.1 --seed ''
+usage_case "--seed 0x10" "--seed.*'0x10'" --radius 0.1 --seed 0x10
+usage_case "--max-points 1.5" "--max-points.*'1\\.5'" --radius 0.1 --max-points 1.5
+usage_case "--max-points abc" "--max-points.*'abc'" --radius 0.1 --max-points abc
+usage_case "--max-points 2^64" "--max-points.*'18446744073709551616'" \
+    --radius 0.1 --max-points 18446744073709551616
+usage_case "--refine 0" "--refine.*'0'" --radius 0.1 --refine 0
+usage_case "--refine -0.05" "--refine.*'-0\\.05'" --radius 0.1 --refine -0.05
+# Unknown options: no short forms, no abbreviations, names are case-sensitive.
+usage_case "-r (short option)" "unknown option '-r'" -r 0.1
+usage_case "--rad (abbreviation)" "unknown option '--rad'" --rad 0.1
+usage_case "--Radius" "unknown option '--Radius'" --Radius 0.1
+usage_case "--bogus=1" "unknown option '--bogus=1'" --radius 0.1 --bogus=1
+usage_case "a lone --" "unknown option '--'" --radius 0.1 --
+# Missing values.
+usage_case "--seed without value" 'option --seed needs a value' --radius 0.1 --seed
+usage_case "--refine without value" 'option --refine needs a value' --radius 0.1 --refine
+usage_case "--max-points without value" 'option --max-points needs a value' \
+    --radius 0.1 --max-points
+usage_case "--domain without values" '--domain needs four values .*got none' \
+    --radius 0.1 --domain
+usage_case "--domain=0 0 followed by an option" '--domain needs four values .*got two' \
+    --domain=0 0 --radius 0.1
+# Each --refine radius is checked against the one before it, before any sampling.
+usage_case "--refine larger than --radius" "--refine 0\\.1 is larger" --radius 0.05 --refine 0.1
+usage_case "a second --refine larger than the first" "--refine 0\\.04 is larger" \
+    --radius 0.05 --refine 0.03 --refine 0.04
 
-# ---- library errors: exit 1, "poissondisk: ...: <library message>" -----------------
-lib_case() {
-    l_desc=$1
-    shift
-    run lib "$@"
-    expect "$l_desc: exit 1 (got $rc)" [ "$rc" -eq 1 ]
-    expect "$l_desc: a 'poissondisk: ...: ...' message" \
-        grep -Eq '^poissondisk: [^:]+: .+' "$tmp/lib.err"
-    expect "$l_desc: nothing on stdout" [ ! -s "$tmp/lib.out" ]
-}
-lib_case "--refine larger than --radius" --radius 0.05 --refine 0.1
-lib_case "--radius 1e-9 on the unit square (PDS_ERANGE)" --radius 1e-9 --domain 0 0 1 1
-lib_case "an inverted --domain" --radius 0.1 --domain 1 0 0 1
-lib_case "an empty --domain" --radius 0.1 --domain 0 0 0 1
+# ---- values the library rejects: exit 2 as well, the library's reason, no output -----
+# Rectangles are judged by pds_set_domain (PDS_EINVAL); a radius too small for
+# the domain by the library (PDS_ERANGE) when the pair is first used.
+usage_case "an inverted --domain" 'domain \[1,0\]x\[0,1\].*empty or inverted' \
+    --radius 0.1 --domain 1 0 0 1
+usage_case "an empty --domain" 'domain \[0,0\]x\[0,1\]' --radius 0.1 --domain 0 0 0 1
+usage_case "an inverted --domain with other options" 'empty or inverted' \
+    --radius 0.1 --domain 0 1 1 0 --verify --stats --max-points 3
+usage_case "--radius 1e-9 on the unit square (PDS_ERANGE)" \
+    'radius 1e-09 is too small for the domain \[0,1\]x\[0,1\]' --radius 1e-9
+usage_case "--radius 0.1 far from the origin (PDS_ERANGE)" \
+    'radius 0\.1 is too small for the domain' --radius 0.1 --domain 1e300 0 2e300 1
+# A maximal pattern at 1e-6 would need ~1e12 points: too many without a cap.
+usage_case "--radius 1e-6, no cap (PDS_ERANGE)" 'radius 1e-06 is too small' --radius 1e-6
+usage_case "--refine to 1e-9 (PDS_ERANGE)" 'radius 1e-09 is too small' \
+    --radius 0.1 --refine 1e-9
+
+# ---- tiny radii: need the 1.1.1 core ------------------------------------------------
+# From 1.1.1 on, the library judges the radius against the domain when the pair
+# is first used, and a bounded run needs index room only for the points it asks
+# for. The 1.1.0 library refuses these radii already in pds_create (PDS_ERANGE,
+# exit 2), so the checks marked "[core 1.1.1]" fail until the new core is in.
+core="[core 1.1.1]"
+run tiny --radius 1e-6 --max-points 1000
+expect "$core --radius 1e-6 --max-points 1000 exits 0 (got $rc)" [ "$rc" -eq 0 ]
+expect "$core --radius 1e-6 --max-points 1000 prints 1000 lines (got $(lines "$tmp/tiny.out"))" \
+    [ "$(lines "$tmp/tiny.out")" -eq 1000 ]
+expect "$core --radius 1e-6: every line is two numbers" two_numbers "$tmp/tiny.out"
+expect "$core --radius 1e-6: all points in the unit square" inside "$tmp/tiny.out" 0 0 1 1
+expect "$core --radius 1e-6: every pair at least 1e-6 apart" min_dist_ok "$tmp/tiny.out" 1e-6
+run tinyv --radius 1e-6 --max-points 1000 --verify --stats
+expect "$core --radius 1e-6 --max-points 1000 --verify --stats: the same points" \
+    eval '[ "$rc" -eq 0 ] && [ -s "$tmp/tiny.out" ] && cmp -s "$tmp/tiny.out" "$tmp/tinyv.out"'
+expect "$core --radius 1e-6 --max-points 1000 --verify --stats: not maximal, verified" \
+    grep -q 'N=1000 R=1e-06 .* not maximal verified' "$tmp/tinyv.err"
+
+# The unit-square pattern at R = 0.01 shrunk 1000 times: about 7000 points.
+# Covering gives N >= A/(pi R^2) = 3183.1; packing disks of radius R/2 in the
+# square grown by R/2 gives N <= (1e-3 + R)^2 * 4 / (sqrt(12) R^2) = 11779.1.
+run small --radius 1e-5 --domain 0 0 1e-3 1e-3
+m=$(lines "$tmp/small.out")
+expect "$core --radius 1e-5 --domain 0 0 1e-3 1e-3 exits 0 (got $rc)" [ "$rc" -eq 0 ]
+expect "$core --radius 1e-5 in [0,1e-3]^2: N=$m within [3184, 11779]" between "$m" 3184 11779
+expect "$core --radius 1e-5 in [0,1e-3]^2: all points inside" \
+    inside "$tmp/small.out" 0 0 1e-3 1e-3
+expect "$core --radius 1e-5 in [0,1e-3]^2: every pair at least 1e-5 apart" \
+    min_dist_grid "$tmp/small.out" 1e-5
+expect "$core --radius 1e-5 in [0,1e-3]^2: no grid probe farther than R from all points" \
+    covered_grid "$tmp/small.out" 1e-5 0 0 1e-3 1e-3 5e-6
+run smallv --radius 1e-5 --domain 0 0 1e-3 1e-3 --verify --stats
+expect "$core --radius 1e-5 in [0,1e-3]^2 --verify --stats: the same points" \
+    eval '[ "$rc" -eq 0 ] && [ -s "$tmp/small.out" ] && cmp -s "$tmp/small.out" "$tmp/smallv.out"'
+expect "$core --radius 1e-5 in [0,1e-3]^2: --stats says maximal verified" \
+    grep -q "N=$m R=1e-05 domain=\\[0,0\\.001\\]x\\[0,0\\.001\\] coverage=1\\.0* maximal verified" \
+        "$tmp/smallv.err"
+
+# ---- library failures: exit 1, "poissondisk: ...: <library message>" -----------------
+# A maximal pattern at 1e-4 (~7e6 points) needs about a gigabyte: in 300 MB of
+# address space pds_run fails with PDS_ENOMEM, which is no fault of the arguments.
+# (ulimit -v is not POSIX, so the shell is asked first.)
+if (ulimit -v 300000) 2> /dev/null; then
+    (ulimit -v 300000 && exec "$cli" --radius 1e-4) > "$tmp/nomem.out" 2> "$tmp/nomem.err"
+    rc=$?
+    expect "out of memory (ulimit -v 300000, --radius 1e-4): exit 1 (got $rc)" [ "$rc" -eq 1 ]
+    expect "out of memory: the message says so" \
+        grep -Eq '^poissondisk: .*: .*out of memory' "$tmp/nomem.err"
+    expect "out of memory: nothing on stdout" [ ! -s "$tmp/nomem.out" ]
+fi
 
 # ---- write errors -------------------------------------------------------------------
 if [ -w /dev/full ]; then

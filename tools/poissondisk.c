@@ -6,17 +6,22 @@
  * as exactly the same double. Optional refinement stages (--refine) continue
  * the same pattern at smaller radii; --max-points caps the total.
  *
- * This file uses only the public header, like any other client would, so it
+ * The options live in one table (option_list[] below); cli_options.c makes
+ * the parsing, the defaults, the usage line and the --help text from it, so
+ * they cannot disagree. Arguments are read left to right; --help or
+ * --version prints and ends the program there, without sampling.
+ *
+ * The library is used through the public header only, like any client, so it
  * doubles as a worked example of the C API. It is plain C99 plus
  * clock_gettime() from POSIX.
  *
- * Exit status: 0 success, 1 library or output failure, 2 bad arguments.
+ * Exit status: 0 success, 1 library or output failure, 2 bad arguments,
+ * including values only the library can judge (PDS_EINVAL, PDS_ERANGE).
  */
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,66 +30,35 @@
 
 #include "poissondisk.h"
 
+#include "cli_options.h"
+
+/* Named results of pds_run/pds_verify (1.1.1); the values are those of 1.0. */
+#ifndef PDS_DONE
+#define PDS_DONE 0
+#endif
+#ifndef PDS_MORE
+#define PDS_MORE 1
+#endif
+
 #define PROG "poissondisk"
 
-enum { EXIT_LIBRARY = 1, EXIT_USAGE = 2 };
+enum { EXIT_LIBRARY = 1, EXIT_USAGE = CLI_EXIT_USAGE };
+enum action { ACT_SAMPLE, ACT_HELP, ACT_VERSION };
 
 /* Points fetched per pds_points() call when writing: bounded memory for any N. */
 #define CHUNK_POINTS 4096
 
-static const char usage_line[] =
-    "usage: " PROG " --radius R [--seed S] [--domain X0 Y0 X1 Y1] [--refine R2]...\n"
-    "                   [--max-points N] [--verify] [--stats] [--help] [--version]\n";
-
-static const char help_text[] =
-    "Write a maximal Poisson-disk point pattern to standard output, one\n"
-    "\"x y\" line per point in insertion order (%.17g: values round-trip exactly).\n"
-    "\n"
-    "  --radius R             minimum distance between points (required, > 0)\n"
-    "  --seed S               random seed, unsigned 64-bit decimal (default 1)\n"
-    "  --domain X0 Y0 X1 Y1   sample the rectangle [X0,X1]x[Y0,Y1]\n"
-    "                         (default the unit square 0 0 1 1)\n"
-    "  --refine R2            when the pattern is maximal, continue at the smaller\n"
-    "                         radius R2 keeping every point; may be repeated, each\n"
-    "                         R2 no larger than the radius before it\n"
-    "  --max-points N         stop after N points in total (N > 0); the pattern\n"
-    "                         may then not be maximal\n"
-    "  --verify               re-check the final pattern independently; exit 1 if\n"
-    "                         the check fails\n"
-    "  --stats                print a one-line summary to standard error\n"
-    "  --help                 print this help and exit\n"
-    "  --version              print the library version and exit\n"
-    "\n"
-    "Options taking a value accept both '--opt VALUE' and '--opt=VALUE'.\n"
-    "Exit status: 0 success, 1 library or output error, 2 bad arguments.\n";
-
 struct options {
     double radius;
-    int have_radius;
     uint64_t seed;
-    double domain[4]; /* x0 y0 x1 y1 */
-    int have_domain;
-    double *refine;   /* the --refine radii in command-line order */
+    double domain[4];  /* x0 y0 x1 y1 */
+    double *refine;    /* the --refine radii in command-line order */
     size_t nrefine;
     size_t max_points; /* 0: no cap (the option itself rejects 0) */
     int verify;
     int stats;
+    enum action action;
 };
-
-/* Report a bad argument (printf-style), then the short usage; gives exit status 2. */
-static int usage_error(const char *fmt, ...)
-{
-    va_list ap;
-
-    fputs(PROG ": ", stderr);
-    va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
-    va_end(ap);
-    fputc('\n', stderr);
-    fputs(usage_line, stderr);
-    fputs("Try '" PROG " --help' for more information.\n", stderr);
-    return EXIT_USAGE;
-}
 
 /*
  * Parse a finite double that fills the whole string. strtod() alone would
@@ -123,29 +97,122 @@ static int parse_u64(const char *text, uint64_t *out)
     return 0;
 }
 
-/*
- * The value of an option: the text after '=' in "--opt=VALUE", else the next
- * argument (taken as is, so "--radius -1" reaches the range check). NULL when
- * there is none.
- */
-static const char *take_value(int argc, char **argv, int *i, const char *eq)
+/* Handlers: store an option's values (see cli_options.h). */
+
+static int parse_radius(const char *text, double *out)
 {
-    if (eq != NULL)
-        return eq + 1;
-    if (*i + 1 >= argc)
-        return NULL;
-    *i += 1;
-    return argv[*i];
+    return parse_double(text, out) == 0 && *out > 0 ? CLI_OK : CLI_BAD(0);
 }
 
-/* parse_args() result meaning "all done, exit 0" (after --help or --version). */
-#define PARSE_DONE (-1)
+static int opt_radius(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    (void)opt;
+    return parse_radius(v[0], &((struct options *)ctx)->radius);
+}
 
-/* Returns 0 to go on, PARSE_DONE, or an exit status. */
+static int opt_refine(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    struct options *o = ctx;
+    (void)opt;
+    return parse_radius(v[0], &o->refine[o->nrefine++]);
+}
+
+static int opt_seed(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    (void)opt;
+    return parse_u64(v[0], &((struct options *)ctx)->seed) == 0 ? CLI_OK : CLI_BAD(0);
+}
+
+static int opt_max_points(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    uint64_t n;
+
+    (void)opt;
+    if (parse_u64(v[0], &n) != 0 || n == 0 || n > SIZE_MAX)
+        return CLI_BAD(0);
+    ((struct options *)ctx)->max_points = (size_t)n;
+    return CLI_OK;
+}
+
+/* Only the numbers are checked here; the library judges the rectangle. */
+static int opt_domain(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    int k;
+
+    (void)opt;
+    for (k = 0; k < 4; k++)
+        if (parse_double(v[k], &((struct options *)ctx)->domain[k]) != 0)
+            return CLI_BAD(k);
+    return CLI_OK;
+}
+
+static int opt_verify(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    (void)opt, (void)v;
+    ((struct options *)ctx)->verify = 1;
+    return CLI_OK;
+}
+
+static int opt_stats(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    (void)opt, (void)v;
+    ((struct options *)ctx)->stats = 1;
+    return CLI_OK;
+}
+
+static int opt_help(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    (void)opt, (void)v;
+    ((struct options *)ctx)->action = ACT_HELP;
+    return CLI_STOP;
+}
+
+static int opt_version(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    (void)opt, (void)v;
+    ((struct options *)ctx)->action = ACT_VERSION;
+    return CLI_STOP;
+}
+
+/* The one list of options: parsing, defaults, usage and --help come from it. */
+static const struct cli_option option_list[] = {
+    { "--radius", 1, "R", CLI_REQUIRED, NULL, opt_radius, "a finite number > 0",
+      "minimum distance between points, a finite number > 0" },
+    { "--seed", 1, "S", 0, "1", opt_seed, "an unsigned 64-bit decimal integer",
+      "random seed, an unsigned 64-bit decimal integer" },
+    { "--domain", 4, "X0 Y0 X1 Y1", 0, "0 0 1 1", opt_domain, "a finite number",
+      "sample the rectangle [X0,X1]x[Y0,Y1] instead of the unit square" },
+    { "--refine", 1, "R2", CLI_REPEAT, NULL, opt_refine, "a finite number > 0",
+      "when the pattern is maximal, continue at the smaller radius R2 keeping every "
+      "point; may be repeated, each R2 no larger than the radius before it" },
+    { "--max-points", 1, "N", 0, NULL, opt_max_points, "a positive integer",
+      "stop after N points in total (N > 0); the pattern may then not be maximal" },
+    { "--verify", 0, NULL, 0, NULL, opt_verify, NULL,
+      "re-check the final pattern independently; exit 1 if the check fails" },
+    { "--stats", 0, NULL, 0, NULL, opt_stats, NULL,
+      "print a one-line summary to standard error" },
+    { "--help", 0, NULL, CLI_ALONE, NULL, opt_help, NULL, "print this help and exit" },
+    { "--version", 0, NULL, CLI_ALONE, NULL, opt_version, NULL,
+      "print the library version and exit" },
+};
+
+static const struct cli_table cli = {
+    PROG, option_list, sizeof option_list / sizeof option_list[0],
+    "Write a maximal Poisson-disk point pattern to standard output, one\n"
+    "\"x y\" line per point in insertion order (%.17g: values round-trip exactly).\n",
+    "Options taking a value accept both '--opt VALUE' and '--opt=VALUE'.\n"
+    "--help and --version end the command line: they print, exit 0 and sample\n"
+    "nothing; the arguments after them are not read.\n"
+    "Exit status: 0 success, 1 library or output error, 2 bad arguments, also\n"
+    "when the library rejects a value (an empty --domain, or a radius too small\n"
+    "for the domain).\n",
+};
+
+/* Returns 0 to go on, CLI_STOP (--help, --version), or an exit status. */
 static int parse_args(int argc, char **argv, struct options *o)
 {
-    static const char *const count_words[] = { "none", "one", "two", "three" };
-    int i;
+    size_t k;
+    int rc;
 
     /* At most one --refine per two arguments; argc bounds them all. */
     o->refine = malloc((size_t)argc * sizeof *o->refine);
@@ -153,88 +220,15 @@ static int parse_args(int argc, char **argv, struct options *o)
         fputs(PROG ": out of memory\n", stderr);
         return EXIT_LIBRARY;
     }
-    for (i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        const char *eq = strchr(arg, '=');
-        size_t namelen = eq != NULL ? (size_t)(eq - arg) : strlen(arg);
-        const char *val;
-        char name[16];
-
-        if (arg[0] != '-')
-            return usage_error("unexpected argument '%s'", arg);
-        if (namelen >= sizeof name)
-            return usage_error("unknown option '%s'", arg);
-        memcpy(name, arg, namelen);
-        name[namelen] = '\0';
-
-        /* Flags: no value allowed. */
-        if (strcmp(name, "--help") == 0 || strcmp(name, "--version") == 0
-            || strcmp(name, "--verify") == 0 || strcmp(name, "--stats") == 0) {
-            if (eq != NULL)
-                return usage_error("option %s takes no value, got '%s'", name, eq + 1);
-            if (strcmp(name, "--help") == 0) {
-                printf("%s\n%s", usage_line, help_text);
-                return fflush(stdout) == 0 ? PARSE_DONE : EXIT_LIBRARY;
-            }
-            if (strcmp(name, "--version") == 0) {
-                printf(PROG " %s\n", pds_version_string());
-                return fflush(stdout) == 0 ? PARSE_DONE : EXIT_LIBRARY;
-            }
-            if (strcmp(name, "--verify") == 0)
-                o->verify = 1;
-            else
-                o->stats = 1;
-            continue;
-        }
-
-        if (strcmp(name, "--radius") != 0 && strcmp(name, "--seed") != 0
-            && strcmp(name, "--domain") != 0 && strcmp(name, "--refine") != 0
-            && strcmp(name, "--max-points") != 0)
-            return usage_error("unknown option '%s'", arg);
-
-        val = take_value(argc, argv, &i, eq);
-        if (val == NULL)
-            return usage_error("option %s needs a value", name);
-
-        if (strcmp(name, "--radius") == 0 || strcmp(name, "--refine") == 0) {
-            double r;
-            if (parse_double(val, &r) != 0 || !(r > 0))
-                return usage_error("%s: expected a finite number > 0, got '%s'", name, val);
-            if (strcmp(name, "--radius") == 0) {
-                o->radius = r;
-                o->have_radius = 1;
-            } else {
-                o->refine[o->nrefine++] = r;
-            }
-        } else if (strcmp(name, "--seed") == 0) {
-            if (parse_u64(val, &o->seed) != 0)
-                return usage_error("--seed: expected an unsigned 64-bit decimal "
-                                   "integer, got '%s'", val);
-        } else if (strcmp(name, "--max-points") == 0) {
-            uint64_t n;
-            if (parse_u64(val, &n) != 0 || n == 0 || n > SIZE_MAX)
-                return usage_error("--max-points: expected a positive integer, "
-                                   "got '%s'", val);
-            o->max_points = (size_t)n;
-        } else { /* --domain X0 Y0 X1 Y1; with '=' the first value is glued on */
-            int k;
-            for (k = 0; k < 4; k++) {
-                if (k > 0) {
-                    /* Stop at the end or at the next option ("--x" is no number). */
-                    if (i + 1 >= argc || strncmp(argv[i + 1], "--", 2) == 0)
-                        return usage_error("--domain needs four values X0 Y0 X1 Y1, "
-                                           "got %s", count_words[k]);
-                    val = argv[++i];
-                }
-                if (parse_double(val, &o->domain[k]) != 0)
-                    return usage_error("--domain: expected a finite number, got '%s'",
-                                       val);
-            }
-            o->have_domain = 1;
-        }
+    if ((rc = cli_parse(&cli, argc, argv, o)) != 0)
+        return rc;
+    /* Checked now rather than by pds_refine once the earlier stages ran. */
+    for (k = 0; k < o->nrefine; k++) {
+        double before = k == 0 ? o->radius : o->refine[k - 1];
+        if (o->refine[k] > before)
+            return cli_usage_error(&cli, "--refine %g is larger than the radius before it, %g",
+                                   o->refine[k], before);
     }
-    if (!o->have_radius)
-        return usage_error("option --radius is required");
     return 0;
 }
 
@@ -246,10 +240,25 @@ static double now_seconds(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
-static int library_error(const char *what, double value, const char *msg)
+/*
+ * Report a failed library call and give the exit status. An argument the
+ * library rejects (PDS_EINVAL) or a radius too small for the domain
+ * (PDS_ERANGE) came from the command line: status 2; anything else: 1.
+ */
+static int range_error(const struct options *o, double radius, const char *msg)
 {
+    fprintf(stderr, PROG ": radius %g is too small for the domain [%g,%g]x[%g,%g]: %s\n",
+            radius, o->domain[0], o->domain[2], o->domain[1], o->domain[3], msg);
+    return EXIT_USAGE;
+}
+
+static int library_error(const struct options *o, int rc, const char *what, double value,
+                         const char *msg)
+{
+    if (rc == PDS_ERANGE)
+        return range_error(o, value, msg);
     fprintf(stderr, PROG ": %s %g: %s\n", what, value, msg);
-    return EXIT_LIBRARY;
+    return rc == PDS_EINVAL ? EXIT_USAGE : EXIT_LIBRARY;
 }
 
 /* Write every point, CHUNK_POINTS at a time. Returns 0 or -1 on a write error. */
@@ -269,7 +278,7 @@ static int write_points(const pds_sampler *s)
 
 /*
  * Run stage after stage: the initial radius, then each --refine radius.
- * *maximal tells whether the last run reached maximality.
+ * *maximal tells whether the last run reached maximality. Returns an exit status.
  */
 static int sample(pds_sampler *s, const struct options *o, int *maximal)
 {
@@ -281,7 +290,7 @@ static int sample(pds_sampler *s, const struct options *o, int *maximal)
         if (stage > 0) {
             rc = pds_refine(s, o->refine[stage - 1]);
             if (rc < 0)
-                return library_error("cannot refine to radius", o->refine[stage - 1],
+                return library_error(o, rc, "cannot refine to radius", o->refine[stage - 1],
                                      pds_errmsg(s));
         }
         /* Once the cap is used up, later stages only lower the radius. */
@@ -290,10 +299,11 @@ static int sample(pds_sampler *s, const struct options *o, int *maximal)
             size_t max_new = o->max_points == 0 ? 0 : o->max_points - total;
             rc = pds_run(s, max_new, &added);
             total += added;
-            if (rc < 0)
-                return library_error("sampling failed at radius", pds_radius(s),
+            if (rc != PDS_DONE && rc != PDS_MORE) /* PDS_EINVAL would be our bug */
+                return library_error(o, rc == PDS_EINVAL ? PDS_EINTERNAL : rc,
+                                     "sampling failed at radius", pds_radius(s),
                                      pds_errmsg(s));
-            *maximal = rc == 0;
+            *maximal = rc == PDS_DONE; /* PDS_MORE: the cap stopped it, room left */
         } else {
             /* No run at this radius: maximal only if nothing is left free. */
             *maximal = pds_free_area(s) == 0.0;
@@ -312,32 +322,41 @@ int main(int argc, char **argv)
     double t0, seconds;
 
     memset(&o, 0, sizeof o);
-    o.seed = 1;
-    o.domain[0] = 0.0; o.domain[1] = 0.0; o.domain[2] = 1.0; o.domain[3] = 1.0;
+    o.action = ACT_SAMPLE;
     setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
 
     status = parse_args(argc, argv, &o);
-    if (status == PARSE_DONE)
-        status = EXIT_SUCCESS;
-    if (status != 0 || !o.have_radius)
+    if (status == CLI_STOP) {
+        /* --help or --version: print, and never go on to sample. */
+        if (o.action == ACT_HELP)
+            cli_print_help(&cli, stdout);
+        else
+            printf(PROG " %s\n", pds_version_string());
+        status = fflush(stdout) == 0 && !ferror(stdout) ? EXIT_SUCCESS : EXIT_LIBRARY;
+        goto done;
+    }
+    if (status != 0)
         goto done;
 
     t0 = now_seconds();
     rc = pds_create(&s, o.radius, o.seed);
     if (rc < 0) {
         /* No handle, so no pds_errmsg(): the code's text is all there is. */
-        status = library_error("cannot create a sampler with radius", o.radius,
+        status = library_error(&o, rc, "cannot create a sampler with radius", o.radius,
                                pds_strerror(rc));
         goto done;
     }
-    if (o.have_domain) {
-        rc = pds_set_domain(s, o.domain[0], o.domain[1], o.domain[2], o.domain[3]);
-        if (rc < 0) {
+    /* Always set: the default is the unit square, the library's own default. */
+    rc = pds_set_domain(s, o.domain[0], o.domain[1], o.domain[2], o.domain[3]);
+    if (rc < 0) {
+        if (rc == PDS_ERANGE) {
+            status = range_error(&o, o.radius, pds_errmsg(s));
+        } else {
             fprintf(stderr, PROG ": cannot set domain [%g,%g]x[%g,%g]: %s\n",
                     o.domain[0], o.domain[2], o.domain[1], o.domain[3], pds_errmsg(s));
-            status = EXIT_LIBRARY;
-            goto done;
+            status = rc == PDS_EINVAL ? EXIT_USAGE : EXIT_LIBRARY;
         }
+        goto done;
     }
     status = sample(s, &o, &maximal);
     if (status != 0)
@@ -347,13 +366,13 @@ int main(int argc, char **argv)
     /* Verify before writing, so a failed check leaves no plausible output. */
     if (o.verify) {
         rc = pds_verify(s);
-        if (rc < 0) {
+        if (rc != PDS_DONE && rc != PDS_MORE) {
             fprintf(stderr, PROG ": verification failed: %s\n", pds_errmsg(s));
             status = EXIT_LIBRARY;
             goto done;
         }
         verified = 1;
-        maximal = rc == 0; /* exact, so it overrides the running answer */
+        maximal = rc == PDS_DONE; /* exact, so it overrides the running answer */
     }
 
     if (write_points(s) != 0) {
