@@ -8,7 +8,10 @@
  * radius, free area and points are as before (snapshot), and running the
  * sampler to the end afterwards gives byte-for-byte the points of a twin with
  * the same seed that never saw the bad call.
- * State errors (PDS_ESTATE) are in state.c.
+ * State errors (PDS_ESTATE) are in state.c. A radius too small for the
+ * domain is not an invalid argument of pds_create or pds_set_domain since
+ * 1.1.1: the first point is refused instead (PDS_ERANGE), see limits.c; only
+ * pds_refine with points still refuses it at once (here).
  */
 #include <float.h>
 #include <math.h>
@@ -115,25 +118,6 @@ START_TEST(create_bad_radius)
 }
 END_TEST
 
-START_TEST(create_radius_too_small)
-{
-    /* Positive and finite, but far too small for the unit square. The last one
-     * is the smallest subnormal double, 2^-1074. */
-    const double tiny[] = {1e-9, 1e-12, 1e-300, DBL_MIN, DBL_MIN * DBL_EPSILON};
-    pds_sampler *live = sampler_new(0.1, 1);
-    size_t i;
-
-    for (i = 0; i < sizeof tiny / sizeof tiny[0]; i++) {
-        char what[64];
-        pds_sampler *out = live;
-        snprintf(what, sizeof what, "pds_create(&s, %g, 1)", tiny[i]);
-        assert_failed(NULL, pds_create(&out, tiny[i], 1), PDS_ERANGE, what);
-        ck_assert_msg(out == NULL, "%s failed but did not set *out to NULL", what);
-    }
-    pds_destroy(live);
-}
-END_TEST
-
 /* ---- pds_set_domain ----------------------------------------------------------- */
 
 /* The handle under test starts on this domain, so "unchanged" is not the default. */
@@ -202,64 +186,6 @@ START_TEST(set_domain_empty_or_inverted)
 }
 END_TEST
 
-START_TEST(set_domain_too_large)
-{
-    /* R = 0.05 is moderate; these rectangles would need far more points than
-     * any index type holds. The last one has finite corners, but its width
-     * overflows to infinity. */
-    static const test_domain huge[] = {
-        {0.0, 0.0, 1e6, 1e6},
-        {-1e12, -1e12, 1e12, 1e12},
-        {-DBL_MAX, -DBL_MAX, DBL_MAX, DBL_MAX},
-    };
-    pds_sampler *a, *b;
-    sampler_snapshot snap;
-    size_t i, n;
-    double *xy;
-
-    twins_new(0.05, 13, &OLD_DOMAIN, 0, &a, &b);
-    snapshot_take(a, &snap);
-    for (i = 0; i < sizeof huge / sizeof huge[0]; i++) {
-        char what[128];
-        test_domain d = huge[i];
-        snprintf(what, sizeof what, "pds_set_domain(%g, %g, %g, %g) with R = 0.05", d.x0, d.y0,
-                 d.x1, d.y1);
-        assert_failed(a, pds_set_domain(a, d.x0, d.y0, d.x1, d.y1), PDS_ERANGE, what);
-        /* The domain is unchanged: the free area is still the old 2 x 3. */
-        snapshot_check(a, &snap, what);
-        assert_rel_close(pds_free_area(a), 6.0, 1e-12, what);
-    }
-    snapshot_free(&snap);
-    assert_same_future(a, b, "after too-large pds_set_domain calls");
-    xy = points_copy(a, &n);
-    assert_inside(xy, n, OLD_DOMAIN, "after too-large pds_set_domain calls");
-    free(xy);
-    pds_destroy(a);
-    pds_destroy(b);
-}
-END_TEST
-
-START_TEST(set_domain_unresolvable)
-{
-    /* Near 1e15 doubles are 0.125 apart, so a radius of 0.05 cannot be
-     * resolved there even though the rectangle is small: PDS_ERANGE
-     * ("double precision cannot resolve it"). */
-    const double x0 = 1e15;
-    pds_sampler *a, *b;
-    sampler_snapshot snap;
-
-    twins_new(0.05, 14, &OLD_DOMAIN, 0, &a, &b);
-    snapshot_take(a, &snap);
-    assert_failed(a, pds_set_domain(a, x0, 0.0, x0 + 1.0, 1.0), PDS_ERANGE,
-                  "pds_set_domain([1e15, 1e15+1]x[0,1]) with R = 0.05");
-    snapshot_check(a, &snap, "after an unresolvable pds_set_domain");
-    snapshot_free(&snap);
-    assert_same_future(a, b, "after an unresolvable pds_set_domain");
-    pds_destroy(a);
-    pds_destroy(b);
-}
-END_TEST
-
 /* ---- pds_refine --------------------------------------------------------------- */
 
 /* Each invalid radius at one stage of the sampler's life, then the twin check. */
@@ -295,6 +221,7 @@ START_TEST(refine_bad_radius)
 }
 END_TEST
 
+/* With points, a refine below the precision limit fails at once (PDS_ERANGE). */
 static void check_tiny_refines(size_t npoints, const char *stage)
 {
     const double tiny[] = {1e-9, 1e-300, DBL_MIN * DBL_EPSILON};
@@ -316,9 +243,29 @@ static void check_tiny_refines(size_t npoints, const char *stage)
     pds_destroy(b);
 }
 
+/* Before the first point a refine is judged like pds_create's radius: at the
+ * first point (spec 1.1.1). */
+static void check_tiny_refines_before_points(void)
+{
+    const double tiny[] = {1e-9, 1e-300, DBL_MIN * DBL_EPSILON};
+    size_t i;
+
+    for (i = 0; i < sizeof tiny / sizeof tiny[0]; i++) {
+        char what[96];
+        pds_sampler *s = sampler_new(0.05, 22);
+        int rc = pds_refine(s, tiny[i]);
+        snprintf(what, sizeof what, "pds_refine(s, %g) before the first point", tiny[i]);
+        ck_assert_msg(rc == 0, "%s returned %d (%s)", what, rc, pds_errmsg(s));
+        ck_assert_msg(pds_radius(s) == tiny[i], "%s: radius %g", what, pds_radius(s));
+        assert_run_rejected(s, 0, what);
+        assert_step_rejected(s, what);
+        pds_destroy(s);
+    }
+}
+
 START_TEST(refine_radius_too_small)
 {
-    check_tiny_refines(0, "before the first point");
+    check_tiny_refines_before_points();
     check_tiny_refines(25, "after 25 points");
 }
 END_TEST
@@ -389,16 +336,10 @@ Suite *args_suite(void)
     tcase_add_test(tc, null_handle_calls);
     tc = new_tcase(suite, "create_bad_radius");
     tcase_add_test(tc, create_bad_radius);
-    tc = new_tcase(suite, "create_radius_too_small");
-    tcase_add_test(tc, create_radius_too_small);
     tc = new_tcase(suite, "set_domain_nonfinite");
     tcase_add_test(tc, set_domain_nonfinite);
     tc = new_tcase(suite, "set_domain_empty_or_inverted");
     tcase_add_test(tc, set_domain_empty_or_inverted);
-    tc = new_tcase(suite, "set_domain_too_large");
-    tcase_add_test(tc, set_domain_too_large);
-    tc = new_tcase(suite, "set_domain_unresolvable");
-    tcase_add_test(tc, set_domain_unresolvable);
     tc = new_tcase(suite, "refine_bad_radius");
     tcase_add_test(tc, refine_bad_radius);
     tc = new_tcase(suite, "refine_radius_too_small");

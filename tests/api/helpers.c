@@ -214,6 +214,41 @@ void assert_failed(const pds_sampler *s, int rc, int expected, const char *what)
                   what);
 }
 
+/* Count, radius and points unchanged (not the free area: costly or
+ * infinite on the domains these calls reject). */
+static void check_unchanged(const pds_sampler *s, size_t count, double radius, const double *xy,
+                            const char *what)
+{
+    ck_assert_msg(pds_radius(s) == radius, "%s: radius changed from %.17g to %.17g", what,
+                  radius, pds_radius(s));
+    ck_assert_msg(pds_count(s) == count, "%s: count changed from %zu to %zu", what, count,
+                  pds_count(s));
+    assert_prefix_kept(s, xy, count, what);
+}
+
+void assert_run_rejected(pds_sampler *s, size_t max_new, const char *what)
+{
+    size_t count, added = 777;
+    double radius = pds_radius(s);
+    double *xy = points_copy(s, &count);
+
+    assert_failed(s, pds_run(s, max_new, &added), PDS_ERANGE, what);
+    ck_assert_msg(added == 0, "%s: PDS_ERANGE, yet %zu points reported added", what, added);
+    check_unchanged(s, count, radius, xy, what);
+    free(xy);
+}
+
+void assert_step_rejected(pds_sampler *s, const char *what)
+{
+    size_t count;
+    double radius = pds_radius(s);
+    double *xy = points_copy(s, &count);
+
+    assert_failed(s, pds_step(s), PDS_ERANGE, what);
+    check_unchanged(s, count, radius, xy, what);
+    free(xy);
+}
+
 void snapshot_take(const pds_sampler *s, sampler_snapshot *snap)
 {
     snap->count = pds_count(s);

@@ -96,6 +96,15 @@ void assert_maximal(pds_sampler *s, const char *what);
  */
 void assert_failed(const pds_sampler *s, int rc, int expected, const char *what);
 
+/*
+ * The radius and domain cannot be sampled as asked (spec 1.1.1: judged at the
+ * first point, or at pds_refine once points exist): pds_run(s, max_new, &added)
+ * / pds_step(s) must return PDS_ERANGE with a message, report 0 added, and
+ * leave the count, radius and points as they were.
+ */
+void assert_run_rejected(pds_sampler *s, size_t max_new, const char *what);
+void assert_step_rejected(pds_sampler *s, const char *what);
+
 /* What a failed call must not change: count, radius, free area, points. */
 typedef struct sampler_snapshot {
     size_t count;

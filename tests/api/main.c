@@ -24,6 +24,8 @@ int main(void)
     srunner_add_suite(runner, properties_suite());
     srunner_add_suite(runner, lifecycle_suite());
     srunner_add_suite(runner, golden_suite());
+    srunner_add_suite(runner, splits_suite());
+    srunner_add_suite(runner, limits_suite());
 
     if (test_light())
         printf("PDS_TEST_LIGHT is set: heavy loops shrunk, calibration skipped\n");

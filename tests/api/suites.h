@@ -10,6 +10,8 @@
  *   properties_suite   distance, containment, maximality over seeds        (properties.c)
  *   lifecycle_suite    create/destroy cycles, destroy mid-run (Valgrind)   (lifecycle.c)
  *   golden_suite       pinned fingerprints of the points some seeds give  (golden.c)
+ *   splits_suite       same bytes however calls split the work, refine too (splits.c)
+ *   limits_suite       tiny, huge and far-off domains; when ERANGE comes   (limits.c)
  */
 #ifndef PDS_TESTS_API_SUITES_H
 #define PDS_TESTS_API_SUITES_H
@@ -24,5 +26,7 @@ Suite *determinism_suite(void);
 Suite *properties_suite(void);
 Suite *lifecycle_suite(void);
 Suite *golden_suite(void);
+Suite *splits_suite(void);
+Suite *limits_suite(void);
 
 #endif /* PDS_TESTS_API_SUITES_H */
