@@ -29,10 +29,12 @@
  * ns / (N log2 N) (the paper's figure 7), peak bytes per point (the largest
  * of the repeats), instructions per point, the uncovered fraction pooled over
  * the repeats with its binomial standard error, and the minimum-distance
- * verdict; then the baselines' times relative to the library's. Figures, not
- * assertions: nothing here fails on a slow machine. It exits 1 only when a
- * run fails, a pattern has two points closer than R, or the library's
- * pattern is not maximal (probes left uncovered): those are bugs.
+ * verdict; then the baselines' times relative to the library's. Then the
+ * chunked section (chunked.c): one pds_run against pds_run(s, 1) and pds_step
+ * repeated, at the largest size up to 10^5. Figures, not assertions: nothing
+ * here fails on a slow machine. It exits 1 only when a run fails, a pattern
+ * has two points closer than R, the library's pattern is not maximal (probes
+ * left uncovered), or the chunked ways give other points: those are bugs.
  *
  * usage: see usage_text below, or bench --help.
  */
@@ -51,6 +53,7 @@
 #include <unistd.h>
 
 #include "bridson.h"
+#include "chunked.h"
 #include "dart_grid.h"
 #include "pattern_check.h"
 #include "pattern_check_test.h"
@@ -78,12 +81,15 @@ static const char usage_text[] =
     "                   no FILE: to standard output, the table then to stderr\n"
     "  --svg FILE       also write time / (N log2 N) against N as an SVG chart\n"
     "  --dart-misses F  darts missed in a row that end dart throwing (default 3000)\n"
+    "  --chunked N      time one pds_run against pds_run(s, 1) and pds_step loops at\n"
+    "                   N points; 0: skip (default: the largest size, at most 100000)\n"
     "  --callgrind      count instructions per point under valgrind's callgrind\n"
     "                   (one extra run per size and method, seed 1; roughly 50-100\n"
     "                   times slower than native: meant for N up to about 10^5)\n"
     "  --self-test      run the pattern checks on known patterns and exit\n"
     "\n"
-    "Exit status: 0, 1 if a run failed or a pattern failed its checks, 2 bad arguments.\n";
+    "Exit status: 0, 1 if a run failed, a pattern failed its checks or the chunked\n"
+    "ways disagree, 2 bad arguments.\n";
 
 enum method { METHOD_POISSONDISK, METHOD_BRIDSON, METHOD_DART, METHOD_COUNT };
 static const char *const method_name[METHOD_COUNT] = {"poissondisk", "bridson", "dart"};
@@ -123,6 +129,7 @@ struct options {
     const char *svg_path;
     unsigned long dart_misses;
     int callgrind;
+    long chunked; /* points for the chunked section; 0: skip; -1: the default */
 };
 
 /* The points a method produced: the library keeps them in its sampler, the
@@ -512,6 +519,7 @@ static int parse_args(int argc, char **argv, struct options *opt) {
     memset(opt, 0, sizeof *opt);
     opt->repeats = 3;
     opt->dart_misses = DART_DEFAULT_MISSES;
+    opt->chunked = -1;
     for (m = 0; m < METHOD_COUNT; ++m) opt->use_method[m] = 1;
     for (i = 1; i < argc; ++i) {
         const char *value = NULL;
@@ -545,6 +553,13 @@ static int parse_args(int argc, char **argv, struct options *opt) {
                 return usage_error("--dart-misses wants a positive integer, not",
                                    value != NULL ? value : "");
             opt->dart_misses = f;
+        } else if (option_value(argc, argv, &i, "--chunked", &value)) {
+            double n = value != NULL ? strtod(value, &end) : -1.0;
+            if (value == NULL || *end != '\0' || end == value || n != floor(n) ||
+                !(n == 0.0 || (n >= 10.0 && n <= 1e9)))
+                return usage_error("--chunked wants 0 or a whole number from 10 to 1e9, not",
+                                   value != NULL ? value : "");
+            opt->chunked = (long)n;
         } else if (argv[i][0] == '-') {
             return usage_error("unknown option", argv[i]);
         } else {
@@ -658,6 +673,16 @@ int main(int argc, char **argv) {
             fprintf(out, "\n");
         }
     }
+
+    if (opt.chunked < 0) {
+        opt.chunked = 0;
+        for (k = 0; k < opt.target_count; ++k)
+            if ((long)opt.targets[k] > opt.chunked) opt.chunked = (long)opt.targets[k];
+        if (opt.chunked > 100000) opt.chunked = 100000;
+    }
+    if (opt.chunked > 0 && opt.use_method[METHOD_POISSONDISK] &&
+        chunked_bench(out, (size_t)opt.chunked, opt.repeats) != 0)
+        ++failures;
 
     if (opt.csv_path != NULL && write_csv(opt.csv_path, rows, row_count) != 0) {
         fprintf(stderr, PROG ": cannot write %s\n", opt.csv_path);

@@ -9,7 +9,9 @@
 # and size, every method's minimum-distance check passed, the library's
 # pattern left nothing uncovered, the baselines' counts and coverage are what
 # Bridson and early-stopped dart throwing give (fewer points, small gaps that
-# the probes must see). Also the SVG's shape and the argument errors. Timings
+# the probes must see). Then the chunked section (one pds_run against one-point
+# pds_run and pds_step loops: printed, same points). Also the SVG's shape and
+# the argument errors. Timings
 # are only checked to be positive: nothing here depends on the machine's speed.
 # Ends with "check-bench: N passed, M failed" and a non-zero status on failure.
 
@@ -59,6 +61,14 @@ expect "the table gives the speed ratios" \
 expect "the CSV exists" [ -s "$tmp/b.csv" ]
 expect "the CSV header is the documented one" [ "$(head -n 1 "$tmp/b.csv")" = "$header" ]
 expect "the CSV has 6 data rows" [ "$(wc -l < "$tmp/b.csv" | tr -d ' ')" -eq 7 ]
+
+# The chunked section (bench/chunked.c), at the largest size: one pds_run against
+# pds_run(s, 1) and pds_step loops, which must give the same points.
+expect "the chunked section is printed at N=3000" grep -q '^chunked runs, N=3000, ' "$tmp/b.out"
+expect "the chunked section has a line per way, with a ratio" \
+    [ "$(grep -cE '^  (one pds_run\(s, 0\)|pds_run\(s, 1\) until done|pds_step\(s\) until done) +[0-9.]+ s +[0-9.]+x' "$tmp/b.out")" -eq 3 ]
+expect "the chunked ways give the same points" \
+    [ "$(grep -c 'until done .*x  same points$' "$tmp/b.out")" -eq 2 ]
 
 csv_all "every row has 12 fields" 'NF == 12'
 csv_all "every row is one of the three methods" '$1 == "poissondisk" || $1 == "bridson" || $1 == "dart"'
@@ -112,6 +122,13 @@ expect "--csv -: the CSV on stdout" [ "$(head -n 1 "$tmp/o.out")" = "$header" ]
 expect "--methods poissondisk: one row" [ "$(wc -l < "$tmp/o.out" | tr -d ' ')" -eq 2 ]
 expect "--csv -: the table on stderr" grep -q '^poissondisk  *1000 ' "$tmp/o.err"
 
+"$bench" --repeats 1 --methods poissondisk --chunked 0 1000 > "$tmp/c.out" 2>&1
+rc=$?
+expect "--chunked 0: exit 0 (got $rc)" [ "$rc" -eq 0 ]
+expect "--chunked 0: no chunked section" sh -c "! grep -q '^chunked' '$tmp/c.out'"
+"$bench" --repeats 1 --methods poissondisk --chunked 2000 1000 > "$tmp/c.out" 2>&1
+expect "--chunked 2000: the section at N=2000" grep -q '^chunked runs, N=2000, ' "$tmp/c.out"
+
 usage_case() {
     u_desc=$1
     shift
@@ -125,5 +142,6 @@ usage_case "--methods with an unknown name" --methods poissondisk,nope 1000
 usage_case "a size of 5" 5
 usage_case "a size that is not a number" 10k
 usage_case "an unknown option" --bogus 1000
+usage_case "--chunked 5" --chunked 5 1000
 
 finish
