@@ -204,7 +204,17 @@ def test_errors():
     raises(poissondisk.EINVAL, lambda: Sampler(0), "radius 0")
     raises(poissondisk.EINVAL, lambda: Sampler(float("nan")), "radius NaN")
     raises(poissondisk.EINVAL, lambda: Sampler(float("inf")), "radius inf")
-    raises(poissondisk.ERANGE, lambda: Sampler(1e-9), "radius 1e-9 on the unit square")
+    # 1.1.1: the radius is judged with the domain at the first point.
+    with Sampler(1e-9) as s:
+        raises(poissondisk.ERANGE, lambda: s.run(10), "radius 1e-9 (below precision) at the first point")
+        check(s.count == 0, "a refused run adds nothing")
+    with Sampler(1e-6) as s:
+        raises(poissondisk.ERANGE, s.run, "an unbounded run whose maximal pattern cannot fit")
+        check(s.run(1000) is False and s.count == 1000 and s.verify() is False,
+              "a bounded run at R = 1e-6 adds its 1000 points, room left")
+    with Sampler(1e-5, domain=(0, 0, 1e-3, 1e-3)) as s:
+        check(s.run() is True and s.verify() is True and 5000 < s.count < 9000,
+              "R = 1e-5 given before its small domain: a maximal pattern")
     raises(poissondisk.EINVAL, lambda: Sampler(0.1, domain=(0, 0, 0, 1)), "empty domain")
     try:
         Sampler(0.1, seed=-1)

@@ -28,7 +28,7 @@ import os
 
 __all__ = [
     "PoissonDiskError", "Sampler", "version", "version_number", "strerror",
-    "EINVAL", "ENOMEM", "ESTATE", "ERANGE", "EINTERNAL",
+    "EINVAL", "ENOMEM", "ESTATE", "ERANGE", "EINTERNAL", "DONE", "MORE",
 ]
 
 # Error codes, fixed by the header (never renumbered).
@@ -37,6 +37,10 @@ ENOMEM = -2
 ESTATE = -3
 ERANGE = -4
 EINTERNAL = -5
+
+# Named results of pds_step, pds_run and pds_verify (1.1.1).
+DONE = 0  # the pattern is maximal
+MORE = 1  # step: a point was added; run: limit reached, room left; verify: room left
 
 # The soname major this binding was written for.
 _ABI_MAJOR = 1
@@ -215,17 +219,20 @@ class Sampler:
 
     def step(self):
         """Add one point. True if one was added, False if the pattern is maximal."""
-        return self._check(_lib.pds_step(self._h()), "pds_step") == 1
+        return self._check(_lib.pds_step(self._h()), "pds_step") == MORE
 
     def run(self, max_new=0):
         """Add points until maximal or max_new were added (0: no limit).
-        Returns True when the pattern is maximal."""
+        Returns True when the pattern is maximal. The radius is judged with
+        the domain at the first point: ERANGE if double precision cannot
+        resolve it, or if the points asked for (a whole maximal pattern when
+        max_new is 0) cannot fit the library's 32-bit indices."""
         max_new = operator.index(max_new)
         if max_new < 0:
             raise ValueError("max_new must be >= 0, got %d" % max_new)
         added = ctypes.c_size_t(0)
         rc = _lib.pds_run(self._h(), max_new, ctypes.byref(added))
-        return self._check(rc, "pds_run") == 0
+        return self._check(rc, "pds_run") == DONE
 
     def refine(self, radius):
         """Continue with a smaller radius (0 < radius <= self.radius), keeping
@@ -272,7 +279,7 @@ class Sampler:
         """Re-check the pattern independently of the sampler's bookkeeping.
         Returns True if valid and maximal, False if valid with room left;
         raises PoissonDiskError if a check fails."""
-        return self._check(_lib.pds_verify(self._h()), "pds_verify") == 0
+        return self._check(_lib.pds_verify(self._h()), "pds_verify") == DONE
 
     def __repr__(self):
         if self._handle is None:

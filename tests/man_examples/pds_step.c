@@ -19,14 +19,14 @@ main(void)
         return 1;
     }
 
-    /* pds_step: 1 for a new point, 0 once the pattern is maximal. */
+    /* pds_step: 1 (PDS_MORE) for a new point, 0 (PDS_DONE) at the end. */
     for (i = 0; i < 10; i++) {
         if ((rc = pds_step(s)) < 0)
             goto fail;
         total += (size_t)rc;
     }
 
-    /* pds_run: 1 while a batch is full and room is left. */
+    /* pds_run: 1 (PDS_MORE) while a batch is full and room is left. */
     while ((rc = pds_run(s, 200, &added)) == 1) {
         total += added;
         printf("%zu points, free area %.3g\n", pds_count(s),

@@ -1,7 +1,8 @@
 /*
  * Re-check patterns for a few seeds, independently of the sampler:
  * part way through, a pattern must be valid with room left (1); at
- * the end, valid and maximal (0).
+ * the end, valid and maximal (0).  The header names 1 PDS_MORE and
+ * 0 PDS_DONE since 1.1.1; this program also builds with older ones.
  */
 #include <inttypes.h>
 #include <stdio.h>
