@@ -184,8 +184,12 @@ void DartStage::insertion_order(std::uint32_t* order, std::uint64_t* key, std::u
     std::size_t rounds = 0;
     for (std::size_t end = n; end > 0; end = end > 256 ? end / 4 : 0) ends[rounds++] = end;
     // Keys have 2 log2(side) bits: enough 11-bit radix passes to cover them.
-    int key_bits = 0;
-    while ((std::uint64_t{1} << key_bits) < hilbert_side_ * hilbert_side_ && key_bits < 64) ++key_bits;
+    // The side stays below 2^30 cells: the stage runs only when Oler's bound
+    // fits the index type (sampler.cpp), and a grid k cells long has a bound
+    // of at least k/1.43 points; so keys fit 64 bits.
+    int side_bits = 0;
+    while ((std::uint64_t{1} << side_bits) < hilbert_side_) ++side_bits;
+    const int key_bits = 2 * side_bits;
     constexpr int kDigit = 11;
     constexpr std::uint64_t kMask = (std::uint64_t{1} << kDigit) - 1;
     std::size_t begin = 0;
