@@ -13,6 +13,7 @@ int main() {
     srunner_add_suite(runner, hash_map_suite());
     srunner_add_suite(runner, free_area_suite());
     srunner_add_suite(runner, verify_suite());
+    srunner_add_suite(runner, dart_stage_suite());
     srunner_add_suite(runner, sampler_suite());
     srunner_add_suite(runner, law_suite());
     srunner_add_suite(runner, out_of_memory_suite());

@@ -15,6 +15,7 @@ Suite* tree_suite();
 Suite* hash_map_suite();
 Suite* free_area_suite();
 Suite* verify_suite();
+Suite* dart_stage_suite();
 Suite* sampler_suite();
 Suite* law_suite();
 Suite* out_of_memory_suite();
