@@ -23,54 +23,9 @@ inside() {
         END { exit bad }' "$1"
 }
 
-# min_dist_ok FILE R: brute force over all pairs, every pair at least R apart.
-# The tolerance only absorbs awk's rounding when printing/reading; a pair
-# genuinely closer than R by more than 1e-12 relative fails.
-min_dist_ok() {
-    awk -v r="$2" '
-        { x[NR] = $1; y[NR] = $2 }
-        END {
-            r2 = r * r * (1 - 1e-12)
-            for (i = 1; i <= NR; i++)
-                for (j = i + 1; j <= NR; j++) {
-                    dx = x[i] - x[j]; dy = y[i] - y[j]
-                    if (dx * dx + dy * dy < r2) {
-                        printf "points %d and %d closer than %s\n", i, j, r > "/dev/stderr"
-                        exit 1
-                    }
-                }
-        }' "$1"
-}
-
-# covered FILE R X0 Y0 X1 Y1 STEP: every probe of a STEP grid over the
-# rectangle is within R of some point (a necessary condition for maximality,
-# checked independently of the library).
-covered() {
-    awk -v r="$2" -v x0="$3" -v y0="$4" -v x1="$5" -v y1="$6" -v h="$7" '
-        { x[NR] = $1; y[NR] = $2 }
-        END {
-            r2 = r * r
-            nx = int((x1 - x0) / h + 0.5); ny = int((y1 - y0) / h + 0.5)
-            for (a = 0; a <= nx; a++)
-                for (b = 0; b <= ny; b++) {
-                    px = x0 + (x1 - x0) * a / nx; py = y0 + (y1 - y0) * b / ny
-                    hit = 0
-                    for (i = 1; i <= NR && !hit; i++) {
-                        dx = x[i] - px; dy = y[i] - py
-                        if (dx * dx + dy * dy <= r2) hit = 1
-                    }
-                    if (!hit) {
-                        printf "probe (%g, %g) is farther than %s from every point\n",
-                               px, py, r > "/dev/stderr"
-                        exit 1
-                    }
-                }
-        }' "$1"
-}
-
-# The same two checks through a grid of cells of side R, for patterns too large
-# for the all-pairs loops: a point within R of a point or probe lies in the
-# 3 x 3 cells around it.
+# Both checks go through a grid of cells of side R (at least R wide, also
+# around 0, where awk's int() merges two): a point within R of a point or probe
+# lies in the 3 x 3 cells around it.
 # min_dist_grid FILE R: every pair at least R apart.
 min_dist_grid() {
     awk -v r="$2" '
@@ -96,7 +51,9 @@ min_dist_grid() {
         }' "$1"
 }
 
-# covered_grid FILE R X0 Y0 X1 Y1 STEP: like covered, for larger patterns.
+# covered_grid FILE R X0 Y0 X1 Y1 STEP: every probe of a STEP grid over the
+# rectangle is within R of some point (a necessary condition for maximality,
+# checked independently of the library).
 covered_grid() {
     awk -v r="$2" -v x0="$3" -v y0="$4" -v x1="$5" -v y1="$6" -v h="$7" '
         { x[NR] = $1; y[NR] = $2; c = int($1 / r) " " int($2 / r); cell[c] = cell[c] " " NR }
@@ -123,3 +80,7 @@ covered_grid() {
                 }
         }' "$1"
 }
+
+# The names the checks use for small patterns: the same grid checks.
+min_dist_ok() { min_dist_grid "$@"; }
+covered() { covered_grid "$@"; }
