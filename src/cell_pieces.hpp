@@ -13,6 +13,7 @@
 
 #include "point.hpp"
 #include "rng.hpp"
+#include "vec.hpp"
 
 namespace pds {
 
@@ -43,7 +44,7 @@ struct Chunk {
     // argument of (start . end, start x end), unambiguous.
     bool extends_with(const Piece& pc) const {
         return count > 0 && count < kMaxChunkPieces && pc.p.x == end.x && pc.p.y == end.y &&
-               start.x * pc.q.y - start.y * pc.q.x > 0.0;
+               cross(start, pc.q) > 0.0;
     }
     void begin(const Piece& pc, bool keep_pieces);
     void extend(const Piece& pc, bool keep_pieces);

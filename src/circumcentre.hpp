@@ -24,6 +24,7 @@
 #include "expansion.hpp"
 #include "point.hpp"
 #include "roundoff.hpp"
+#include "vec.hpp"
 
 namespace pds {
 
@@ -43,7 +44,7 @@ struct RelativeCentre {
 // every neighbour of every cell the sampler looks at.
 inline RelativeCentre relative_circumcentre(const Point& b, const Point& d) {
     const double bb = b.x * b.x + b.y * b.y, dd = d.x * d.x + d.y * d.y;
-    const double cr = b.x * d.y - b.y * d.x;
+    const double cr = cross(b, d);
     // Delaunay triangles around a site are counterclockwise, and with points
     // at least R apart inside the ghost square their angles stay far from 0.
     if (!(cr > 0.0) || !(cr < 1e300)) degenerate_triangle();

@@ -87,7 +87,7 @@ void DartStage::write(std::size_t cell, const Point& p) {
 
 void DartStage::draw_batch(Rng& rng) {
     const double w = static_cast<double>(cols_) * side_, h = static_cast<double>(rows_) * side_;
-    for (std::size_t k = 0; k < kBatch; ++k) {
+    for (std::size_t k = 0; k < kMaxBatch; ++k) {
         Dart& d = batch_[k];
         d.p.x = box_.x0 + rng.next_double() * w;
         d.p.y = box_.y0 + rng.next_double() * h;
@@ -100,7 +100,7 @@ void DartStage::draw_batch(Rng& rng) {
         }
     }
     batch_head_ = 0;
-    batch_size_ = kBatch;
+    batch_size_ = kMaxBatch;
 }
 
 bool DartStage::is_free(const Point& p, std::size_t cell) const {
@@ -240,8 +240,7 @@ Delaunay DartStage::triangulate(std::vector<std::uint32_t>& order) const {
     insertion_order(order.data(), key.data(), tmp_order.data(), tmp_key.data());
     Delaunay mesh(box_);
     mesh.reserve(n + Delaunay::kGhosts);
-    VertexIndex previous = 0;  // each walk starts at the last point: a neighbour
-    for (std::size_t i = 0; i < n; ++i) previous = mesh.insert(points_[order[i]], previous);
+    mesh.insert_in_order(points_, order.data(), n, [](std::uint32_t, VertexIndex) {});
     return mesh;
 }
 

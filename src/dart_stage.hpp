@@ -53,7 +53,13 @@ public:
     // Room for `points` points in all, and the hand-over's scratch; strong
     // guarantee (std::bad_alloc).
     void reserve(std::size_t points);
-    bool has_room_for(std::size_t points) const { return points_.capacity() >= points && order_.capacity() >= points; }
+    // Every vector reserve() grows: a reserve that failed half-way must not
+    // pass for room, or the hand-over would allocate.
+    bool has_room_for(std::size_t points) const {
+        return points_.capacity() >= points && order_.capacity() >= points &&
+               tmp_order_.capacity() >= points && key_.capacity() >= points &&
+               tmp_key_.capacity() >= points;
+    }
 
     std::size_t count() const override { return points_.size(); }
     const Point& point(PointIndex k) const override { return points_[k]; }
@@ -76,7 +82,6 @@ private:
     // Chosen by measurement (make bench): below about 4% a dart costs more per
     // point than the Delaunay stage does.
     static constexpr double kMinAcceptance = 0.04;
-    static constexpr std::size_t kBatch = kMaxBatch;
     static constexpr std::size_t kMinWindow = 256;  // darts per window, at least
     // Cells of side kCellShrink * R / sqrt 2: a diagonal under R even after
     // rounding, so a cell never holds two points.
@@ -132,7 +137,7 @@ private:
     std::vector<std::uint32_t> order_, tmp_order_;
     std::vector<std::uint64_t> key_, tmp_key_;
 
-    Dart batch_[kBatch];
+    Dart batch_[kMaxBatch];
     std::size_t batch_head_ = 0, batch_size_ = 0;
     std::size_t window_ = 0;         // darts per window
     std::size_t window_darts_ = 0;   // thrown in the current window

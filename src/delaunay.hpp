@@ -52,6 +52,20 @@ public:
     // from every vertex; `near` is where the walk starts. Returns p's vertex.
     std::uint32_t insert(const Point& p, std::uint32_t near);
 
+    // Inserts points[order[0]], points[order[1]], ... (n of them), each walk
+    // starting at the vertex inserted before it: a neighbour when the order
+    // is spatial (the dart stage's hand-over order). Calls inserted(k, v)
+    // for point k landing on vertex v. Requires room for all n.
+    template <class Inserted>
+    void insert_in_order(const std::vector<Point>& points, const std::uint32_t* order, std::size_t n,
+                         const Inserted& inserted) {
+        VertexIndex previous = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            previous = insert(points[order[i]], previous);
+            inserted(order[i], previous);
+        }
+    }
+
     std::size_t vertex_count() const { return points_.size(); }
     const Point& point(std::uint32_t v) const { return points_[v]; }
     const std::vector<Point>& points() const { return points_; }

@@ -33,21 +33,19 @@ void JonesStage::adopt(const std::vector<Point>& points, const std::uint32_t* or
     if (count() != 0 || !has_room_for(points.size())) throw std::logic_error("hand-over without room");
     const std::size_t n = points.size();
     order_.resize(n);
-    VertexIndex previous = 0;  // each walk starts at the last point: a neighbour
-    for (std::size_t i = 0; i < n; ++i) {
-        previous = dt_.insert(points[order[i]], previous);
-        order_.set(order[i], previous);
-    }
-    const MeshCells cells = this->cells();
+    dt_.insert_in_order(points, order, n, [&](std::uint32_t k, VertexIndex v) { order_.set(k, v); });
     tree_.resize(n);
-    for (SiteIndex site = 0; site < n; ++site) tree_.set_leaf_only(site, cells.measure(vertex_of(site)).area);
-    tree_.rebuild();
+    measure_all_cells();
 }
 
 void JonesStage::set_radius(double r) {
     drop_queue();
     has_first_ = false;
     r_ = r;
+    measure_all_cells();
+}
+
+void JonesStage::measure_all_cells() {
     const MeshCells cells = this->cells();
     for (SiteIndex site = 0; site < count(); ++site)
         tree_.set_leaf_only(site, cells.measure(vertex_of(site)).area);

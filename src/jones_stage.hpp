@@ -108,6 +108,8 @@ private:
         double weight;
     };
 
+    // Every cell's exact free area into the tree: O(N), no allocation.
+    void measure_all_cells();
     void adapt_batch_size();
     void drop_queue();
     bool still_free(const Point& p) const;

@@ -83,10 +83,13 @@ bool Sampler::step() {
 
 std::size_t Sampler::run(std::size_t max_new, bool* maximal) {
     const std::size_t n = count();
-    const std::size_t whole = frame_.count_bound_points() + 1;  // room enough to end maximal
-    if (max_new == 0 && whole > Frame::max_points()) throw LimitError(Limit::too_many_points, frame_.user_radius());
-    const std::size_t target = max_new != 0 && max_new < whole - std::min(whole, n) ? n + max_new : whole;
-    prepare(std::max(target, n + 1));
+    // Room to end maximal (Oler's bound; never below n, whatever its
+    // rounding), or for max_new more if fewer. prepare() refuses a total past
+    // the index space, so an unbounded run whose maximal pattern might not
+    // fit fails before any point.
+    const std::size_t whole = std::max(frame_.count_bound_points(), n) + 1;
+    const std::size_t target = max_new != 0 && max_new < whole - n ? n + max_new : whole;
+    prepare(target);
     std::size_t added = 0;
     while (max_new == 0 || added < max_new) {
         if (!add_one()) {

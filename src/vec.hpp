@@ -1,4 +1,5 @@
-// vec.hpp - the two products of plane vectors the cell geometry uses.
+// vec.hpp - the two products of plane vectors the cell geometry uses
+// (circumcentres, fan pieces, chunk angles), spelled once.
 #ifndef PDS_VEC_HPP
 #define PDS_VEC_HPP
 
