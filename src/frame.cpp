@@ -140,6 +140,12 @@ double Frame::radius_for_count(double n) const {
     return std::ldexp(r, -scale_exp_);
 }
 
+double Frame::lowest_count_radius(double n) const {
+    constexpr double kBelowEveryStep = 0.98;
+    const double area = box_.width() * box_.height();
+    return std::ldexp(kBelowEveryStep * std::sqrt(area / (M_PI * n)), -scale_exp_);
+}
+
 std::size_t Frame::count_bound_points() const {
     const double bound = count_bound();
     const double cap = static_cast<double>(max_points()) + 1.0;

@@ -79,6 +79,13 @@ public:
     double max_radius() const;
     // The user radius at which expected_count() is n.
     double radius_for_count(double n) const;
+    // A user radius below every radius count mode can reach on its way to n
+    // points (sampler.cpp, lower_radius_for_count): it lowers R only when the
+    // pattern is maximal at R with m < n points, and such a pattern's disks of
+    // radius R cover the domain, so A <= m pi R^2 < n pi R^2; a step lowers R
+    // by at most 1%. So R stays above 0.99 sqrt(A / (pi n)); 0.98 leaves room
+    // for rounding.
+    double lowest_count_radius(double n) const;
     // count_bound() as a count, saturated at max_points() + 1.
     std::size_t count_bound_points() const;
     // Largest number of points the index types and address space allow.

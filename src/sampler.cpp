@@ -60,6 +60,15 @@ void Sampler::prepare(std::size_t points) {
     if (!started()) {
         const Limit limit = frame_.precision_limit();
         if (limit != Limit::ok) throw LimitError(limit, frame_.user_radius());
+        // Count mode lowers the radius as it goes: the lowest it can reach is
+        // judged now, so a run never meets the limit half way.
+        if (count_target_ != 0) {
+            Frame lowest = frame_;
+            lowest.set_radius(std::min(frame_.user_radius(),
+                                       frame_.lowest_count_radius(static_cast<double>(count_target_))));
+            const Limit at_lowest = lowest.precision_limit();
+            if (at_lowest != Limit::ok) throw LimitError(at_lowest, lowest.user_radius());
+        }
         // Built aside, kept only when both exist: std::bad_alloc changes nothing.
         auto jones = std::make_unique<JonesStage>(frame_.box(), frame_.r(), frame_.torus());
         std::unique_ptr<DartStage> darts;

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
+#include "hash_map.hpp"
 #include "predicates.hpp"
 
 namespace pds {
@@ -29,61 +31,80 @@ bool check_real_points(const Delaunay& dt, const Torus& t, const std::vector<Ver
     return true;
 }
 
-bool check_distances(const Delaunay& dt, const Torus& t, const std::vector<VertexIndex>& real, double r,
-                     VerifyReport& rep) {
-    // Buckets at least R (and a little) wide, wrapped: a point closer than R
-    // to p, in any copy, lies in p's bucket or a neighbour's, whatever the
-    // rounding of the bucket index.
-    const auto buckets_along = [r](double period) {
-        const double n = std::floor(period / (1.001 * r));
-        return n < 1.0 ? std::size_t{1} : static_cast<std::size_t>(std::min(n, 65536.0));
-    };
-    const std::size_t nx = buckets_along(t.px), ny = buckets_along(t.py);
-    const auto bucket = [&](const Point& p, std::size_t* bx, std::size_t* by) {
-        const double fx = (p.x - t.x0) / t.px * static_cast<double>(nx);
-        const double fy = (p.y - t.y0) / t.py * static_cast<double>(ny);
-        *bx = std::min(nx - 1, static_cast<std::size_t>(std::max(0.0, fx)));
-        *by = std::min(ny - 1, static_cast<std::size_t>(std::max(0.0, fy)));
-    };
-    std::vector<std::size_t> start(nx * ny + 1, 0);
-    for (VertexIndex v : real) {
-        std::size_t bx, by;
-        bucket(dt.point(v), &bx, &by);
-        ++start[by * nx + bx + 1];
+// Buckets at least R (and a little) wide, wrapped: a point closer than R to p,
+// in any copy, lies in p's bucket or a neighbour's, whatever the rounding of
+// the bucket index. Only occupied buckets are stored (a hash map from bucket to
+// its first point, the rest chained), so memory follows the points, not the
+// periods over R.
+class WrappedBuckets {
+public:
+    WrappedBuckets(const Delaunay& dt, const Torus& t, const std::vector<VertexIndex>& real, double r)
+        : t_(t), nx_(along(t.px, r)), ny_(along(t.py, r)), next_(real.size(), kEnd) {
+        heads_.reserve(real.size());
+        for (std::size_t i = 0; i < real.size(); ++i) {
+            const std::uint64_t k = key(column(dt.point(real[i])), row(dt.point(real[i])));
+            const std::uint32_t* head = heads_.find(k);
+            next_[i] = head ? *head : kEnd;
+            heads_.insert_or_assign(k, static_cast<std::uint32_t>(i));
+        }
     }
-    for (std::size_t b = 0; b < nx * ny; ++b) start[b + 1] += start[b];
-    std::vector<VertexIndex> members(real.size());
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (VertexIndex v : real) {
-        std::size_t bx, by;
-        bucket(dt.point(v), &bx, &by);
-        members[fill[by * nx + bx]++] = v;
-    }
-    for (VertexIndex v : real) {
-        const Point& p = dt.point(v);
-        std::size_t bx, by;
-        bucket(p, &bx, &by);
-        for (long dx = -1; dx <= 1; ++dx) {
-            for (long dy = -1; dy <= 1; ++dy) {
+
+    // Calls visit(i, sx, sy) for each indexed point i (a position in `real`)
+    // whose copy shifted by (sx, sy) periods may lie within R of p.
+    template <class Visit>
+    void for_each_near(const Point& p, const Visit& visit) const {
+        const std::int64_t bx = column(p), by = row(p);
+        for (std::int64_t dx = -1; dx <= 1; ++dx) {
+            for (std::int64_t dy = -1; dy <= 1; ++dy) {
                 // The neighbour bucket, wrapped, and the shift that brings its
                 // points next to p.
-                const long cx = static_cast<long>(bx) + dx, cy = static_cast<long>(by) + dy;
-                const long sx = cx < 0 ? -1 : (cx >= static_cast<long>(nx) ? 1 : 0);
-                const long sy = cy < 0 ? -1 : (cy >= static_cast<long>(ny) ? 1 : 0);
-                const std::size_t wx = static_cast<std::size_t>(cx - sx * static_cast<long>(nx));
-                const std::size_t wy = static_cast<std::size_t>(cy - sy * static_cast<long>(ny));
-                const std::size_t b = wy * nx + wx;
-                for (std::size_t m = start[b]; m < start[b + 1]; ++m) {
-                    const VertexIndex u = members[m];
-                    if (u == v && sx == 0 && sy == 0) continue;
-                    const Point q = t.shifted(dt.point(u), static_cast<int>(sx), static_cast<int>(sy));
-                    if (compare_distance(p, q, r) < 0) {
-                        rep.failure = "two points are closer than the radius on the torus";
-                        rep.vertex = v;
-                        return false;
-                    }
-                }
+                const std::int64_t cx = bx + dx, cy = by + dy;
+                const int sx = cx < 0 ? -1 : (cx >= nx_ ? 1 : 0);
+                const int sy = cy < 0 ? -1 : (cy >= ny_ ? 1 : 0);
+                const std::uint32_t* head = heads_.find(key(cx - sx * nx_, cy - sy * ny_));
+                for (std::uint32_t i = head ? *head : kEnd; i != kEnd; i = next_[i]) visit(i, sx, sy);
             }
+        }
+    }
+
+private:
+    static constexpr std::uint32_t kEnd = 0xFFFFFFFFu;
+    // Buckets per period: whole, at least 1.001 R wide, at most 2^30 (a coarser
+    // bucket holds more points: time, not correctness).
+    static std::int64_t along(double period, double r) {
+        const double n = std::floor(period / (1.001 * r));
+        return n < 1.0 ? 1 : static_cast<std::int64_t>(std::min(n, 0x1.0p30));
+    }
+    static std::int64_t index(double offset, double period, std::int64_t n) {
+        const double f = offset / period * static_cast<double>(n);
+        return std::min(n - 1, static_cast<std::int64_t>(std::max(0.0, f)));
+    }
+    std::int64_t column(const Point& p) const { return index(p.x - t_.x0, t_.px, nx_); }
+    std::int64_t row(const Point& p) const { return index(p.y - t_.y0, t_.py, ny_); }
+    static std::uint64_t key(std::int64_t x, std::int64_t y) {
+        return (static_cast<std::uint64_t>(y) << 32) | static_cast<std::uint64_t>(x);
+    }
+
+    const Torus& t_;
+    std::int64_t nx_, ny_;
+    HashMap heads_;
+    std::vector<std::uint32_t> next_;
+};
+
+bool check_distances(const Delaunay& dt, const Torus& t, const std::vector<VertexIndex>& real, double r,
+                     VerifyReport& rep) {
+    const WrappedBuckets buckets(dt, t, real, r);
+    for (std::size_t i = 0; i < real.size(); ++i) {
+        const Point& p = dt.point(real[i]);
+        bool close = false;
+        buckets.for_each_near(p, [&](std::uint32_t j, int sx, int sy) {
+            if (close || (j == i && sx == 0 && sy == 0)) return;
+            close = compare_distance(p, t.shifted(dt.point(real[j]), sx, sy), r) < 0;
+        });
+        if (close) {
+            rep.failure = "two points are closer than the radius on the torus";
+            rep.vertex = real[i];
+            return false;
         }
     }
     return true;

@@ -3,14 +3,17 @@
  *
  * fuzz_decode.c turns the fuzzer's bytes into hostile arguments;
  * fuzz_check.c holds the contract checks, which abort() on a violation so
- * libFuzzer reports the input; fuzz_ops.c makes the calls and fuzz_api.c,
- * the entry point, chooses them from the input.
+ * libFuzzer reports the input, and fuzz_torus.c the model of the torus and
+ * of count mode; fuzz_ops.c, fuzz_ops12.c and fuzz_misc.c make the calls and
+ * fuzz_api.c, the entry point, chooses them from the input; fuzz_progress.c
+ * is the progress callback, fuzz_replay.c the determinism check.
  */
 #ifndef PDS_FUZZ_H
 #define PDS_FUZZ_H
 
 #include <stddef.h>
 #include <stdint.h>
+#include <time.h>
 
 #include <poissondisk.h>
 
@@ -46,8 +49,34 @@ void fz_domain(fz_reader *r, double radius, double out[4]);
 size_t fz_size(fz_reader *r, size_t n);
 /* A max_new for pds_run: 0 (no limit), small, or huge. */
 size_t fz_max_new(fz_reader *r);
+/* An n for pds_set_count: 0, small, around the budget, around the index
+ * space (~3.58e8), far beyond it. */
+size_t fz_count_n(fz_reader *r);
+/* A flag for pds_set_periodic: 0, 1 and other nonzero ints. */
+int fz_flag(fz_reader *r);
 
 /* ---- the harness's model of one sampler (fuzz_check.c) -------------------------- */
+
+/* The progress callback's settings and what it saw during the current pds_run. */
+typedef struct {
+    int on;                /* a callback is set on s */
+    unsigned cancel_every; /* ask to stop at every k-th call (0: never) */
+    unsigned change;       /* which changing call to try from inside (0: none) */
+    size_t calls;          /* calls since it was set */
+    int in_run;            /* fz_run is inside pds_run: the only place fn may run */
+    size_t run_calls, run_before, last_count;
+    double last_done, run_radius;
+    size_t stops;          /* calls in this run that asked to stop */
+    int last_stopped;      /* the latest call asked to stop */
+    time_t started;
+} fz_progress;
+
+/* A successful pds_refine at `count` points: replayed by fz_replay_check. */
+typedef struct {
+    size_t count;
+    double radius;
+} fz_event;
+#define FZ_MAX_EVENTS 64
 
 typedef struct {
     pds_sampler *s;
@@ -58,14 +87,25 @@ typedef struct {
     size_t count;   /* what pds_count(s) must return */
     size_t seen;    /* how many points pts holds (fz_sync reads the new ones) */
     size_t cap;     /* capacity of pts and tmp, in points */
-    int maximal;    /* s said the pattern is maximal at this radius */
+    int maximal;    /* s said the pattern is maximal at this radius (count mode: has n points) */
     int checked;    /* that maximal pattern's contract was checked */
     size_t budget;  /* points this input may still add (keeps it fast) */
     char msg[512];  /* pds_errmsg(s) after the last call on s */
+    /* 1.2 */
+    int periodic;   /* pds_set_periodic(s, nonzero) is in force */
+    double per[2];  /* the periods on the torus (x1-x0, y1-y0 rounded down to q) */
+    double q;       /* the torus's quantum 2^(e-50); 0 when not periodic */
+    size_t target;  /* count mode: the n of pds_set_count; 0 otherwise */
+    fz_progress prog;
+    double c_radius; /* pds_create's arguments, for the replay */
+    uint64_t c_seed;
+    fz_event ev[FZ_MAX_EVENTS];
+    size_t n_ev;     /* FZ_MAX_EVENTS + 1: too many to replay */
+    int run_failed;  /* a step or run failed after the first point (ENOMEM, ERANGE) */
 } fz_state;
 
-/* Bit of a return code in an "allowed codes" mask (codes -5 .. 1). */
-#define FZ_BIT(code) (1u << ((code) + 5))
+/* Bit of a return code in an "allowed codes" mask (codes -6 .. 1). */
+#define FZ_BIT(code) (1u << ((code) + 6))
 #define FZ_OK (FZ_BIT(0))
 #define FZ_MORE (FZ_BIT(1))
 
@@ -86,11 +126,12 @@ void fz_codes(fz_state *st, const char *fn, int rc, unsigned allowed);
 /* pds_count(s) is st->count, pds_radius(s) st->radius, the points read before
  * are unchanged bit for bit, new ones are finite and inside the domain. */
 void fz_sync(fz_state *st);
-/* Every pair at least R apart (within 1e-12 relative), every point inside
- * the closed domain. O(n sqrt n) by a sweep along the domain's long side. */
+/* Every pair at least R apart (within 1e-12 relative; wrapped on the torus),
+ * every point inside the domain. O(n sqrt n) by a sweep along the long side. */
 void fz_check_pattern(const fz_state *st);
 /* After "maximal": pds_verify 0, pds_free_area 0, no step or run adds a
- * point, and fz_check_pattern. */
+ * point, and fz_check_pattern. In count mode after "complete" (n points):
+ * pds_verify 0 or 1, pds_refine PDS_ESTATE, nothing added. */
 void fz_check_maximal(fz_state *st);
 /* pds_free_area(s): never negative or NaN, 0 when maximal, the domain's area
  * before the first point, at most that area later. */
@@ -103,8 +144,31 @@ double fz_count_bound(const fz_state *st);
  * domain's largest |coordinate|, coordinates not all below 2^-900, and no
  * nonzero one below 2^-900 of the largest). */
 int fz_precision_ok(const fz_state *st, double radius);
+/* The radius is above half the shorter period of the torus (slack: relative). */
+int fz_above_half_period(const fz_state *st, double radius, double slack);
+/* Point (x, y) lies in the domain: closed, or half-open and on the quantum grid
+ * on the torus. */
+int fz_inside(const fz_state *st, double x, double y);
+/* Recompute the torus's periods and quantum after a change of domain or kind. */
+void fz_set_torus(fz_state *st);
+/* Count mode: pds_radius(s) read again after a change; before the first point
+ * it must be the documented start radius. */
+void fz_count_radius(fz_state *st);
+
+/* ---- progress and determinism (fuzz_progress.c) ---------------------------------- */
+
+/* pds_run with the callback's bookkeeping around it; checks the reports after. */
+int fz_run(fz_state *st, size_t max_new, size_t *added);
+int fz_progress_cb(void *user, size_t count, double done);
+/* Replays create, domain, kind, count and the refines in a second sampler
+ * without callback in a few large runs: the points must be the same bytes. */
+void fz_replay_check(fz_state *st);
 
 /* ---- operations: one kind of public call each (fuzz_ops.c) ---------------------- */
+
+/* The codes that moved between 1.1.0 and 1.1.1 (see FZ_SPEC_111). */
+static inline unsigned fz_range_if_111(void) { return FZ_SPEC_111 ? FZ_BIT(PDS_ERANGE) : 0u; }
+static inline unsigned fz_range_unless_111(void) { return FZ_SPEC_111 ? 0u : FZ_BIT(PDS_ERANGE); }
 
 /* Points one input may add (with the read budget in fuzz_api.c: milliseconds). */
 #define FZ_BUDGET 5000
@@ -122,5 +186,9 @@ void fz_op_nulls(fz_state *st);
 void fz_op_strerror(fz_state *st, fz_reader *r);
 void fz_op_version(void);
 void fz_op_create_bad(fz_state *st, fz_reader *r);
+/* 1.2 (fuzz_ops12.c) */
+void fz_op_periodic(fz_state *st, fz_reader *r);
+void fz_op_count(fz_state *st, fz_reader *r);
+void fz_op_progress(fz_state *st, fz_reader *r);
 
 #endif /* PDS_FUZZ_H */

@@ -11,6 +11,8 @@
  * Input: the first bytes make a sampler (pds_create with a decoded radius and
  * seed); then each byte names an operation (low 4 bits) with a small parameter
  * (high 4 bits), and the operation reads its own arguments (fuzz_decode.c).
+ * Operation 14 with parameter 0 is the version check; with 1-4 it is
+ * pds_set_periodic, 5-9 pds_set_count, 10-15 pds_set_progress (1.2).
  * Past the end every read gives zeros; at most 64 operations.
  *
  * Checked after every call (fuzz_check.c): the code is one the header allows
@@ -18,6 +20,12 @@
  * failed call leaves count, radius and points as they were; points never move
  * once returned and lie inside the closed domain. After "maximal": every pair
  * at least R apart, pds_verify 0, pds_free_area 0, nothing more can be added.
+ * On the torus: points in [x0,x1)x[y0,y1) on the quantum grid, distances
+ * wrapped (fuzz_torus.c). In count mode: PDS_DONE exactly at n points, the
+ * documented start radius, pairs at least the (lowered) radius apart. The
+ * progress callback's reports and cancels: fuzz_progress.c. Before a sampler
+ * is dropped, a second one replays its calls without the splits and the
+ * callback and must give the same bytes (fuzz_replay.c).
  * Any violation calls abort(), which libFuzzer reports with the input.
  *
  * Bounded work (an input must run in milliseconds): calls that add points
@@ -78,7 +86,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         static const char *const names[16] = {
             "create", "set_domain", "step", "run", "refine", "points", "verify", "free_area",
             "nulls", "strerror", "destroy", "run_to_end", "run_chunks", "create_bad",
-            "version", "check"};
+            "version/1.2", "check"};
         trace(&st, names[b & 15]);
         switch (b & 15) {
             case 0: fz_op_create(&st, &r, arg); break;
@@ -93,11 +101,24 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             case 7: if (afford_read(&st, &reads)) fz_check_free_area(&st); break;
             case 8: fz_op_nulls(&st); break;
             case 9: fz_op_strerror(&st, &r); break;
-            case 10: pds_destroy(st.s); fz_reset(&st, NULL, 1.0); break;
+            case 10:
+                fz_replay_check(&st);
+                pds_destroy(st.s);
+                fz_reset(&st, NULL, 1.0);
+                break;
             case 11: fz_op_run_to_end(&st, arg); break;
             case 12: fz_op_run_chunks(&st, arg); break;
             case 13: fz_op_create_bad(&st, &r); break;
-            case 14: fz_op_version(); break;
+            case 14:
+                if (arg == 0)
+                    fz_op_version();
+                else if (arg <= 4)
+                    fz_op_periodic(&st, &r);
+                else if (arg <= 9)
+                    fz_op_count(&st, &r);
+                else
+                    fz_op_progress(&st, &r);
+                break;
             default:
                 fz_sync(&st);
                 if (afford_read(&st, &reads)) fz_check_pattern(&st);
@@ -108,6 +129,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* Whatever the sequence left: a Poisson-disk set inside the domain. */
     fz_sync(&st);
     fz_check_pattern(&st);
+    fz_replay_check(&st);
     pds_destroy(st.s);
     free(st.pts);
     free(st.tmp);

@@ -5,6 +5,9 @@
  * with a 1e-12 relative tolerance: the library decides exactly, the quotients
  * here round, and a real bug (a pair at 0.98 R) is far outside the tolerance.
  * Dividing by R first keeps the squares finite for coordinates near 1e300.
+ * On the torus a difference d is wrapped to min(|d|, |p - |d||) with the
+ * period p of the model (fuzz_torus.c): both are multiples of the quantum
+ * there, so the wrapped difference is exact before the division.
  */
 #include "fuzz.h"
 
@@ -32,7 +35,7 @@ void fz_codes(fz_state *st, const char *fn, int rc, unsigned allowed)
     if (tracing < 0) tracing = getenv("PDS_FUZZ_TRACE") != NULL;
     if (tracing) fprintf(stderr, "fuzz:   %s -> %d\n", fn, rc);
     FZ_CHECK(rc != PDS_EINTERNAL, "%s: PDS_EINTERNAL: %s", fn, st->s ? pds_errmsg(st->s) : "");
-    FZ_CHECK(rc >= -5 && rc <= 1 && (allowed & FZ_BIT(rc)), "%s returned %d (%s), not a code "
+    FZ_CHECK(rc >= -6 && rc <= 1 && (allowed & FZ_BIT(rc)), "%s returned %d (%s), not a code "
              "the contract allows here%s%s", fn, rc, text ? text : "(null)",
              st->s ? ": " : "", st->s ? pds_errmsg(st->s) : "");
     FZ_CHECK(text != NULL && text[0] != '\0', "pds_strerror(%d) is empty", rc);
@@ -61,11 +64,6 @@ static void grow(fz_state *st, size_t n)
     st->cap = cap;
 }
 
-static int inside(const double dom[4], double x, double y)
-{
-    return dom[0] <= x && x <= dom[2] && dom[1] <= y && y <= dom[3];
-}
-
 void fz_sync(fz_state *st)
 {
     size_t n, got, i;
@@ -89,8 +87,9 @@ void fz_sync(fz_state *st)
     for (i = 0; i < n; i++) {
         const double x = st->tmp[2 * i], y = st->tmp[2 * i + 1];
         FZ_CHECK(isfinite(x) && isfinite(y), "point %zu is (%g, %g)", i, x, y);
-        FZ_CHECK(inside(st->dom, x, y), "point %zu (%.17g, %.17g) outside [%.17g,%.17g]x"
-                 "[%.17g,%.17g]", i, x, y, st->dom[0], st->dom[2], st->dom[1], st->dom[3]);
+        FZ_CHECK(fz_inside(st, x, y), "point %zu (%.17g, %.17g) outside [%.17g,%.17g%sx"
+                 "[%.17g,%.17g%s", i, x, y, st->dom[0], st->dom[2], st->periodic ? ")" : "]",
+                 st->dom[1], st->dom[3], st->periodic ? ") or off the quantum grid" : "]");
     }
     t = st->pts;
     st->pts = st->tmp;
@@ -99,7 +98,8 @@ void fz_sync(fz_state *st)
 }
 
 typedef struct {
-    double key, x, y;
+    double key, across; /* the coordinates along and across the sweep */
+    size_t id;          /* the point's index (a copy shifted by a period shares it) */
 } swept;
 
 static int by_key(const void *a, const void *b)
@@ -113,28 +113,44 @@ void fz_check_pattern(const fz_state *st)
     const size_t n = st->seen;
     const double r = st->radius;
     /* Sweep along the long side: few points lie in a window R wide across it. */
-    const int along_x = (st->dom[2] - st->dom[0]) >= (st->dom[3] - st->dom[1]);
+    const int ax = (st->dom[2] - st->dom[0]) >= (st->dom[3] - st->dom[1]) ? 0 : 1;
+    const double lo = st->dom[ax];
+    const double p_along = st->periodic ? st->per[ax] : 0.0;
+    const double p_across = st->periodic ? st->per[1 - ax] : 0.0;
     swept *p;
-    size_t i, j;
+    size_t i, j, m = n;
 
     if (n < 2) return;
-    p = malloc(n * sizeof *p);
+    /* On the torus, copies shifted by one period along the sweep of the points
+     * within R of its start meet the points near its end. */
+    p = malloc(2 * n * sizeof *p);
     FZ_CHECK(p != NULL, "harness out of memory (%zu points)", n);
     for (i = 0; i < n; i++) {
-        p[i].x = st->pts[2 * i];
-        p[i].y = st->pts[2 * i + 1];
-        p[i].key = along_x ? p[i].x : p[i].y;
-        FZ_CHECK(inside(st->dom, p[i].x, p[i].y), "point %zu outside the domain", i);
+        const double x = st->pts[2 * i], y = st->pts[2 * i + 1];
+        FZ_CHECK(fz_inside(st, x, y), "point %zu outside the domain", i);
+        p[i].key = ax == 0 ? x : y;
+        p[i].across = ax == 0 ? y : x;
+        p[i].id = i;
+        if (p_along > 0.0 && (p[i].key - lo) / r <= 1.0 + 1e-9) {
+            p[m] = p[i];
+            p[m].key += p_along;
+            m++;
+        }
     }
-    qsort(p, n, sizeof *p, by_key);
-    for (i = 0; i < n; i++) {
-        for (j = i + 1; j < n; j++) {
-            const double u = (p[j].x - p[i].x) / r, v = (p[j].y - p[i].y) / r;
-            const double along = along_x ? u : v;
-            if (along > 1.0) break; /* this pair and every later one are >= R apart */
-            FZ_CHECK(u * u + v * v >= 1.0 - 1e-12, "points (%.17g, %.17g) and (%.17g, %.17g) "
-                     "are %.17g R apart (R = %.17g, %zu points)", p[i].x, p[i].y, p[j].x,
-                     p[j].y, sqrt(u * u + v * v), r, n);
+    qsort(p, m, sizeof *p, by_key);
+    for (i = 0; i < m; i++) {
+        for (j = i + 1; j < m; j++) {
+            const double u = (p[j].key - p[i].key) / r;
+            double d = fabs(p[j].across - p[i].across), v;
+            if (u > 1.0) break; /* this pair and every later one are >= R apart */
+            if (p[i].id == p[j].id) continue; /* a point and its own copy: a period apart */
+            if (p_across > 0.0 && fabs(p_across - d) < d) d = fabs(p_across - d);
+            v = d / r;
+            FZ_CHECK(u * u + v * v >= 1.0 - 1e-12, "points %zu (%.17g, %.17g) and %zu (%.17g, "
+                     "%.17g) are %.17g R apart%s (R = %.17g, %zu points)", p[i].id,
+                     st->pts[2 * p[i].id], st->pts[2 * p[i].id + 1], p[j].id,
+                     st->pts[2 * p[j].id], st->pts[2 * p[j].id + 1], sqrt(u * u + v * v),
+                     st->periodic ? " on the torus" : "", r, n);
         }
     }
     free(p);
@@ -154,7 +170,9 @@ void fz_check_free_area(fz_state *st)
         return;
     }
     FZ_CHECK(!isnan(a) && a >= 0.0, "pds_free_area is %g", a);
-    if (st->maximal) FZ_CHECK(a == 0.0, "pds_free_area is %g on a maximal pattern", a);
+    /* In count mode "complete" means n points, maximal only at an earlier radius. */
+    if (st->maximal && st->target == 0)
+        FZ_CHECK(a == 0.0, "pds_free_area is %g on a maximal pattern", a);
     if (isfinite(area) && area > 1e-290) {
         if (st->count == 0)
             FZ_CHECK(fabs(a - area) <= 1e-9 * area, "pds_free_area is %.17g before the first "
@@ -173,13 +191,23 @@ void fz_check_maximal(fz_state *st)
     if (st->checked) return;
     rc = pds_verify(st->s);
     fz_codes(st, "pds_verify", rc, FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM));
-    FZ_CHECK(rc == 0 || rc == PDS_ENOMEM, "pds_verify is %d on a pattern reported maximal", rc);
+    /* Count mode: n points; maximal at the radius before the last (PDS_MORE). */
+    FZ_CHECK(rc == 0 || rc == PDS_ENOMEM || (st->target != 0 && rc == 1),
+             "pds_verify is %d on a pattern reported %s", rc,
+             st->target ? "complete" : "maximal");
+    FZ_CHECK(st->target == 0 || st->count == st->target, "count mode: complete at %zu points, "
+             "n = %zu", st->count, st->target);
     fz_check_free_area(st);
     rc = pds_step(st->s);
     fz_codes(st, "pds_step", rc, FZ_OK | FZ_BIT(PDS_ENOMEM));
-    rc = pds_run(st->s, (size_t)st->count % 3, &added); /* 0 (no limit), 1 or 2 */
+    rc = fz_run(st, (size_t)st->count % 3, &added); /* 0 (no limit), 1 or 2 */
     fz_codes(st, "pds_run", rc, FZ_OK | FZ_BIT(PDS_ENOMEM));
-    FZ_CHECK(added == 0, "pds_run added %zu points to a maximal pattern", added);
+    FZ_CHECK(added == 0, "pds_run added %zu points to a %s pattern", added,
+             st->target ? "complete" : "maximal");
+    if (st->target != 0) {
+        rc = pds_refine(st->s, st->radius * 0.5);
+        fz_codes(st, "pds_refine", rc, FZ_BIT(PDS_ESTATE));
+    }
     fz_sync(st);
     fz_check_pattern(st);
     st->checked = 1;
@@ -194,6 +222,14 @@ void fz_reset(fz_state *st, pds_sampler *s, double radius)
     st->radius = radius;
     st->count = st->seen = 0;
     st->maximal = st->checked = 0;
+    st->periodic = 0;
+    st->per[0] = st->per[1] = st->q = 0.0;
+    st->target = 0;
+    memset(&st->prog, 0, sizeof st->prog);
+    st->c_radius = radius;
+    st->c_seed = 0;
+    st->n_ev = 0;
+    st->run_failed = 0;
     msg = s ? pds_errmsg(s) : "";
     FZ_CHECK(s == NULL || strcmp(msg, "no error") == 0, "a new sampler's pds_errmsg is \"%s\"",
              msg);

@@ -9,6 +9,7 @@
 #include "fuzz.h"
 
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -229,4 +230,26 @@ size_t fz_max_new(fz_reader *r)
             return (v << 8 | fz_u8(r)) % 4096 + 1;
         }
     }
+}
+
+/* n for pds_set_count. The index space holds (2^30 - 1)/3 - ghosts, about
+ * 357913941 points; 3e15 is where R(n) of any domain falls below 2^-26 of it. */
+static const size_t kCount[] = {
+    0,         1,          2,          3,         5,        10,         37,
+    100,       500,        1000,       4999,      5000,     20000,      100000,
+    2000000,   357913900,  357913941,  400000000, 1000000000, (size_t)1e12, (size_t)3e15,
+    (size_t)1e17, SIZE_MAX, SIZE_MAX / 2, (size_t)UINT32_MAX, (size_t)UINT32_MAX + 1,
+};
+
+size_t fz_count_n(fz_reader *r)
+{
+    const unsigned sel = fz_u8(r);
+    if (sel % 4 == 3) return fz_u8(r) % 64 + 1; /* small counts, where steps are many */
+    return kCount[sel / 4 % N_OF(kCount)];
+}
+
+int fz_flag(fz_reader *r)
+{
+    static const int kFlag[] = {1, 0, -1, 2, INT_MAX, INT_MIN, 1, 0};
+    return PICK(r, kFlag);
 }

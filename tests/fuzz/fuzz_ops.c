@@ -37,13 +37,15 @@ static int work_allowed(const fz_state *st)
 {
     const double n = fz_count_bound(st);
     if (st->s == NULL || st->budget == 0) return WORK_NONE;
-    if (n <= FZ_TO_END_MAX && n <= (double)st->budget) return WORK_TO_END;
+    /* Count mode ends at n points; the dart stage's grid still follows the bound. */
+    if (st->target != 0 && (double)st->target <= FZ_TO_END_MAX &&
+        st->target - st->count <= st->budget)
+        return WORK_TO_END;
+    if (st->target == 0 && n <= FZ_TO_END_MAX && n <= (double)st->budget) return WORK_TO_END;
     if (n <= FZ_GRID_MAX || n >= FZ_NO_GRID) return WORK_BOUNDED;
     return WORK_NONE;
 }
 
-static unsigned range_if_111(void) { return FZ_SPEC_111 ? FZ_BIT(PDS_ERANGE) : 0u; }
-static unsigned range_unless_111(void) { return FZ_SPEC_111 ? 0u : FZ_BIT(PDS_ERANGE); }
 
 /* The points added by a successful or failed call that adds points. */
 static void account(fz_state *st, size_t added)
@@ -56,12 +58,53 @@ static void account(fz_state *st, size_t added)
     }
 }
 
+/* The lowest radius the run may reach: in count mode the library lowers the
+ * radius only while a maximal pattern holds m < n points, whose disks cover the
+ * area A, so it stays above 0.99 sqrt(A / (pi n)); it judges 0.98 of that at
+ * the first point (found/NOTES, count_below_precision). */
+static double lowest_radius(const fz_state *st)
+{
+    double area, low;
+    if (st->target == 0) return st->radius;
+    area = (st->dom[2] - st->dom[0]) * (st->dom[3] - st->dom[1]);
+    low = 0.98 * sqrt(area / (3.14159265358979323846 * (double)st->target));
+    return low < st->radius ? low : st->radius;
+}
+
+/* PDS_ERANGE from pds_step or pds_run (nothing added): allowed when the precision
+ * limit is near the lowest radius of the run, when `want` points might not fit
+ * the index space, or on the torus above half the shorter period; required
+ * there at the first point. */
+static void check_range(fz_state *st, const char *fn, int rc, double want, size_t before)
+{
+    const int may = !fz_precision_ok(st, lowest_radius(st)) || want >= 3e8 ||
+                    fz_above_half_period(st, st->radius, -1e-9);
+    if (!FZ_SPEC_111) return;
+    if (rc == PDS_ERANGE)
+        FZ_CHECK(may, "%s returned PDS_ERANGE for %.3g points at R %.17g%s: %s", fn, want,
+                 st->radius, st->periodic ? " on the torus" : "", pds_errmsg(st->s));
+    if (before == 0 && fz_above_half_period(st, st->radius, 1e-9))
+        FZ_CHECK(rc == PDS_ERANGE, "%s returned %d at R %.17g, above half the shorter period "
+                 "of the torus [%.17g,%.17g)x[%.17g,%.17g)", fn, rc, st->radius, st->dom[0],
+                 st->dom[2], st->dom[1], st->dom[3]);
+}
+
+/* Count mode: the radius may have been lowered; it never grows. */
+static void reread_radius(fz_state *st, const char *fn)
+{
+    const double r = pds_radius(st->s);
+    if (st->target == 0) return;
+    FZ_CHECK(r <= st->radius, "%s: the radius went from %.17g to %.17g", fn, st->radius, r);
+    st->radius = r;
+}
+
 /* pds_run; sync_now reads the points back (O(n): not after every small chunk). */
 static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
 {
     size_t added = (size_t)-7, now;
     const size_t before = st->count;
-    const int rc = pds_run(st->s, max_new, want_added ? &added : NULL);
+    const int rc = fz_run(st, max_new, want_added ? &added : NULL);
+    const unsigned cancel = st->prog.on ? FZ_BIT(PDS_ECANCELED) : 0u;
     double want;
 
     if (st->s == NULL) {
@@ -69,33 +112,39 @@ static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
         FZ_CHECK(!want_added || added == 0, "pds_run(NULL) set added to %zu", added);
         return rc;
     }
-    fz_codes(st, "pds_run", rc, FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM) | range_if_111());
+    fz_codes(st, "pds_run", rc,
+             FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM) | fz_range_if_111() | cancel);
     now = pds_count(st->s);
     FZ_CHECK(now >= before, "pds_run: the count fell from %zu to %zu", before, now);
     if (want_added)
         FZ_CHECK(added == now - before, "pds_run returned %d, added %zu, count grew by %zu", rc,
                  added, now - before);
     added = now - before;
-    /* Only PDS_ENOMEM in the exact fallback may keep the points added before it. */
-    FZ_CHECK(rc >= 0 || rc == PDS_ENOMEM || added == 0, "pds_run failed (%d) and added %zu",
-             rc, added);
+    /* Only PDS_ENOMEM in the exact fallback and a cancel keep the points added before. */
+    FZ_CHECK(rc >= 0 || rc == PDS_ENOMEM || rc == PDS_ECANCELED || added == 0,
+             "pds_run failed (%d: %s) and added %zu", rc, pds_errmsg(st->s), added);
     FZ_CHECK(rc != 1 || (max_new != 0 && added == max_new),
              "pds_run(max_new %zu) returned 1 after adding %zu", max_new, added);
-    FZ_CHECK(rc != 0 || max_new == 0 || added <= max_new, "pds_run(max_new %zu) added %zu",
+    FZ_CHECK(rc > 0 || max_new == 0 || added <= max_new, "pds_run(max_new %zu) added %zu",
              max_new, added);
-    FZ_CHECK(!st->maximal || rc == 0, "pds_run returned %d on a maximal pattern", rc);
+    FZ_CHECK(!st->maximal || rc == 0, "pds_run returned %d on a %s pattern", rc,
+             st->target ? "complete" : "maximal");
+    /* Count mode: PDS_DONE exactly when the n-th point exists. */
+    if (st->target != 0 && (rc == 0 || rc == 1))
+        FZ_CHECK((rc == 0) == (now == st->target), "count mode: pds_run returned %d at %zu of "
+                 "%zu points", rc, now, st->target);
     /* 1.1.1: PDS_ERANGE only for precision or when the points asked for (capped
-     * by the bound) cannot fit ~3.5e8 indices; and then it must come. */
-    want = fz_count_bound(st);
+     * by the bound; in count mode by n) cannot fit ~3.5e8 indices; and then it
+     * must come. */
+    want = st->target != 0 ? (double)st->target : fz_count_bound(st);
     if (max_new != 0 && (double)before + (double)max_new < want)
         want = (double)before + (double)max_new;
-    if (FZ_SPEC_111 && rc == PDS_ERANGE)
-        FZ_CHECK(!fz_precision_ok(st, st->radius) || want >= 3e8,
-                 "pds_run(max_new %zu) returned PDS_ERANGE for %.3g points at R %.17g: %s",
-                 max_new, want, st->radius, pds_errmsg(st->s));
+    check_range(st, "pds_run", rc, want, before);
     if (FZ_SPEC_111 && want >= 1e9)
         FZ_CHECK(rc == PDS_ERANGE, "pds_run(max_new %zu) returned %d for %.3g points", max_new,
                  rc, want);
+    if (before + added > 0 && (rc == PDS_ENOMEM || rc == PDS_ERANGE)) st->run_failed = 1;
+    reread_radius(st, "pds_run");
     account(st, added);
     if (rc == 0) st->maximal = 1;
     if (sync_now || rc == 0) fz_sync(st);
@@ -110,11 +159,14 @@ static int call_step(fz_state *st, int sync_now)
         fz_codes(st, "pds_step", rc, FZ_BIT(PDS_EINVAL));
         return rc;
     }
-    fz_codes(st, "pds_step", rc, FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM) | range_if_111());
-    if (FZ_SPEC_111 && rc == PDS_ERANGE)
-        FZ_CHECK(!fz_precision_ok(st, st->radius), "pds_step: PDS_ERANGE at R %.17g: %s",
-                 st->radius, pds_errmsg(st->s));
+    fz_codes(st, "pds_step", rc, FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM) | fz_range_if_111());
+    check_range(st, "pds_step", rc, (double)st->count + 1.0, st->count);
     FZ_CHECK(rc != 0 || st->count > 0, "pds_step: maximal without a point");
+    if (st->target != 0 && (rc == 0 || rc == 1))
+        FZ_CHECK((rc == 0) == (st->count == st->target), "count mode: pds_step returned %d at "
+                 "%zu of %zu points", rc, st->count, st->target);
+    if (st->count > 0 && (rc == PDS_ENOMEM || rc == PDS_ERANGE)) st->run_failed = 1;
+    reread_radius(st, "pds_step");
     account(st, rc == 1 ? 1 : 0);
     FZ_CHECK(pds_count(st->s) == st->count, "pds_step returned %d, count %zu, expected %zu", rc,
              pds_count(st->s), st->count);
@@ -134,14 +186,16 @@ void fz_op_create(fz_state *st, fz_reader *r, unsigned arg)
     const int valid = isfinite(radius) && radius > 0.0;
     int rc;
 
+    fz_replay_check(st);
     pds_destroy(st->s);
     fz_reset(st, NULL, 1.0);
     rc = pds_create(&s, radius, seed);
     fz_codes(st, "pds_create", rc,
-             valid ? FZ_OK | FZ_BIT(PDS_ENOMEM) | range_unless_111() : FZ_BIT(PDS_EINVAL));
+             valid ? FZ_OK | FZ_BIT(PDS_ENOMEM) | fz_range_unless_111() : FZ_BIT(PDS_EINVAL));
     FZ_CHECK(rc == 0 ? s != NULL : s == NULL, "pds_create returned %d and *out %p", rc,
              (void *)s);
     fz_reset(st, s, rc == 0 ? radius : 1.0);
+    st->c_seed = seed;
     fz_sync(st);
 }
 
@@ -162,9 +216,13 @@ void fz_op_domain(fz_state *st, fz_reader *r)
     else if (st->count > 0)
         allowed = FZ_BIT(PDS_ESTATE);
     else
-        allowed = FZ_OK | FZ_BIT(PDS_ENOMEM) | range_unless_111();
+        allowed = FZ_OK | FZ_BIT(PDS_ENOMEM) | fz_range_unless_111();
     fz_codes(st, "pds_set_domain", rc, allowed);
-    if (rc == 0) memcpy(st->dom, d, sizeof d);
+    if (rc == 0) {
+        memcpy(st->dom, d, sizeof d);
+        fz_set_torus(st);
+        fz_count_radius(st); /* count mode: the start radius follows the domain */
+    }
     fz_sync(st);
 }
 
@@ -177,8 +235,10 @@ void fz_op_refine(fz_state *st, fz_reader *r)
 
     if (st->s == NULL)
         allowed = FZ_BIT(PDS_EINVAL);
-    else if (!isfinite(nr) || !(nr > 0.0) || nr > old)
-        allowed = FZ_BIT(PDS_EINVAL);
+    else if (!isfinite(nr) || !(nr > 0.0) || nr > old) /* count mode: either check first */
+        allowed = FZ_BIT(PDS_EINVAL) | (st->target ? FZ_BIT(PDS_ESTATE) : 0u);
+    else if (st->target != 0)
+        allowed = FZ_BIT(PDS_ESTATE); /* the sampler chooses the radius */
     else if (nr == old)
         allowed = FZ_OK; /* a no-op */
     else
@@ -192,6 +252,11 @@ void fz_op_refine(fz_state *st, fz_reader *r)
     if (rc == 0 && nr < old) {
         st->radius = nr;
         st->maximal = st->checked = 0;
+        if (st->n_ev < FZ_MAX_EVENTS) {
+            st->ev[st->n_ev].count = st->count;
+            st->ev[st->n_ev].radius = nr;
+        }
+        if (st->n_ev <= FZ_MAX_EVENTS) st->n_ev++;
     }
     fz_sync(st);
 }
@@ -212,6 +277,12 @@ void fz_op_step(fz_state *st, unsigned arg)
         if (call_step(st, 1) != 1) break;
 }
 
+/* An unbounded run must fail at once (PDS_ERANGE): the pattern cannot fit. */
+static int unbounded_fails(const fz_state *st)
+{
+    return st->target != 0 ? (double)st->target >= 1e9 : fz_count_bound(st) >= FZ_NO_GRID;
+}
+
 void fz_op_run(fz_state *st, fz_reader *r, unsigned arg)
 {
     size_t m = fz_max_new(r);
@@ -220,7 +291,7 @@ void fz_op_run(fz_state *st, fz_reader *r, unsigned arg)
 
     if (st->s == NULL || st->maximal || w == WORK_TO_END)
         call_run(st, m, arg & 1, 1);
-    else if (huge && fz_count_bound(st) >= FZ_NO_GRID)
+    else if (huge && unbounded_fails(st))
         call_run(st, m, arg & 1, 1); /* must fail at once (PDS_ERANGE) */
     else if (w == WORK_BOUNDED)
         call_run(st, huge || m > st->budget ? st->budget : m, arg & 1, 1);
@@ -243,13 +314,19 @@ void fz_op_run_chunks(fz_state *st, unsigned arg)
     fz_sync(st);
 }
 
+/* arg & 2: after PDS_ECANCELED, run again (resume) until the end. */
 void fz_op_run_to_end(fz_state *st, unsigned arg)
 {
-    const int w = work_allowed(st);
-    if (st->s == NULL || st->maximal || w == WORK_TO_END || fz_count_bound(st) >= FZ_NO_GRID)
-        call_run(st, 0, arg & 1, 1);
-    else if (w == WORK_BOUNDED)
-        call_run(st, st->budget, arg & 1, 1);
+    int tries = 0, rc;
+    do {
+        const int w = work_allowed(st);
+        if (st->s == NULL || st->maximal || w == WORK_TO_END || unbounded_fails(st))
+            rc = call_run(st, 0, arg & 1, 1);
+        else if (w == WORK_BOUNDED)
+            rc = call_run(st, st->budget, arg & 1, 1);
+        else
+            return;
+    } while (rc == PDS_ECANCELED && (arg & 2) && ++tries < 300);
 }
 
 void fz_op_points(fz_state *st, fz_reader *r, unsigned arg)
@@ -284,71 +361,15 @@ void fz_op_verify(fz_state *st)
         return;
     }
     fz_codes(st, "pds_verify", rc, FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM));
-    FZ_CHECK(rc != 1 || !st->maximal, "pds_verify: room left in a pattern reported maximal");
+    /* Count mode: complete is not maximal, and maximal (between two radii) not complete. */
+    FZ_CHECK(rc != 1 || !st->maximal || st->target != 0,
+             "pds_verify: room left in a pattern reported maximal");
     fz_sync(st);
     if (rc == 0) {
         FZ_CHECK(st->count > 0, "pds_verify: maximal without a point");
-        st->maximal = 1;
-        fz_check_maximal(st);
+        if (st->target == 0 || st->count == st->target) {
+            st->maximal = 1;
+            fz_check_maximal(st);
+        }
     }
-}
-
-void fz_op_nulls(fz_state *st)
-{
-    double xy[2];
-    size_t added = 5;
-    FZ_CHECK(pds_count(NULL) == 0, "pds_count(NULL)");
-    FZ_CHECK(isnan(pds_radius(NULL)), "pds_radius(NULL) not NaN");
-    FZ_CHECK(pds_points(NULL, 0, 1, xy) == 0, "pds_points(NULL)");
-    FZ_CHECK(pds_step(NULL) == PDS_EINVAL, "pds_step(NULL)");
-    FZ_CHECK(pds_run(NULL, 3, &added) == PDS_EINVAL && added == 0, "pds_run(NULL)");
-    FZ_CHECK(pds_refine(NULL, 0.5) == PDS_EINVAL, "pds_refine(NULL)");
-    FZ_CHECK(pds_set_domain(NULL, 0, 0, 1, 1) == PDS_EINVAL, "pds_set_domain(NULL)");
-    FZ_CHECK(pds_verify(NULL) == PDS_EINVAL, "pds_verify(NULL)");
-    FZ_CHECK(pds_create(NULL, 0.1, 1) == PDS_EINVAL, "pds_create(NULL)");
-    FZ_CHECK(pds_errmsg(NULL) != NULL && pds_errmsg(NULL)[0] != '\0', "pds_errmsg(NULL)");
-    pds_destroy(NULL);
-    fz_check_free_area(st);
-}
-
-void fz_op_strerror(fz_state *st, fz_reader *r)
-{
-    const int code = (int)(uint32_t)fz_u64(r);
-    const char *t = pds_strerror(code);
-    int c;
-    FZ_CHECK(t != NULL && t[0] != '\0', "pds_strerror(%d) is empty", code);
-    for (c = -7; c <= 3; c++) {
-        t = pds_strerror(c);
-        FZ_CHECK(t != NULL && t[0] != '\0', "pds_strerror(%d) is empty", c);
-    }
-    if (st->s != NULL) fz_codes(st, "pds_errmsg", 0, FZ_OK); /* reading it changes nothing */
-}
-
-void fz_op_version(void)
-{
-    char want[32];
-    snprintf(want, sizeof want, "%u.%u.%u", (unsigned)PDS_VERSION_MAJOR,
-             (unsigned)PDS_VERSION_MINOR, (unsigned)PDS_VERSION_PATCH);
-    FZ_CHECK(pds_version_number() == PDS_VERSION_NUMBER, "pds_version_number %u",
-             pds_version_number());
-    FZ_CHECK(strcmp(pds_version_string(), want) == 0, "pds_version_string %s",
-             pds_version_string());
-}
-
-void fz_op_create_bad(fz_state *st, fz_reader *r)
-{
-    static int not_a_sampler;
-    pds_sampler *t = (pds_sampler *)(void *)&not_a_sampler;
-    const double radius = fz_hostile(r);
-    const int rc = pds_create(&t, radius, fz_u8(r));
-    const int valid = isfinite(radius) && radius > 0.0;
-    fz_state none;
-    memset(&none, 0, sizeof none);
-    fz_codes(&none, "pds_create", rc,
-             valid ? FZ_OK | FZ_BIT(PDS_ENOMEM) | range_unless_111() : FZ_BIT(PDS_EINVAL));
-    FZ_CHECK(rc == 0 ? t != NULL : t == NULL, "pds_create returned %d and *out %p", rc,
-             (void *)t);
-    pds_destroy(t);
-    FZ_CHECK(pds_create(NULL, radius, 1) == PDS_EINVAL, "pds_create(NULL, %g)", radius);
-    (void)st;
 }
