@@ -1,12 +1,15 @@
 # poissondisk - one hand-written GNU Makefile: no recursion, no configure.
 #
 #   make            shared + static library and the CLI, in build/
-#   make demo       build, write a maximal pattern to build/demo.txt, print a summary
+#   make demo       build, write a maximal pattern to build/demo.txt, print a summary,
+#                   draw the gallery in build/gallery/ (make gallery: into docs/)
 #   make check      install what the tests need (Debian, as root), then run them all,
 #                   and the same suites again under Valgrind memcheck
 #   make bench      benchmark figures against two baselines (not assertions);
 #                   make bench-quick: the two smaller sizes only
 #   make install    PREFIX, DESTDIR, LIBDIR, INCLUDEDIR, BINDIR, MANDIR, PKGCONFIGDIR
+#   make install-python   pip-install bindings/python (offline) for SYSTEM_PYTHON
+#                   (/usr/bin/python3); make uninstall-python
 #   make uninstall, make clean
 #   make abi-baseline   regenerate abi/libpoissondisk.abi (only with a map-node bump)
 #   make check-threads  4 threads, each with its own handle, must give the bytes each
@@ -104,16 +107,40 @@ $(LIB_A): $(LIB_OBJ)
 	$(AR) rcs $@ $(LIB_OBJ)
 
 # ---- command-line program: public API only, linked against the static library --------
-$(CLI): tools/poissondisk.c tools/cli_options.c tools/cli_options.h tools/cli_progress.c \
-        tools/cli_progress.h tools/cli_report.c tools/cli_report.h tools/cli_sample.c \
-        tools/cli_sample.h include/poissondisk.h $(LIB_A)
-	$(CC) $(PDS_CFLAGS) $(CPPFLAGS) $(CFLAGS) -o $@ $(filter %.c,$^) $(LIB_A) $(LDFLAGS) -lstdc++ -lm
+# The pictures (PNG included: tools/png.c writes it) need nothing beyond libc and libm.
+CLI_SRC := tools/poissondisk.c tools/cli_options.c tools/cli_progress.c tools/cli_report.c \
+           tools/cli_sample.c tools/cli_outputs.c tools/cli_output_args.c tools/cli_spectrum.c \
+           tools/out_formats.c tools/pattern_svg.c tools/pattern_png.c tools/pattern_stats.c \
+           tools/png.c tools/points_in.c tools/spectrum.c tools/spectrum_out.c \
+           tools/spectrum_plot.c
+$(CLI): $(CLI_SRC) $(wildcard tools/*.h) include/poissondisk.h $(LIB_A)
+	$(CC) $(PDS_CFLAGS) $(CPPFLAGS) $(CFLAGS) -o $@ $(CLI_SRC) $(LIB_A) $(LDFLAGS) -lstdc++ -lm
 
 # ---- demo: the quick start's first command -------------------------------------------
 DEMO_RADIUS ?= 0.002
-demo: all
+demo: all demo-gallery
 	@$(CLI) --radius $(DEMO_RADIUS) --seed 1 --verify --stats > $(B)/demo.txt
 	@echo "points written to $(B)/demo.txt"
+
+# ---- gallery: pictures drawn by the program itself (README "Pictures") ---------------
+# demo-gallery writes them to $(B)/gallery (with the spectrum's CSV); make gallery
+# copies the pictures over the committed ones in docs/ (about 0.2 MB in all), only
+# once all were made. A pattern, its disks on the torus, and the spectrum of 16
+# periodic patterns (the paper's figure 6) with its radial curves.
+GALLERY := pattern.svg pattern.png disks.svg spectrum.png spectrum_radial.svg
+.PHONY: demo-gallery gallery
+demo-gallery: $(CLI)
+	@mkdir -p $(B)/gallery
+	@$(CLI) --radius 0.05 --seed 1 --svg $(B)/gallery/pattern.svg \
+	    --png $(B)/gallery/pattern.png --size 256 > /dev/null
+	@$(CLI) --periodic --radius 0.05 --seed 3 --svg $(B)/gallery/disks.svg --disks > /dev/null
+	@$(CLI) --periodic --radius 0.02 --seed 1 --patterns 16 --spectrum $(B)/gallery/spectrum.png \
+	    --size 402 --spectrum-plot $(B)/gallery/spectrum_radial.svg \
+	    --spectrum-csv $(B)/gallery/spectrum.csv > /dev/null
+	@echo "gallery written to $(B)/gallery: $(GALLERY) spectrum.csv"
+gallery: demo-gallery
+	@mkdir -p docs
+	cp $(addprefix $(B)/gallery/,$(GALLERY)) docs/
 
 # ---- tile-picture: the README's periodic tile, repeated 2x2 (tools/tile_svg.py) ------
 # Written to a temporary file first, so a failed run leaves the old picture in place.
@@ -176,10 +203,15 @@ check-man:
 check-cli: $(CLI)
 	sh tests/check-cli.sh $(CLI)
 	sh tests/check-cli-features.sh $(CLI)
+	sh tests/check-cli-output.sh $(CLI)
 
-check-python: $(LIB_SO) $(B)/libpoissondisk.so
-	PDS_LIBRARY=$(abspath $(LIB_SO)) $(PYTHON) tests/test_python.py
-	PDS_LIBRARY=$(abspath $(LIB_SO)) $(PYTHON) tests/test_python_features.py
+# check-python: tests/python/run_venv.py pip-installs a copy of bindings/python offline
+# into a scratch venv of SYSTEM_PYTHON (--system-site-packages: Debian's numpy and scipy
+# are visible only to /usr/bin/python3) and runs tests/python against the library in
+# $(B), through POISSONDISK_LIBRARY; then again with numpy blocked (the list fallback).
+SYSTEM_PYTHON ?= /usr/bin/python3
+check-python: $(LIB_SO) $(B)/$(SONAME)
+	$(SYSTEM_PYTHON) tests/python/run_venv.py $(abspath $(B)/$(SONAME))
 
 check-pkgconfig: all
 	sh tests/check-pkgconfig.sh
@@ -365,6 +397,22 @@ install: all
 	install -m 644 man/*.1 $(DESTDIR)$(MANDIR)/man1/
 	install -m 644 man/*.3 $(DESTDIR)$(MANDIR)/man3/
 	while read -r name page; do ln -sf "$$page" "$(DESTDIR)$(MANDIR)/man3/$$name"; done < man/links.txt
+
+# install-python: pip-installs the package for SYSTEM_PYTHON, offline (no index, no build
+# isolation: Debian's python3-setuptools builds it), from a copy in $(B)/python, as pip
+# builds in the source directory. Debian's python3 is externally managed (PEP 668); with
+# --break-system-packages pip puts it in /usr/local/lib/python3.X/dist-packages, the
+# directory Debian leaves to local installs (PIP_FLAGS to change). DESTDIR stages it.
+# The package loads libpoissondisk.so.1: make install first.
+PIP_FLAGS ?= --break-system-packages --root-user-action=ignore
+.PHONY: install-python uninstall-python
+install-python:
+	rm -rf $(B)/python && mkdir -p $(B) && cp -R bindings/python $(B)/python
+	$(SYSTEM_PYTHON) -m pip install --no-index --no-build-isolation --no-deps \
+	    --disable-pip-version-check $(PIP_FLAGS) $(if $(DESTDIR),--root $(DESTDIR)) $(B)/python
+
+uninstall-python:
+	$(SYSTEM_PYTHON) -m pip uninstall -y --disable-pip-version-check $(PIP_FLAGS) poissondisk
 
 uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/$(REALNAME) $(DESTDIR)$(LIBDIR)/$(SONAME) \

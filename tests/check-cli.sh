@@ -11,7 +11,8 @@
 # with man/poissondisk.1. Checks marked "[core 1.1.1]" need the library
 # behaviour of 1.1.1 (see the section "tiny radii"). The run options --count,
 # --periodic, --progress and --partial (Ctrl-C) are checked in
-# check-cli-features.sh, their argument errors here. Ends with
+# check-cli-features.sh, their argument errors here; the output options
+# (--format, --svg, --png, --spectrum...) in check-cli-output.sh. Ends with
 # "check-cli: N passed, M failed" and a non-zero status if anything failed.
 
 set -u
@@ -99,7 +100,7 @@ expect "--bogus --version: exit 2 (got $rc)" [ "$rc" -eq 2 ]
 # The help and the parser come from one table: every option the help lists is
 # known to the parser, and each has an entry in the manual.
 grep -Eo '^  --[a-z-]+' "$tmp/help.out" | tr -d ' ' > "$tmp/help-options"
-expect "--help lists the 14 options" [ "$(lines "$tmp/help-options")" -eq 14 ]
+expect "--help lists the 25 options" [ "$(lines "$tmp/help-options")" -eq 25 ]
 sed -n '/^$/q;p' "$tmp/help.out" > "$tmp/help-usage"    # up to the first blank line
 while read -r opt; do
     run optknown "$opt"

@@ -7,6 +7,9 @@
 #   abidiff (abigail-tools)   : ABI comparison with the committed baseline
 #   pkg-config                : install test of poissondisk.pc
 #   clang, libclang-rt-N-dev  : make fuzz / check-fuzz (libFuzzer, ASan, UBSan runtimes)
+#   python3-venv, -setuptools, -wheel, -pip, -numpy, -scipy : make check-python (the
+#                               package is pip-installed offline into a venv of Debian's
+#                               /usr/bin/python3, which alone sees Debian's numpy/scipy)
 set -eu
 
 missing=""
@@ -16,6 +19,13 @@ command -v mandoc >/dev/null 2>&1 || missing="$missing mandoc"
 command -v abidiff >/dev/null 2>&1 || missing="$missing abigail-tools"
 command -v pkg-config >/dev/null 2>&1 || missing="$missing pkg-config"
 command -v python3 >/dev/null 2>&1 || missing="$missing python3"
+sys_py_has() { [ -x /usr/bin/python3 ] && /usr/bin/python3 -c "import $1" >/dev/null 2>&1; }
+sys_py_has ensurepip || missing="$missing python3-venv"
+sys_py_has setuptools || missing="$missing python3-setuptools"
+sys_py_has wheel || missing="$missing python3-wheel"
+sys_py_has pip || missing="$missing python3-pip"
+sys_py_has numpy || missing="$missing python3-numpy"
+sys_py_has scipy || missing="$missing python3-scipy"
 # libFuzzer: clang links a trivial fuzz target only when its runtime package (on
 # Debian 12, libclang-rt-14-dev, named after clang's major version) is installed.
 fuzzer_links() {

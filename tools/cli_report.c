@@ -1,6 +1,6 @@
 /*
- * cli_report.c - the points, the --stats line and the PDS_ERANGE message of
- * the poissondisk program (see cli_report.h).
+ * cli_report.c - the --stats line and the PDS_ERANGE message of the
+ * poissondisk program (see cli_report.h).
  */
 #include "cli_report.h"
 
@@ -8,23 +8,7 @@
 #include <stdlib.h>
 
 #include "cli_options.h"
-
-/* Points fetched per pds_points() call when writing: bounded memory for any N. */
-#define CHUNK_POINTS 4096
-
-int cli_write_points(const pds_sampler *s)
-{
-    static double xy[2 * CHUNK_POINTS];
-    size_t first = 0, got, k;
-
-    while ((got = pds_points(s, first, CHUNK_POINTS, xy)) > 0) {
-        for (k = 0; k < got; k++)
-            if (printf("%.17g %.17g\n", xy[2 * k], xy[2 * k + 1]) < 0)
-                return -1;
-        first += got;
-    }
-    return fflush(stdout) == 0 && !ferror(stdout) ? 0 : -1;
-}
+#include "pattern_stats.h"
 
 /* The shortest of %.6g .. %.17g that reads back as v: exact, and short when it can be. */
 static const char *exact(char *buf, size_t size, double v)
@@ -40,6 +24,29 @@ static const char *exact(char *buf, size_t size, double v)
     return buf;
 }
 
+/* "packing=P min_dist=DR mean_nn=MR": the pattern's spacing (see cli_report.h). */
+static void spacing(char *buf, size_t size, const pds_sampler *s, const struct cli_where *w,
+                    double area)
+{
+    size_t n = pds_count(s);
+    double r = pds_radius(s), least, mean;
+    double *xy = malloc((n > 0 ? n : 1) * 2 * sizeof *xy);
+    int rc = -1;
+
+    if (xy != NULL) {
+        pds_points(s, 0, n, xy);
+        rc = pattern_nn_stats(xy, n, w->box, w->periodic, r, &least, &mean);
+        free(xy);
+    }
+    if (rc == 0)
+        snprintf(buf, size, "packing=%.6f min_dist=%.9fR mean_nn=%.6fR",
+                 3.14159265358979323846 * r * r * (double)n / (4 * area), least / r, mean / r);
+    else
+        snprintf(buf, size, "packing=%.6f min_dist=- mean_nn=-%s",
+                 3.14159265358979323846 * r * r * (double)n / (4 * area),
+                 rc < 0 ? " (out of memory)" : "");
+}
+
 void cli_print_stats(const char *prog, const pds_sampler *s, const struct cli_where *w,
                      int maximal, int verified, double seconds)
 {
@@ -47,15 +54,17 @@ void cli_print_stats(const char *prog, const pds_sampler *s, const struct cli_wh
     double area = (d[2] - d[0]) * (d[3] - d[1]);
     double free_area = pds_free_area(s);
     char close = w->periodic ? ')' : ']';
-    char radius[32];
+    char radius[32], space[128];
 
     if (w->count > 0 && !verified)
         maximal = free_area == 0.0;
-    fprintf(stderr, "%s: N=%zu R=%s%s domain=[%g,%g%cx[%g,%g%c%s coverage=%.9f %s%s %.3f s\n",
-            prog, pds_count(s), exact(radius, sizeof radius, pds_radius(s)),
+    spacing(space, sizeof space, s, w, area);
+    fprintf(stderr,
+            "%s: N=%zu R=%s%s domain=[%g,%g%cx[%g,%g%c%s coverage=%.9f %s%s %s %.3f s\n", prog,
+            pds_count(s), exact(radius, sizeof radius, pds_radius(s)),
             w->count > 0 ? " (chosen for --count)" : "", d[0], d[2], close, d[1], d[3], close,
             w->periodic ? " periodic" : "", 1.0 - free_area / area,
-            maximal ? "maximal" : "not maximal", verified ? " verified" : "", seconds);
+            maximal ? "maximal" : "not maximal", verified ? " verified" : "", space, seconds);
 }
 
 int cli_range_error(const char *prog, const struct cli_where *w, double radius,

@@ -1,7 +1,8 @@
 /*
- * cli_report.h - what the poissondisk program writes: the points on stdout,
- * the --stats line, and the message for a radius (or count) that does not
- * suit the domain. Uses the public API only; plain C99.
+ * cli_report.h - what the poissondisk program tells on stderr: the --stats
+ * line, and the message for a radius (or count) that does not suit the
+ * domain. (The points and pictures are written by cli_outputs.c.) Uses the
+ * public API only; plain C99.
  */
 #ifndef POISSONDISK_CLI_REPORT_H
 #define POISSONDISK_CLI_REPORT_H
@@ -18,18 +19,16 @@ struct cli_where {
 };
 
 /*
- * Writes every point as "x y" (%.17g: each value reads back as the same
- * double), in insertion order, a bounded number at a time. Returns 0, or -1
- * on a write error (errno tells which).
- */
-int cli_write_points(const pds_sampler *s);
-
-/*
  * Prints the --stats line to stderr: N, the radius (with the fewest digits
  * that read back exactly, so a chosen radius can be checked), the domain
- * (half-open and "periodic" on a torus), the coverage, maximal or not,
- * verified, and the seconds spent sampling. In count mode maximality is
- * asked of the library, as a run that reached N points does not tell it.
+ * (half-open and "periodic" on a torus), the coverage (the share of the
+ * domain where no point fits), maximal or not, verified, then the packing
+ * density pi R^2 N / (4A) (the share covered by the disks of radius R/2),
+ * the smallest pair distance and the mean nearest-neighbour distance in
+ * units of R (pattern_stats.c; wrapped on a torus; "-" below two points),
+ * and the seconds spent sampling. In count mode maximality is asked of the
+ * library, as a run that reached N points does not tell it. The distances
+ * need a copy of the points (16 bytes each) while they are computed.
  */
 void cli_print_stats(const char *prog, const pds_sampler *s, const struct cli_where *w,
                      int maximal, int verified, double seconds);

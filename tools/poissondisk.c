@@ -6,7 +6,9 @@
  * as exactly the same double. Optional refinement stages (--refine) continue
  * the same pattern at smaller radii; --max-points caps the total. --count
  * lets the library choose the radius for an exact number of points instead,
- * and --periodic makes the pattern tile the plane.
+ * and --periodic makes the pattern tile the plane. --format and --output
+ * choose how and where the points go; --svg, --png and the --spectrum
+ * options draw and analyse the pattern (cli_outputs.c, cli_spectrum.c).
  *
  * The options live in one table (option_list[] below); cli_options.c makes
  * the parsing, the defaults, the usage line and the --help text from it, so
@@ -29,7 +31,6 @@
  */
 #define _POSIX_C_SOURCE 200809L
 
-#include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -39,6 +40,7 @@
 #include "poissondisk.h"
 
 #include "cli_options.h"
+#include "cli_outputs.h"
 #include "cli_report.h"
 #include "cli_sample.h"
 
@@ -51,6 +53,7 @@ struct options {
     uint64_t seed;
     struct cli_where where;   /* --domain, --periodic, --count */
     struct cli_stages stages; /* --radius, --refine, --max-points, --progress */
+    struct cli_outputs out;   /* --format, --output, --svg, --png, --spectrum... */
     int verify;
     int stats;
     int partial;       /* on Ctrl-C, write the points made so far */
@@ -137,6 +140,13 @@ static int opt_flag(void *ctx, const struct cli_option *opt, const char *const *
     return CLI_OK;
 }
 
+/* The output options: files, formats, picture sizes (cli_output_args.c). */
+static int opt_output(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    return cli_outputs_option(&((struct options *)ctx)->out, opt->name,
+                              opt->nvalues > 0 ? v[0] : NULL);
+}
+
 /* --help and --version: the action, and the end of the command line. */
 static int opt_alone(void *ctx, const struct cli_option *opt, const char *const *v)
 {
@@ -179,6 +189,33 @@ static const struct cli_option option_list[] = {
     { "--partial", 0, NULL, 0, NULL, opt_flag, NULL,
       "when interrupted (Ctrl-C), still write the points made so far, a prefix of "
       "the full output" },
+    { "--format", 1, "FMT", 0, "txt", opt_output, "one of txt, csv, json, bin, npy",
+      "how the points are written: txt (\"x y\" lines), csv (header x,y), json (radius, "
+      "domain, periodic, count, points), bin (raw little-endian doubles x,y) or npy "
+      "(NumPy, float64, shape (N, 2)); bin and npy refuse a terminal" },
+    { "--output", 1, "FILE", 0, NULL, opt_output, "a file name",
+      "write the points to FILE instead of standard output" },
+    { "--svg", 1, "FILE", 0, NULL, opt_output, "a file name",
+      "also draw the pattern as SVG: the domain's box and a dot per point, y upwards" },
+    { "--disks", 0, NULL, 0, NULL, opt_output, NULL,
+      "with --svg, draw each point's disk of radius R/2 (no two overlap)" },
+    { "--png", 1, "FILE", 0, NULL, opt_output, "a file name",
+      "also draw the points as a grey-scale PNG, black dots on white" },
+    { "--size", 1, "PX", 0, "512", opt_output, "an integer from 1 to 16384",
+      "the side of the PNG pictures in pixels (for --png the longer side; the aspect "
+      "ratio is kept)" },
+    { "--spectrum", 1, "FILE", 0, NULL, opt_output, "a file name",
+      "write the periodogram as a PNG: f = 0 in the centre, up to 2/R, log scale from "
+      "-20 dB (black) to +10 dB (white); costs N^2, use --periodic for clean spectra" },
+    { "--patterns", 1, "K", 0, "1", opt_output, "an integer from 1 to 100000",
+      "average the spectrum over K patterns, seeds S to S+K-1" },
+    { "--spectrum-plot", 1, "FILE", 0, NULL, opt_output, "a file name",
+      "write the radially averaged power and the anisotropy as an SVG plot" },
+    { "--spectrum-csv", 1, "FILE", 0, NULL, opt_output, "a file name",
+      "write them as CSV: frequency, frequency times R, power, anisotropy (dB), samples" },
+    { "--spectrum-from", 1, "FILE", 0, NULL, opt_output, "a file name",
+      "sample nothing: the spectrum of the patterns in FILE (\"x y\" lines, blank lines "
+      "between patterns; - for standard input), R from --radius" },
     { "--help", 0, NULL, CLI_ALONE, NULL, opt_alone, NULL, "print this help and exit" },
     { "--version", 0, NULL, CLI_ALONE, NULL, opt_alone, NULL,
       "print the library version and exit" },
@@ -186,8 +223,10 @@ static const struct cli_option option_list[] = {
 
 static const struct cli_table cli = {
     PROG, option_list, sizeof option_list / sizeof option_list[0],
-    "Write a maximal Poisson-disk point pattern to standard output, one\n"
-    "\"x y\" line per point in insertion order (%.17g: values round-trip exactly).\n",
+    "Write a maximal Poisson-disk point pattern to standard output (or --output\n"
+    "FILE): by default one \"x y\" line per point in insertion order (%.17g: values\n"
+    "round-trip exactly), or another --format. --svg and --png draw the pattern,\n"
+    "--spectrum and its companions analyse it.\n",
     "Options taking a value accept both '--opt VALUE' and '--opt=VALUE'.\n"
     "--help and --version end the command line: they print, exit 0 and sample\n"
     "nothing; the arguments after them are not read.\n"
@@ -205,6 +244,7 @@ static const struct cli_table cli = {
 static int parse_args(int argc, char **argv, struct options *o)
 {
     struct cli_stages *st = &o->stages;
+    char why[160];
     size_t k;
     int rc;
 
@@ -219,6 +259,9 @@ static int parse_args(int argc, char **argv, struct options *o)
     if (o->where.count > 0 && st->nrefine > 0)
         return cli_usage_error(&cli, "--refine cannot be used with --count: the library "
                                "chooses the radius");
+    if (cli_outputs_check(&o->out, st, &o->where, o->verify, o->stats, o->partial, why,
+                          sizeof why) != NULL)
+        return cli_usage_error(&cli, "%s", why);
     /* Checked now rather than by pds_refine once the earlier stages ran. */
     for (k = 0; k < st->nrefine; k++) {
         double before = k == 0 ? st->radius : st->refine[k - 1];
@@ -263,6 +306,10 @@ int main(int argc, char **argv)
     }
     if (status != 0)
         goto done;
+    if (o.out.spectrum_from != NULL) { /* nothing to sample */
+        status = cli_spectrum_from_file(PROG, &o.out, &o.where, o.stages.radius);
+        goto done;
+    }
 
     t0 = now_seconds();
     /* In count mode the library ignores the radius given here. */
@@ -280,10 +327,8 @@ int main(int argc, char **argv)
     if (status == EXIT_INTERRUPTED) {
         fprintf(stderr, PROG ": interrupted after %zu points%s\n", pds_count(s),
                 o.partial ? "; writing them" : "");
-        if (o.partial && cli_write_points(s) != 0) {
-            fprintf(stderr, PROG ": error writing points: %s\n", strerror(errno));
+        if (o.partial && cli_write_points(PROG, s, &o.out, &o.where) != 0)
             status = EXIT_LIBRARY;
-        }
         goto done;
     }
     if (status != 0)
@@ -302,11 +347,11 @@ int main(int argc, char **argv)
         maximal = rc == PDS_DONE; /* exact, so it overrides the running answer */
     }
 
-    if (cli_write_points(s) != 0) {
-        fprintf(stderr, PROG ": error writing points: %s\n", strerror(errno));
-        status = EXIT_LIBRARY;
+    /* The points, then the pictures, then the spectrum (which may make more patterns). */
+    if ((status = cli_write_points(PROG, s, &o.out, &o.where)) != 0
+        || (status = cli_write_pictures(PROG, s, &o.out, &o.where)) != 0
+        || (status = cli_write_spectrum(PROG, s, &o.out, &o.where, &o.stages, o.seed)) != 0)
         goto done;
-    }
 
     if (o.stats)
         cli_print_stats(PROG, s, &o.where, maximal, verified, seconds);

@@ -1,0 +1,308 @@
+"""Sampler: one libpoissondisk handle as a Python object.
+
+The points come back as a numpy float64 array of shape (N, 2) when numpy can
+be imported, filled by pds_points straight into the array's buffer (the C
+layout, interleaved x,y, is the array's), and as a list of (x, y) tuples
+otherwise.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import operator
+import os
+from typing import TYPE_CHECKING, Any, Callable, List, Optional, Sequence, Tuple, Union
+
+from . import _capi
+from ._errors import error_for
+
+if TYPE_CHECKING:
+    import numpy
+
+try:
+    import numpy as _np
+except ImportError:  # the list fallback
+    _np = None  # type: ignore[assignment]
+
+Bounds = Tuple[Tuple[float, float], Tuple[float, float]]
+# fn(count, done): count points exist, done in [0, 1]; a true result cancels.
+ProgressFn = Callable[[int, float], Any]
+Points = Union["numpy.ndarray", List[Tuple[float, float]]]
+
+UNIT_SQUARE: Bounds = ((0.0, 0.0), (1.0, 1.0))
+
+
+def random_seed() -> int:
+    """A seed in [0, 2**64) from the operating system's entropy."""
+    return int.from_bytes(os.urandom(8), "little")
+
+
+def _check_seed(seed: Optional[int]) -> int:
+    if seed is None:
+        return random_seed()
+    seed = operator.index(seed)
+    if not 0 <= seed < 2 ** 64:
+        raise ValueError("seed must be in [0, 2**64), got %d" % seed)
+    return seed
+
+
+def _check_bounds(bounds: Sequence[Sequence[float]]) -> Bounds:
+    try:
+        (x0, y0), (x1, y1) = bounds
+    except (TypeError, ValueError):
+        raise TypeError("bounds must be ((x0, y0), (x1, y1)), got %r" % (bounds,)) from None
+    return (float(x0), float(y0)), (float(x1), float(y1))
+
+
+class Sampler:
+    """Exact maximal Poisson-disk sampling in a rectangle or on a torus.
+
+    Every pair of points is at least `radius` apart (decided exactly), each
+    new point is uniform over the area where a point may still go, and run()
+    returns True once no point of the domain is farther than `radius` from
+    every sample (maximal).
+
+    Args:
+        radius: the minimum distance R, finite and > 0. May be None when
+            `count` is given (the library then chooses it).
+        bounds: ((x0, y0), (x1, y1)), the closed rectangle [x0,x1]x[y0,y1].
+        seed: an int in [0, 2**64); the same seed and library version give
+            the same points. None draws one from os.urandom; read it back
+            from `.seed` to repeat the pattern.
+        periodic: True samples the rectangle as a flat torus: distances wrap
+            around, points lie in [x0,x1)x[y0,y1), and copies shifted by the
+            periods tile the plane seamlessly. The radius must be at most half
+            the shorter period.
+        count: a number of points n >= 1: the library chooses the radius so
+            that run() ends with exactly n points (then `radius` is the last
+            radius used, and refine() is refused).
+        progress: a callable fn(count, done), see set_progress().
+
+    Errors of the library raise subclasses of PoissonDiskError carrying its
+    message; misuse on the Python side raises ValueError or TypeError.
+    Use it as a context manager, or call close(), to free the C sampler at
+    once. One Sampler must be used by one thread at a time.
+    """
+
+    _handle: Optional[ctypes.c_void_p] = None  # close()/__del__ work if __init__ failed
+    # (the C callback, [exception raised in it]) while a progress function is
+    # set: the library holds a pointer into the first, so it must stay alive.
+    _progress: Optional[Tuple[Any, List[BaseException]]] = None
+
+    def __init__(self, radius: Optional[float], *, bounds: Sequence[Sequence[float]] = UNIT_SQUARE,
+                 seed: Optional[int] = None, periodic: bool = False,
+                 count: Optional[int] = None, progress: Optional[ProgressFn] = None) -> None:
+        self._seed = _check_seed(seed)
+        self._bounds = _check_bounds(bounds)
+        if radius is None:
+            if count is None:
+                raise TypeError("Sampler() needs a radius unless count is given")
+            radius = 1.0  # ignored by the library in count mode
+        handle = ctypes.c_void_p()
+        rc = _capi.lib.pds_create(ctypes.byref(handle), float(radius), self._seed)
+        if rc < 0:
+            # No handle exists, so the code's own text is the explanation.
+            raise error_for(rc, "pds_create(radius=%r): %s" % (radius, _capi.strerror(rc)))
+        self._handle = handle
+        self._periodic = bool(periodic)
+        try:
+            (x0, y0), (x1, y1) = self._bounds
+            self._check(_capi.lib.pds_set_domain(handle, x0, y0, x1, y1), "pds_set_domain")
+            if periodic:
+                self._check(_capi.need("pds_set_periodic")(handle, 1), "pds_set_periodic")
+            if count is not None:
+                count = operator.index(count)
+                if count < 0:
+                    raise ValueError("count must be >= 1, got %d" % count)
+                self._check(_capi.need("pds_set_count")(handle, count), "pds_set_count")
+            if progress is not None:
+                self.set_progress(progress)
+        except BaseException:
+            self.close()
+            raise
+
+    # -- lifetime -----------------------------------------------------------------
+
+    def close(self, _destroy: Callable[[Any], None] = _capi.lib.pds_destroy) -> None:
+        """Release the C sampler. Safe to call more than once."""
+        # _destroy is bound at definition time so this still works while the
+        # interpreter shuts down and module globals are already cleared.
+        handle, self._handle = self._handle, None
+        if handle is not None:
+            _destroy(handle)
+        self._progress = None  # the library no longer calls it
+
+    @property
+    def closed(self) -> bool:
+        """True once close() was called (or the with block was left)."""
+        return self._handle is None
+
+    def __del__(self) -> None:
+        self.close()
+
+    def __enter__(self) -> "Sampler":
+        return self
+
+    def __exit__(self, *exc_info: Any) -> None:
+        self.close()
+
+    def _h(self) -> ctypes.c_void_p:
+        if self._handle is None:
+            raise ValueError("operation on a closed Sampler")
+        return self._handle
+
+    def _check(self, rc: int, what: str) -> int:
+        if rc < 0:
+            msg = _capi.text(_capi.lib.pds_errmsg(self._h()))
+            # Name the failing function once, whether or not the library did.
+            if not msg.startswith(what + ":"):
+                msg = "%s: %s" % (what, msg)
+            raise error_for(rc, msg)
+        return rc
+
+    # -- building the pattern -----------------------------------------------------
+
+    def run(self, max_new: Optional[int] = None) -> bool:
+        """Add points until the pattern is maximal, or until max_new were added.
+
+        Returns True when the pattern is maximal (in count mode: when the
+        count is reached), False when max_new points were added and room is
+        left. The same seed gives the same points however a run is split.
+        Raises RangeError when the radius does not suit the domain (judged at
+        the first point), CanceledError when the progress callback returned
+        a true value, and whatever the callback raised if it raised.
+        """
+        if max_new is None:
+            limit = 0  # the C API's "no limit"
+        else:
+            limit = operator.index(max_new)
+            if limit < 1:
+                raise ValueError("max_new must be >= 1 or None (no limit), got %d" % limit)
+        added = ctypes.c_size_t(0)
+        progress = self._progress
+        if progress is not None:
+            del progress[1][:]
+        rc = _capi.lib.pds_run(self._h(), limit, ctypes.byref(added))
+        if progress is not None and progress[1]:
+            exc = progress[1][0]
+            del progress[1][:]
+            raise exc  # what stopped the run, with its own traceback
+        return self._check(rc, "pds_run") == _capi.DONE
+
+    def step(self) -> bool:
+        """Add one point: True if one was added, False if the pattern is maximal."""
+        return self._check(_capi.lib.pds_step(self._h()), "pds_step") == _capi.MORE
+
+    def refine(self, radius: float) -> None:
+        """Go on at a smaller radius (0 < radius <= self.radius), keeping every
+        point; run() then extends the pattern to maximal at the new radius."""
+        self._check(_capi.lib.pds_refine(self._h(), float(radius)), "pds_refine")
+
+    def set_progress(self, fn: Optional[ProgressFn]) -> None:
+        """Have run() call fn(count, done) between points.
+
+        count points exist and done estimates the fraction made (0..1,
+        exactly count/n in count mode, 1 when complete). It is called when
+        done grew by 1% or a second passed, so about a hundred times per run.
+        A true return value stops run() with CanceledError; an exception
+        raised by fn stops it too and run() raises that exception (so Ctrl-C
+        during a run stops it cleanly). Either way the points stay, and a
+        later run() continues to exactly the pattern an uninterrupted run
+        gives. fn may read the sampler (len, points) but not change it
+        (StateError). None removes the callback.
+        """
+        handle = self._h()
+        setter = _capi.need("pds_set_progress")
+        if fn is None:
+            null = _capi.PROGRESS_FN(0)  # a NULL function pointer
+            self._check(setter(handle, null, None), "pds_set_progress")
+            self._progress = None
+            return
+        if not callable(fn):
+            raise TypeError("set_progress() needs a callable or None, got %r" % (fn,))
+        call: ProgressFn = fn
+        errors: List[BaseException] = []  # no reference to self: no cycle through C
+
+        def report(user: Any, count: int, done: float) -> int:
+            try:
+                return 1 if call(int(count), float(done)) else 0
+            except BaseException as exc:  # never let it unwind through C
+                errors.append(exc)
+                return 1
+
+        callback = _capi.PROGRESS_FN(report)
+        self._check(setter(handle, callback, None), "pds_set_progress")
+        self._progress = (callback, errors)  # only once the library holds it
+
+    # -- reading it ---------------------------------------------------------------
+
+    def __len__(self) -> int:
+        return int(_capi.lib.pds_count(self._h()))
+
+    @property
+    def points(self) -> Points:
+        """All points in insertion order: a new float64 array of shape (N, 2)
+        (a list of (x, y) tuples without numpy). Every prefix of it is itself
+        a Poisson-disk set."""
+        return self.get_points()
+
+    def get_points(self, first: int = 0, count: Optional[int] = None) -> Points:
+        """Points first .. first+count-1 (to the end by default), clipped to
+        the points that exist; same types as `points`."""
+        handle = self._h()
+        total = int(_capi.lib.pds_count(handle))
+        first = operator.index(first)
+        if first < 0:
+            raise ValueError("first must be >= 0, got %d" % first)
+        avail = max(total - first, 0)
+        n = avail if count is None else max(min(operator.index(count), avail), 0)
+        if _np is not None:
+            out = _np.empty((n, 2), dtype=_np.float64)
+            if n:
+                got = _capi.lib.pds_points(handle, first, n, out.ctypes.data_as(_capi.DOUBLE_P))
+                if got != n:
+                    out = out[:got]
+            return out
+        buf = (ctypes.c_double * (2 * n))()
+        got = int(_capi.lib.pds_points(handle, first, n, buf)) if n else 0
+        flat = buf[:2 * got]
+        return list(zip(flat[0::2], flat[1::2]))
+
+    @property
+    def radius(self) -> float:
+        """The current radius R (in count mode, the last one the library used)."""
+        return float(_capi.lib.pds_radius(self._h()))
+
+    @property
+    def free_area(self) -> float:
+        """Area where a new point could still go: the domain's area before the
+        first point, exactly 0.0 once maximal. O(N) while room is left."""
+        return float(_capi.lib.pds_free_area(self._h()))
+
+    @property
+    def seed(self) -> int:
+        """The seed of this pattern (the one drawn from os.urandom if None was given)."""
+        return self._seed
+
+    @property
+    def bounds(self) -> Bounds:
+        """((x0, y0), (x1, y1)) as given."""
+        return self._bounds
+
+    @property
+    def periodic(self) -> bool:
+        """True when the domain is a torus."""
+        return self._periodic
+
+    def verify(self) -> bool:
+        """Re-check the pattern from scratch, independently of the sampler's
+        bookkeeping: True if valid and maximal, False if valid with room left.
+        Raises InternalError if a check fails (a bug in the library)."""
+        return self._check(_capi.lib.pds_verify(self._h()), "pds_verify") == _capi.DONE
+
+    def __repr__(self) -> str:
+        if self._handle is None:
+            return "<poissondisk.Sampler closed>"
+        return "<poissondisk.Sampler radius=%g points=%d seed=%d>" % (
+            self.radius, len(self), self._seed)
+

@@ -1,0 +1,73 @@
+/*
+ * cli_outputs.c - the points in a format and the pictures of the pattern
+ * (see cli_outputs.h; the spectrum is in cli_spectrum.c).
+ */
+#include "cli_outputs.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "pattern_pictures.h"
+
+int cli_spectrum_wanted(const struct cli_outputs *o)
+{
+    return o->spectrum != NULL || o->spectrum_plot != NULL || o->spectrum_csv != NULL;
+}
+
+static int write_failed(const char *prog, const char *what)
+{
+    fprintf(stderr, "%s: cannot write %s: %s\n", prog, what, strerror(errno));
+    return CLI_EXIT_LIBRARY;
+}
+
+int cli_write_points(const char *prog, const pds_sampler *s, const struct cli_outputs *o,
+                     const struct cli_where *w)
+{
+    FILE *f = stdout;
+    int rc;
+
+    /* Binary formats are written byte for byte, also where "b" would matter. */
+    if (o->output != NULL && (f = fopen(o->output, "wb")) == NULL)
+        return write_failed(prog, o->output);
+    errno = 0;
+    rc = cli_format_write(f, o->format, s, w->box, w->periodic);
+    if (f != stdout && fclose(f) != 0)
+        rc = -1;
+    if (rc != 0) {
+        if (o->output == NULL) {
+            fprintf(stderr, "%s: error writing points: %s\n", prog, strerror(errno));
+            return CLI_EXIT_LIBRARY;
+        }
+        return write_failed(prog, o->output);
+    }
+    return 0;
+}
+
+int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_outputs *o,
+                       const struct cli_where *w)
+{
+    struct pattern p;
+    double *xy;
+    int status = 0;
+
+    if (o->svg == NULL && o->png == NULL)
+        return 0;
+    p.n = pds_count(s);
+    if ((xy = malloc((p.n > 0 ? p.n : 1) * 2 * sizeof *xy)) == NULL) {
+        fprintf(stderr, "%s: out of memory for the pictures\n", prog);
+        return CLI_EXIT_LIBRARY;
+    }
+    pds_points(s, 0, p.n, xy);
+    p.xy = xy;
+    p.box = w->box;
+    p.radius = pds_radius(s);
+    p.periodic = w->periodic;
+    if (o->svg != NULL && pattern_write_svg(&p, o->disks, o->svg) != 0)
+        status = write_failed(prog, o->svg);
+    if (status == 0 && o->png != NULL && pattern_write_png(&p, o->size, o->png) != 0)
+        status = write_failed(prog, o->png);
+    free(xy);
+    return status;
+}

@@ -1,0 +1,122 @@
+/*
+ * out_formats.c - write the points as txt, csv, json, bin or npy (see
+ * out_formats.h).
+ */
+#include "out_formats.h"
+
+#include <stdint.h>
+#include <string.h>
+
+/* Points fetched per pds_points() call: bounded memory for any N. */
+#define CHUNK_POINTS 4096
+
+static const char *const format_names[] = { "txt", "csv", "json", "bin", "npy" };
+
+int cli_format_parse(const char *name, enum cli_format *out)
+{
+    size_t k;
+
+    for (k = 0; k < sizeof format_names / sizeof format_names[0]; k++)
+        if (strcmp(name, format_names[k]) == 0) {
+            *out = (enum cli_format)k;
+            return 0;
+        }
+    return -1;
+}
+
+int cli_format_is_binary(enum cli_format fmt)
+{
+    return fmt == CLI_FORMAT_BIN || fmt == CLI_FORMAT_NPY;
+}
+
+/* v as 8 little-endian bytes, whatever the host's byte order. */
+static void put_le64(unsigned char *p, double v)
+{
+    uint64_t bits;
+    int i;
+
+    memcpy(&bits, &v, sizeof bits);
+    for (i = 0; i < 8; i++)
+        p[i] = (unsigned char)(bits >> (8 * i));
+}
+
+/*
+ * The NumPy 1.0 preamble: magic, version, header length (little-endian
+ * uint16), then a Python dict literal padded with blanks and ended by a
+ * newline so that the data starts on a multiple of 64 bytes.
+ */
+static int write_npy_header(FILE *f, size_t n)
+{
+    char dict[128];
+    unsigned char pre[10] = { 0x93, 'N', 'U', 'M', 'P', 'Y', 1, 0, 0, 0 };
+    int len = snprintf(dict, sizeof dict, "{'descr': '<f8', 'fortran_order': False, "
+                                          "'shape': (%zu, 2), }", n);
+    size_t total = (10 + (size_t)len + 1 + 63) / 64 * 64; /* +1: the newline */
+    size_t hlen = total - 10;
+
+    pre[8] = (unsigned char)(hlen & 0xff);
+    pre[9] = (unsigned char)(hlen >> 8);
+    if (fwrite(pre, 1, sizeof pre, f) != sizeof pre || fputs(dict, f) < 0)
+        return -1;
+    for (len++; (size_t)len < hlen; len++)
+        if (fputc(' ', f) == EOF)
+            return -1;
+    return fputc('\n', f) == EOF ? -1 : 0;
+}
+
+/* What comes before the first point. */
+static int write_head(FILE *f, enum cli_format fmt, const pds_sampler *s, const double *box,
+                      int periodic)
+{
+    switch (fmt) {
+    case CLI_FORMAT_CSV:
+        return fputs("x,y\n", f) < 0 ? -1 : 0;
+    case CLI_FORMAT_JSON:
+        return fprintf(f, "{\"radius\": %.17g, \"domain\": [%.17g, %.17g, %.17g, %.17g], "
+                          "\"periodic\": %s, \"count\": %zu, \"points\": [",
+                       pds_radius(s), box[0], box[1], box[2], box[3],
+                       periodic ? "true" : "false", pds_count(s)) < 0 ? -1 : 0;
+    case CLI_FORMAT_NPY:
+        return write_npy_header(f, pds_count(s));
+    default:
+        return 0;
+    }
+}
+
+/* One point; index is its rank in the output (json puts commas between). */
+static int write_point(FILE *f, enum cli_format fmt, double x, double y, size_t index)
+{
+    unsigned char raw[16];
+
+    switch (fmt) {
+    case CLI_FORMAT_TXT:
+        return fprintf(f, "%.17g %.17g\n", x, y) < 0 ? -1 : 0;
+    case CLI_FORMAT_CSV:
+        return fprintf(f, "%.17g,%.17g\n", x, y) < 0 ? -1 : 0;
+    case CLI_FORMAT_JSON:
+        return fprintf(f, "%s[%.17g, %.17g]", index > 0 ? ", " : "", x, y) < 0 ? -1 : 0;
+    default: /* bin, npy */
+        put_le64(raw, x);
+        put_le64(raw + 8, y);
+        return fwrite(raw, 1, sizeof raw, f) == sizeof raw ? 0 : -1;
+    }
+}
+
+int cli_format_write(FILE *f, enum cli_format fmt, const pds_sampler *s, const double box[4],
+                     int periodic)
+{
+    static double xy[2 * CHUNK_POINTS];
+    size_t first = 0, got, k;
+
+    if (write_head(f, fmt, s, box, periodic) != 0)
+        return -1;
+    while ((got = pds_points(s, first, CHUNK_POINTS, xy)) > 0) {
+        for (k = 0; k < got; k++)
+            if (write_point(f, fmt, xy[2 * k], xy[2 * k + 1], first + k) != 0)
+                return -1;
+        first += got;
+    }
+    if (fmt == CLI_FORMAT_JSON && fputs("]}\n", f) < 0)
+        return -1;
+    return fflush(f) == 0 && !ferror(f) ? 0 : -1;
+}

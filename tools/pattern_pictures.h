@@ -1,0 +1,48 @@
+/*
+ * pattern_pictures.h - a point pattern drawn as SVG (--svg, --disks) or as a
+ * PNG raster (--png, --size). Both show the domain with y upwards, as in
+ * mathematics. Plain C99.
+ */
+#ifndef POISSONDISK_PATTERN_PICTURES_H
+#define POISSONDISK_PATTERN_PICTURES_H
+
+#include <stddef.h>
+
+/* A pattern to draw: n points (x,y interleaved) in box (x0 y0 x1 y1). */
+struct pattern {
+    const double *xy;
+    size_t n;
+    const double *box;
+    double radius;
+    int periodic;
+};
+
+/*
+ * The SVG picture (pattern_svg.c). The user coordinates are the domain's,
+ * with y mirrored so that it grows upwards: a point (x, y) is the circle at
+ * cx = x, cy = y0 + y1 - y. The viewBox is the domain grown by a margin of
+ * R/2 plus the line width on each side; the longer side is 800 pixels wide.
+ * Groups, in drawing order:
+ *   rect id="domain"        the domain's box;
+ *   g id="disks"            with disks: one circle of radius R/2 per point,
+ *                           in point order (no two overlap: the points are
+ *                           at least R apart);
+ *   g id="disk-copies"      with disks on a torus: the copies, shifted by
+ *                           whole periods, of the disks that cross a side,
+ *                           clipped to the box so the picture tiles;
+ *   g id="points"           one small circle (radius R/8) per point, in
+ *                           point order.
+ * Returns 0, or -1 with errno set.
+ */
+int pattern_write_svg(const struct pattern *p, int disks, const char *path);
+
+/*
+ * The PNG raster (pattern_png.c), 8-bit grey: white background, each point a
+ * black dot of radius R/5 but at least 1 pixel, anti-aliased (4 x 4 samples
+ * per pixel); on a torus the dots crossing a side also show on the other
+ * side. The longer side of the domain is size pixels, the other one keeps
+ * the aspect ratio (at least 1 pixel). Returns 0, or -1 with errno set.
+ */
+int pattern_write_png(const struct pattern *p, unsigned size, const char *path);
+
+#endif /* POISSONDISK_PATTERN_PICTURES_H */

@@ -1,0 +1,150 @@
+/*
+ * pattern_stats.c - nearest-neighbour distances through a grid of cells
+ * (see pattern_stats.h).
+ */
+#include "pattern_stats.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+struct grid {
+    const double *xy;
+    double x0, y0, w, h, cw, ch; /* the domain and the cell sides */
+    long nx, ny;
+    size_t *start;               /* the points of cell c: order[start[c] .. start[c+1]) */
+    size_t *order;
+    int periodic;
+};
+
+static long cell_of(double v, double lo, double side, long n)
+{
+    long c = (long)floor((v - lo) / side);
+    return c < 0 ? 0 : c >= n ? n - 1 : c;
+}
+
+/* The difference a - b, on a torus the shortest one over the periods. */
+static double diff(double a, double b, double period, int periodic)
+{
+    double d = a - b;
+    if (periodic) {
+        if (d > period / 2)
+            d -= period;
+        else if (d < -period / 2)
+            d += period;
+    }
+    return d;
+}
+
+/* Squared distance from point i to its nearest other point in cell (cx, cy). */
+static double nearest_in_cell(const struct grid *g, size_t i, long cx, long cy, double best)
+{
+    size_t c, k;
+
+    if (g->periodic) {
+        cx = ((cx % g->nx) + g->nx) % g->nx;
+        cy = ((cy % g->ny) + g->ny) % g->ny;
+    } else if (cx < 0 || cy < 0 || cx >= g->nx || cy >= g->ny) {
+        return best;
+    }
+    c = (size_t)(cy * g->nx + cx);
+    for (k = g->start[c]; k < g->start[c + 1]; k++) {
+        size_t j = g->order[k];
+        double dx, dy, d2;
+        if (j == i)
+            continue;
+        dx = diff(g->xy[2 * i], g->xy[2 * j], g->w, g->periodic);
+        dy = diff(g->xy[2 * i + 1], g->xy[2 * j + 1], g->h, g->periodic);
+        d2 = dx * dx + dy * dy;
+        if (d2 < best)
+            best = d2;
+    }
+    return best;
+}
+
+/* The nearest neighbour of point i, searched ring by ring around its cell. */
+static double nearest(const struct grid *g, size_t i)
+{
+    long cx = cell_of(g->xy[2 * i], g->x0, g->cw, g->nx);
+    long cy = cell_of(g->xy[2 * i + 1], g->y0, g->ch, g->ny);
+    long widest = g->nx > g->ny ? g->nx : g->ny, ring, a;
+    double best = HUGE_VAL, side = g->cw < g->ch ? g->cw : g->ch;
+
+    for (ring = 0;; ring++) {
+        if (ring == 0) {
+            best = nearest_in_cell(g, i, cx, cy, best);
+        } else {
+            for (a = -ring; a <= ring; a++) {
+                best = nearest_in_cell(g, i, cx + a, cy - ring, best);
+                best = nearest_in_cell(g, i, cx + a, cy + ring, best);
+            }
+            for (a = -ring + 1; a <= ring - 1; a++) {
+                best = nearest_in_cell(g, i, cx - ring, cy + a, best);
+                best = nearest_in_cell(g, i, cx + ring, cy + a, best);
+            }
+        }
+        /* Every cell of the next ring is at least ring cell sides away. */
+        if (best <= ((double)ring * side) * ((double)ring * side))
+            break;
+        /* Every cell seen: on a torus once 2 ring + 1 spans the grid. */
+        if (g->periodic ? 2 * ring + 1 >= widest : ring >= widest)
+            break;
+    }
+    return sqrt(best);
+}
+
+int pattern_nn_stats(const double *xy, size_t n, const double box[4], int periodic, double r,
+                     double *min_dist, double *mean_nn)
+{
+    struct grid g;
+    double cell, sum = 0.0, least = HUGE_VAL;
+    size_t k, ncells;
+
+    *min_dist = *mean_nn = NAN;
+    if (n < 2)
+        return 1;
+    g.xy = xy;
+    g.x0 = box[0];
+    g.y0 = box[1];
+    g.w = box[2] - box[0];
+    g.h = box[3] - box[1];
+    g.periodic = periodic;
+    /* About one point per cell, but cells at least r wide. */
+    cell = sqrt(g.w * g.h / (double)n);
+    cell = cell > r ? cell : r;
+    g.nx = (long)fmax(1.0, fmin(floor(g.w / cell), 4.0 * (double)n));
+    g.ny = (long)fmax(1.0, fmin(floor(g.h / cell), 4.0 * (double)n));
+    g.cw = g.w / (double)g.nx;
+    g.ch = g.h / (double)g.ny;
+    ncells = (size_t)g.nx * (size_t)g.ny;
+    g.start = calloc(ncells + 1, sizeof *g.start);
+    g.order = malloc(n * sizeof *g.order);
+    if (g.start == NULL || g.order == NULL) {
+        free(g.start);
+        free(g.order);
+        return -1;
+    }
+    /* Counting sort of the points by cell. */
+    for (k = 0; k < n; k++)
+        g.start[cell_of(xy[2 * k + 1], g.y0, g.ch, g.ny) * g.nx
+                + cell_of(xy[2 * k], g.x0, g.cw, g.nx) + 1]++;
+    for (k = 0; k < ncells; k++)
+        g.start[k + 1] += g.start[k];
+    for (k = 0; k < n; k++) {
+        size_t c = (size_t)(cell_of(xy[2 * k + 1], g.y0, g.ch, g.ny) * g.nx
+                            + cell_of(xy[2 * k], g.x0, g.cw, g.nx));
+        g.order[g.start[c]++] = k;
+    }
+    for (k = ncells; k > 0; k--) /* the fill moved each start to the next one's */
+        g.start[k] = g.start[k - 1];
+    g.start[0] = 0;
+    for (k = 0; k < n; k++) {
+        double d = nearest(&g, k);
+        sum += d;
+        least = d < least ? d : least;
+    }
+    free(g.start);
+    free(g.order);
+    *min_dist = least;
+    *mean_nn = sum / (double)n;
+    return 0;
+}
