@@ -232,8 +232,9 @@ PDS_API int pds_verify(pds_sampler *s) PDS_NOEXCEPT;
  * moving x1 or y1 inwards by less than q. Integers and short binary
  * fractions are exact.
  * The radius must not exceed half the shorter period (x1-x0 or y1-y0 as
- * given): judged with the other limits at the first point (PDS_ERANGE), as
- * for pds_set_domain. pds_verify and pds_free_area work on the torus.
+ * given), and the longer period must not exceed 1024 times the shorter
+ * (the copies that make the torus grow with that ratio; 1.2.0): judged with
+ * the other limits at the first point (PDS_ERANGE), as for pds_set_domain. pds_verify and pds_free_area work on the torus.
  * Allowed only before the first point. Returns 0, PDS_EINVAL (NULL),
  * PDS_ESTATE (points exist already). (1.2)
  */
@@ -261,8 +262,11 @@ PDS_API int pds_set_periodic(pds_sampler *s, int periodic) PDS_NOEXCEPT;
  * gives the same points however the work is split.
  * Allowed only before the first point. Returns 0, PDS_EINVAL (NULL, n == 0),
  * PDS_ESTATE (points exist already). A count the index type cannot hold, or
- * a radius below double precision for the domain, is PDS_ERANGE at the first
- * point. (1.2)
+ * a domain on which the lowest radius the method can reach, 0.98
+ * sqrt(A / (pi n)) (lowered only while a maximal pattern of fewer than n
+ * points covers the area A, by at most 1% a step), is below double
+ * precision, is PDS_ERANGE at the first point: a run that has started
+ * never meets that limit. (1.2)
  */
 PDS_API int pds_set_count(pds_sampler *s, size_t n) PDS_NOEXCEPT;
 

@@ -101,7 +101,10 @@ Limit Frame::precision_limit() const {
         // Against the user's periods: their rounding onto the grid (below
         // 2^-50) must not refuse R = period / 2.
         const Box user = scaled(user_domain_, scale_exp_);
-        if (2.0 * r_ > std::min(user.x1 - user.x0, user.y1 - user.y0)) return Limit::radius_exceeds_period;
+        const double shorter = std::min(user.x1 - user.x0, user.y1 - user.y0);
+        const double longer = std::max(user.x1 - user.x0, user.y1 - user.y0);
+        if (longer > kMaxPeriodRatio * shorter) return Limit::periods_too_unequal;
+        if (2.0 * r_ > shorter) return Limit::radius_exceeds_period;
     }
     return Limit::ok;
 }

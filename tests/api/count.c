@@ -162,6 +162,40 @@ START_TEST(setter_order_free)
 }
 END_TEST
 
+START_TEST(judged_at_the_lowest_radius)
+{
+    /* A square 3 * 2^-26 * 1e15 wide at 1e15, where the precision limit is
+     * 2^-26 * 2^49: 37 points start 1.03 times above it, and lowering the
+     * radius used to cross it in the middle of the run (PDS_ERANGE after 23
+     * points; found by the fuzz harness). The lowest radius count mode can
+     * reach, 0.98 sqrt(A / (pi n)), is judged at the first point instead. */
+    const double lo = 1e15, hi = 1e15 + 3.0 * 0x1p-26 * 1e15;
+    pds_sampler *s = sampler_new(1.0, 1);
+    size_t added = 99, n;
+    double *xy;
+    int rc;
+
+    ck_assert_int_eq(pds_set_domain(s, lo, lo, hi, hi), 0);
+    ck_assert_int_eq(pds_set_count(s, 37), 0);
+    rc = pds_run(s, 0, &added);
+    ck_assert_msg(rc == PDS_ERANGE && added == 0 && pds_count(s) == 0,
+                  "37 points near the precision limit: pds_run returned %d, added %zu, count %zu",
+                  rc, added, pds_count(s));
+    ck_assert_msg(strncmp(pds_errmsg(s), "pds_run", 7) == 0, "pds_errmsg is \"%s\"",
+                  pds_errmsg(s));
+    assert_step_rejected(s, "37 points near the precision limit, pds_step");
+    /* Four points are judged at 0.98 sqrt(A / 4 pi), above the limit: exactly 4. */
+    ck_assert_int_eq(pds_set_count(s, 4), 0);
+    rc = pds_run(s, 0, &added);
+    ck_assert_msg(rc == PDS_DONE && added == 4, "4 points: pds_run returned %d (%s), added %zu", rc,
+                  pds_errmsg(s), added);
+    xy = points_copy(s, &n);
+    assert_spacing(xy, n, pds_radius(s), (test_domain){lo, lo, hi, hi}, 0, 1, "4 points near the limit");
+    free(xy);
+    pds_destroy(s);
+}
+END_TEST
+
 /* pds_run(s, k) until PDS_DONE (k 0: pds_step until 0); each call adds k or finishes. */
 static void run_split(pds_sampler *s, size_t k, size_t n, const char *what)
 {
@@ -314,6 +348,7 @@ Suite *count_suite(void)
     tcase_add_test(tc, large_split);
     tc = new_tcase(s, "refused calls");
     tcase_add_test(tc, refine_refused);
+    tcase_add_test(tc, judged_at_the_lowest_radius);
     tcase_add_test(tc, bad_counts);
     return s;
 }

@@ -145,6 +145,41 @@ START_TEST(radius_above_half_the_period)
 }
 END_TEST
 
+START_TEST(periods_within_1024_to_1)
+{
+    /* 1024:1 is sampled, and a sparse pattern on it is cheap to query; one
+     * more in 1024 is PDS_ERANGE at the first point, nothing added. */
+    const test_domain thin = {0.0, 0.0, 1.0, 0x1p-10}, thinner = {0.0, 0.0, 1.0 + 0x1p-10, 0x1p-10};
+    pds_sampler *s = torus_new(0x1p-11, 1, thinner);
+    size_t added = 0;
+
+    assert_run_rejected(s, 0, "1025:1 torus, pds_run(s, 0)");
+    ck_assert_msg(strstr(pds_errmsg(s), "1024") != NULL, "pds_errmsg is \"%s\"", pds_errmsg(s));
+    assert_step_rejected(s, "1025:1 torus, pds_step");
+    ck_assert_int_eq(pds_set_domain(s, thin.x0, thin.y0, thin.x1, thin.y1), 0);
+    ck_assert_int_eq(pds_run(s, 10, &added), PDS_MORE);
+    ck_assert_int_eq(pds_verify(s), PDS_MORE);
+    ck_assert_msg(pds_free_area(s) > 0.9 * area(thin), "10 points leave %g of %g free",
+                  pds_free_area(s), area(thin));
+    run_to_end(s);
+    check_torus(s, thin, 40, "1024:1 torus");
+    pds_destroy(s);
+}
+END_TEST
+
+START_TEST(verify_memory_follows_the_points)
+{
+    /* 7 points at R 1e-5: the spacing check once sized a dense grid by
+     * period / R, 2^32 buckets (32 GB), and failed with PDS_ENOMEM. */
+    pds_sampler *s = torus_new(1e-5, 3, tori[0].d);
+    size_t added = 0;
+
+    ck_assert_int_eq(pds_run(s, 7, &added), PDS_MORE);
+    ck_assert_msg(pds_verify(s) == PDS_MORE, "pds_verify on 7 points: %s", pds_errmsg(s));
+    pds_destroy(s);
+}
+END_TEST
+
 START_TEST(free_area_on_the_torus)
 {
     const test_domain d = tori[_i].d;
@@ -338,6 +373,8 @@ Suite *periodic_suite(void)
     tcase_add_loop_test(tc, radius_half_the_shorter_period, 0, (int)N_TORI);
     tcase_add_loop_test(tc, free_area_on_the_torus, 0, (int)N_TORI);
     tcase_add_test(tc, period_not_a_binary_fraction);
+    tcase_add_test(tc, periods_within_1024_to_1);
+    tcase_add_test(tc, verify_memory_follows_the_points);
     tc = new_tcase(s, "law");
     tcase_add_test(tc, coverage_is_rsa_saturation);
     tcase_add_test(tc, no_density_excess_at_the_seam);

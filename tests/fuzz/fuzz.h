@@ -146,6 +146,8 @@ double fz_count_bound(const fz_state *st);
 int fz_precision_ok(const fz_state *st, double radius);
 /* The radius is above half the shorter period of the torus (slack: relative). */
 int fz_above_half_period(const fz_state *st, double radius, double slack);
+/* The torus's longer side is above 1024 times its shorter (slack: relative). */
+int fz_periods_too_unequal(const fz_state *st, double slack);
 /* Point (x, y) lies in the domain: closed, or half-open and on the quantum grid
  * on the torus. */
 int fz_inside(const fz_state *st, double x, double y);

@@ -73,12 +73,12 @@ static double lowest_radius(const fz_state *st)
 
 /* PDS_ERANGE from pds_step or pds_run (nothing added): allowed when the precision
  * limit is near the lowest radius of the run, when `want` points might not fit
- * the index space, or on the torus above half the shorter period; required
- * there at the first point. */
+ * the index space, or on the torus above half the shorter period or with a
+ * longer side above 1024 times the shorter; required there at the first point. */
 static void check_range(fz_state *st, const char *fn, int rc, double want, size_t before)
 {
     const int may = !fz_precision_ok(st, lowest_radius(st)) || want >= 3e8 ||
-                    fz_above_half_period(st, st->radius, -1e-9);
+                    fz_above_half_period(st, st->radius, -1e-9) || fz_periods_too_unequal(st, -1e-9);
     if (!FZ_SPEC_111) return;
     if (rc == PDS_ERANGE)
         FZ_CHECK(may, "%s returned PDS_ERANGE for %.3g points at R %.17g%s: %s", fn, want,
@@ -86,6 +86,10 @@ static void check_range(fz_state *st, const char *fn, int rc, double want, size_
     if (before == 0 && fz_above_half_period(st, st->radius, 1e-9))
         FZ_CHECK(rc == PDS_ERANGE, "%s returned %d at R %.17g, above half the shorter period "
                  "of the torus [%.17g,%.17g)x[%.17g,%.17g)", fn, rc, st->radius, st->dom[0],
+                 st->dom[2], st->dom[1], st->dom[3]);
+    if (before == 0 && fz_periods_too_unequal(st, 1e-9))
+        FZ_CHECK(rc == PDS_ERANGE, "%s returned %d on the torus [%.17g,%.17g)x[%.17g,%.17g), "
+                 "whose longer side is above 1024 times the shorter", fn, rc, st->dom[0],
                  st->dom[2], st->dom[1], st->dom[3]);
 }
 

@@ -84,6 +84,13 @@ int fz_above_half_period(const fz_state *st, double radius, double slack)
     return st->periodic && radius > half_shorter(st->dom) * (1.0 + slack);
 }
 
+int fz_periods_too_unequal(const fz_state *st, double slack)
+{
+    const double hw = st->dom[2] * 0.5 - st->dom[0] * 0.5, hh = st->dom[3] * 0.5 - st->dom[1] * 0.5;
+    const double shorter = hw < hh ? hw : hh, longer = hw < hh ? hh : hw;
+    return st->periodic && longer > 1024.0 * shorter * (1.0 + slack);
+}
+
 void fz_count_radius(fz_state *st)
 {
     const double got = pds_radius(st->s);
@@ -92,7 +99,10 @@ void fz_count_radius(fz_state *st)
     if (st->s == NULL || st->target == 0) return;
     if (st->count == 0 && scalable(d)) {
         const int e = ilogb(max_abs4(d));
-        const double w = ldexp(d[2], -e) - ldexp(d[0], -e), h = ldexp(d[3], -e) - ldexp(d[1], -e);
+        /* The area is the torus's: its periods rounded down to the quantum. */
+        const int torus = st->periodic && st->per[0] > 0.0;
+        const double w = torus ? ldexp(st->per[0], -e) : ldexp(d[2], -e) - ldexp(d[0], -e);
+        const double h = torus ? ldexp(st->per[1], -e) : ldexp(d[3], -e) - ldexp(d[1], -e);
         const double n = (double)st->target;
         const double a = 0.547 * 4.0 * w * h / PI, b = st->periodic ? 0.0 : 0.23 * 2.0 * (w + h);
         double want = ldexp((b + sqrt(b * b + 4.0 * a * n)) / (2.0 * n) * (1.015 + 10.0 / n), e);
