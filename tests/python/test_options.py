@@ -158,6 +158,13 @@ class PeriodicTest(TestCase):
         with Sampler(0.6, periodic=True) as s:
             self.assertLibraryError(poissondisk.RangeError, poissondisk.ERANGE, s.run)
 
+    def test_periods_at_most_1024_to_1(self):
+        with Sampler(2 ** -12, bounds=((0, 0), (1, 2 ** -10)), periodic=True) as s:
+            self.assertIs(s.run(), True)
+        with Sampler(2 ** -12, bounds=((0, 0), (1.001, 2 ** -10)), periodic=True) as s:
+            exc = self.assertLibraryError(poissondisk.RangeError, poissondisk.ERANGE, s.run)
+            self.assertIn("1024", exc.message)
+
     def test_with_count(self):
         with Sampler(None, seed=6, count=300, periodic=True) as s:
             s.run()

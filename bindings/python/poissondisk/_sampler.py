@@ -72,7 +72,8 @@ class Sampler:
         periodic: True samples the rectangle as a flat torus: distances wrap
             around, points lie in [x0,x1)x[y0,y1), and copies shifted by the
             periods tile the plane seamlessly. The radius must be at most half
-            the shorter period.
+            the shorter period, and the longer period at most 1024 times the
+            shorter (else RangeError at the first point).
         count: a number of points n >= 1: the library chooses the radius so
             that run() ends with exactly n points (then `radius` is the last
             radius used, and refine() is refused).
