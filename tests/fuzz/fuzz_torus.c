@@ -99,8 +99,9 @@ void fz_count_radius(fz_state *st)
     if (st->s == NULL || st->target == 0) return;
     if (st->count == 0 && scalable(d)) {
         const int e = ilogb(max_abs4(d));
-        /* The area is the torus's: its periods rounded down to the quantum. */
-        const int torus = st->periodic && st->per[0] > 0.0;
+        /* The area is the torus's: its periods rounded down to the quantum;
+         * the sides as given when one rounds to 0 (no point can exist). */
+        const int torus = st->periodic && st->per[0] > 0.0 && st->per[1] > 0.0;
         const double w = torus ? ldexp(st->per[0], -e) : ldexp(d[2], -e) - ldexp(d[0], -e);
         const double h = torus ? ldexp(st->per[1], -e) : ldexp(d[3], -e) - ldexp(d[1], -e);
         const double n = (double)st->target;
@@ -109,8 +110,10 @@ void fz_count_radius(fz_state *st)
         if (st->periodic && want > half_shorter(d)) want = half_shorter(d);
         /* (want is 0 only on a torus so thin that its area underflows: PDS_ERANGE) */
         FZ_CHECK(isfinite(got) && fabs(got - want) <= 1e-9 * want,
-                 "count mode (n %zu%s): pds_radius is %.17g, the documented start %.17g",
-                 st->target, st->periodic ? ", torus" : "", got, want);
+                 "count mode (n %zu%s): pds_radius is %.17g, the documented start %.17g "
+                 "(domain [%.17g,%.17g]x[%.17g,%.17g], periods %.17g, %.17g)",
+                 st->target, st->periodic ? ", torus" : "", got, want, d[0], d[2], d[1], d[3],
+                 st->per[0], st->per[1]);
     }
     st->radius = got;
 }
