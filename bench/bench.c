@@ -219,7 +219,8 @@ static int child_run(enum method m, double radius, uint64_t seed, const struct o
     rec.points = (double)gen.count;
     if (rc == 0) {
         const double *xy = generated_points(&gen);
-        if (xy == NULL || pattern_check(xy, gen.count, radius, probe_side, &rec.check) != 0)
+        if (xy == NULL || pattern_check(xy, gen.count, radius, m == METHOD_PERIODIC, probe_side,
+                                         &rec.check) != 0)
             snprintf(rec.error, sizeof rec.error, "out of memory in the checks");
         else
             rec.ok = 1;

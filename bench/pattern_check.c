@@ -5,7 +5,9 @@
  * a point (or to a probe) lies in the 3x3 block of cells around it, whatever
  * the pattern: unlike the baselines' one-point-per-cell grid, this one also
  * holds invalid patterns and then reports them. Points are stored sorted by
- * cell (counting sort), so a block scan reads contiguous memory.
+ * cell (counting sort), so a block scan reads contiguous memory. On the unit
+ * torus the blocks wrap around, and a wrapped cell's points are shifted by the
+ * period that brings them next to the one asked about.
  */
 #include "pattern_check.h"
 
@@ -19,6 +21,7 @@
 
 struct bucket_grid {
     uint32_t side;     /* cells per side */
+    int periodic;      /* the unit torus: neighbours wrap around */
     uint32_t *start;   /* side*side + 1 offsets into sorted */
     double *sorted;    /* the points, interleaved x,y, grouped by cell */
 };
@@ -33,7 +36,37 @@ static size_t cell_of(const struct bucket_grid *g, double x, double y) {
     return (size_t)cell_coord(g, y) * g->side + cell_coord(g, x);
 }
 
-static int bucket_grid_build(struct bucket_grid *g, const double *xy, size_t n, double radius) {
+/* Cell (cx + dx, cy + dy) wrapped on the torus, with the shift of its points
+ * towards (cx, cy); 0 when it lies outside the square. */
+static int neighbour(const struct bucket_grid *g, uint32_t cx, uint32_t cy, int dx, int dy,
+                     size_t *cell, double *sx, double *sy) {
+    long nx = (long)cx + dx, ny = (long)cy + dy, side = (long)g->side;
+    *sx = *sy = 0.0;
+    if (nx < 0 || nx >= side || ny < 0 || ny >= side) {
+        if (!g->periodic) return 0;
+        if (nx < 0) nx += side, *sx = -1.0;
+        else if (nx >= side) nx -= side, *sx = 1.0;
+        if (ny < 0) ny += side, *sy = -1.0;
+        else if (ny >= side) ny -= side, *sy = 1.0;
+    }
+    *cell = (size_t)ny * g->side + (size_t)nx;
+    return 1;
+}
+
+/* Smallest squared distance from (x, y) to the points of cell c shifted by (sx, sy). */
+static double closest_in(const struct bucket_grid *g, size_t c, double x, double y, double sx,
+                         double sy, double best) {
+    uint32_t b;
+    for (b = g->start[c]; b < g->start[c + 1]; ++b) {
+        double dx = g->sorted[2 * (size_t)b] + sx - x, dy = g->sorted[2 * (size_t)b + 1] + sy - y;
+        double d2 = dx * dx + dy * dy;
+        if (d2 < best) best = d2;
+    }
+    return best;
+}
+
+static int bucket_grid_build(struct bucket_grid *g, const double *xy, size_t n, double radius,
+                             int periodic) {
     /* 1e-9 of slack: rounding in the cell index can never split a close pair
      * across non-adjacent cells. */
     double side = floor(1.0 / (radius * (1.0 + 1e-9)));
@@ -41,6 +74,7 @@ static int bucket_grid_build(struct bucket_grid *g, const double *xy, size_t n, 
     if (side < 1.0) side = 1.0;
     if (side > 65535.0) return -1; /* 2^32 cells: far beyond any benchmarked size */
     g->side = (uint32_t)side;
+    g->periodic = periodic;
     cells = (size_t)g->side * g->side;
     g->start = calloc(cells + 1, sizeof *g->start);
     g->sorted = malloc((n > 0 ? 2 * n : 1) * sizeof *g->sorted);
@@ -70,12 +104,13 @@ static void bucket_grid_free(struct bucket_grid *g) {
 
 /* Smallest squared distance from point slot a to any later point in its cell
  * or to any point in the four cells after it (right, and the three above), so
- * each pair is looked at once. */
+ * each pair is looked at once (on a torus of one or two cells a side, some
+ * twice: harmless for a minimum). */
 static double closest_later(const struct bucket_grid *g, uint32_t cx, uint32_t cy, uint32_t a,
                             double best) {
     static const int step[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-    double x = g->sorted[2 * (size_t)a], y = g->sorted[2 * (size_t)a + 1];
-    size_t own = (size_t)cy * g->side + cx;
+    double x = g->sorted[2 * (size_t)a], y = g->sorted[2 * (size_t)a + 1], sx, sy;
+    size_t own = (size_t)cy * g->side + cx, c;
     uint32_t b;
     int k;
     for (b = a + 1; b < g->start[own + 1]; ++b) {
@@ -83,23 +118,26 @@ static double closest_later(const struct bucket_grid *g, uint32_t cx, uint32_t c
         double d2 = dx * dx + dy * dy;
         if (d2 < best) best = d2;
     }
-    for (k = 0; k < 4; ++k) {
-        long nx = (long)cx + step[k][0], ny = (long)cy + step[k][1];
-        size_t c;
-        if (nx < 0 || nx >= (long)g->side || ny >= (long)g->side) continue;
-        c = (size_t)ny * g->side + (size_t)nx;
-        for (b = g->start[c]; b < g->start[c + 1]; ++b) {
-            double dx = g->sorted[2 * (size_t)b] - x, dy = g->sorted[2 * (size_t)b + 1] - y;
-            double d2 = dx * dx + dy * dy;
-            if (d2 < best) best = d2;
-        }
-    }
+    for (k = 0; k < 4; ++k)
+        if (neighbour(g, cx, cy, step[k][0], step[k][1], &c, &sx, &sy))
+            best = closest_in(g, c, x, y, sx, sy, best);
     return best;
 }
 
 /* Nonzero if some point lies within R of (x, y) (up to 1e-12 relative). */
 static int covered(const struct bucket_grid *g, double x, double y, double reach2) {
     uint32_t cx = cell_coord(g, x), cy = cell_coord(g, y);
+    if (g->periodic) {
+        double sx, sy;
+        size_t c;
+        int dx, dy;
+        for (dy = -1; dy <= 1; ++dy)
+            for (dx = -1; dx <= 1; ++dx)
+                if (neighbour(g, cx, cy, dx, dy, &c, &sx, &sy) &&
+                    closest_in(g, c, x, y, sx, sy, HUGE_VAL) <= reach2)
+                    return 1;
+        return 0;
+    }
     uint32_t x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < g->side ? cx + 1 : cx;
     uint32_t y0 = cy > 0 ? cy - 1 : 0, y1 = cy + 1 < g->side ? cy + 1 : cy;
     uint32_t j, b;
@@ -120,7 +158,7 @@ uint32_t pattern_probe_side(size_t target_points) {
     return side < PATTERN_PROBE_SIDE_MAX ? (uint32_t)side : PATTERN_PROBE_SIDE_MAX;
 }
 
-int pattern_check(const double *xy, size_t n, double radius, uint32_t probe_side,
+int pattern_check(const double *xy, size_t n, double radius, int periodic, uint32_t probe_side,
                   struct pattern_check *out) {
     struct bucket_grid grid;
     struct bench_rng rng;
@@ -129,10 +167,11 @@ int pattern_check(const double *xy, size_t n, double radius, uint32_t probe_side
     uint32_t cx, cy, a, i, j;
     size_t p;
 
-    if (bucket_grid_build(&grid, xy, n, radius) != 0) return -1;
+    if (bucket_grid_build(&grid, xy, n, radius, periodic) != 0) return -1;
     for (p = 0; p < n; ++p) {
         double x = xy[2 * p], y = xy[2 * p + 1];
         if (!(x >= 0.0 && x <= 1.0 && y >= 0.0 && y <= 1.0)) inside = 0;
+        if (periodic && (x == 1.0 || y == 1.0)) inside = 0; /* the torus is [0,1)^2 */
     }
     for (cy = 0; cy < grid.side; ++cy)
         for (cx = 0; cx < grid.side; ++cx) {

@@ -27,12 +27,13 @@ struct pattern_check {
 uint32_t pattern_probe_side(size_t target_points);
 
 /*
- * Checks the n points xy (interleaved x,y) at radius R with a probe_side^2
+ * Checks the n points xy (interleaved x,y) at radius R (periodic: on the unit
+ * torus [0,1)^2, distances wrapped) with a probe_side^2
  * jittered lattice: one probe uniform in each lattice cell, from a fixed seed,
  * so every method at the same target size meets the same probes.
  * Returns 0, or -1 when memory runs out.
  */
-int pattern_check(const double *xy, size_t n, double radius, uint32_t probe_side,
+int pattern_check(const double *xy, size_t n, double radius, int periodic, uint32_t probe_side,
                   struct pattern_check *out);
 
 #endif /* BENCH_PATTERN_CHECK_H */

@@ -21,14 +21,20 @@ static void expect(FILE *log, int condition, const char *what) {
     }
 }
 
-static struct pattern_check run(const double *xy, size_t n, double radius, uint32_t probe_side) {
+static struct pattern_check run_on(const double *xy, size_t n, double radius, int periodic,
+                                   uint32_t probe_side) {
     struct pattern_check c;
-    if (pattern_check(xy, n, radius, probe_side, &c) != 0) {
+    if (pattern_check(xy, n, radius, periodic, probe_side, &c) != 0) {
         c.min_distance = 0.0;
         c.min_distance_ok = -1; /* matches neither expectation */
         c.probes = c.uncovered = 0;
     }
     return c;
+}
+
+/* In the unit square. */
+static struct pattern_check run(const double *xy, size_t n, double radius, uint32_t probe_side) {
+    return run_on(xy, n, radius, 0, probe_side);
 }
 
 /* The (side+1)^2 lattice i/side, j/side, without the points skip says. */
@@ -105,6 +111,23 @@ int pattern_check_self_test(FILE *log) {
     n = lattice(grid, 10, two_middle_points);
     got = run(grid, n, r, 256);
     expect(log, got.uncovered > 0, "a lattice missing two points leaves a hole");
+
+    /* The unit torus: a pair 0.04 apart only across the seam, a disk that
+     * wraps around the corner, a point on the excluded side x = 1. */
+    pair[0] = 0.02, pair[1] = 0.5, pair[2] = 0.98, pair[3] = 0.5;
+    got = run(pair, 2, r, 4);
+    expect(log, got.min_distance_ok == 1, "a pair 0.96 apart passes in the square");
+    got = run_on(pair, 2, r, 1, 4);
+    expect(log, got.min_distance_ok == 0 && fabs(got.min_distance - 0.04) < 1e-12,
+           "on the torus the pair is 0.04 apart across the seam and fails");
+    pair[0] = 0.02, pair[1] = 0.03;
+    got = run_on(pair, 1, r, 1, 512);
+    p = got.probes > 0 ? (double)got.uncovered / (double)got.probes : -1.0;
+    expect(log, fabs(p - expected) < 5.0 * sqrt(expected * (1.0 - expected) / (512.0 * 512.0)),
+           "on the torus a disk at the corner leaves 1 - pi R^2 uncovered");
+    pair[0] = 1.0, pair[1] = 0.5;
+    got = run_on(pair, 1, r, 1, 4);
+    expect(log, got.min_distance_ok == 0, "on the torus a point at x = 1 fails");
 
     fprintf(log, "pattern_check self-test: %s\n", failures == 0 ? "passed" : "FAILED");
     return failures == 0 ? 0 : 1;
