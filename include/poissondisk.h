@@ -48,7 +48,7 @@ extern "C" {
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
 #define PDS_VERSION_MINOR 2
-#define PDS_VERSION_PATCH 0
+#define PDS_VERSION_PATCH 1
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
 
@@ -233,7 +233,7 @@ PDS_API int pds_verify(pds_sampler *s) PDS_NOEXCEPT;
  * fractions are exact.
  * The radius must not exceed half the shorter period (x1-x0 or y1-y0 as
  * given), and the longer period must not exceed 1024 times the shorter
- * (the copies that make the torus grow with that ratio; 1.2.0): judged with
+ * (the copies that make the torus grow with that ratio; 1.2.1): judged with
  * the other limits at the first point (PDS_ERANGE), as for pds_set_domain. pds_verify and pds_free_area work on the torus.
  * Allowed only before the first point. Returns 0, PDS_EINVAL (NULL),
  * PDS_ESTATE (points exist already). (1.2)

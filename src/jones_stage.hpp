@@ -143,6 +143,9 @@ private:
     VertexIndex insert_copy(const Point& p, VertexIndex near, VertexIndex original);
     // Where to start the walk that inserts w, p moved into the domain.
     VertexIndex walk_start(const Point& p, const Point& w, VertexIndex near) const;
+    // Where to start the walk that inserts c, the copy of real vertex v
+    // shifted by (i, j) periods; hint: the last copy with that offset.
+    VertexIndex copy_walk_start(VertexIndex v, const Point& c, int i, int j, VertexIndex hint) const;
     // Whether the triangles around the new vertices [from, vertex_count)
     // keep the torus invariant.
     bool new_rings_valid(VertexIndex from) const;

@@ -46,9 +46,36 @@ VertexIndex JonesStage::insert_with_copies(const Point& p, VertexIndex near) {
     // copies of nearby points are near each other.
     copies_.for_each_copy(p, copies_.margin(), -1.0, [&](const Point& c, int i, int j) {
         VertexIndex& hint = copy_hint_[copies_.offset_slot(i, j)];
-        hint = insert_copy(c, hint, v);
+        hint = insert_copy(c, copy_walk_start(v, c, i, j, hint), v);
     });
     return v;
+}
+
+VertexIndex JonesStage::copy_walk_start(VertexIndex v, const Point& c, int i, int j, VertexIndex hint) const {
+    // A walk costs about its length in points. The last copy with this offset
+    // lies anywhere along the edge (far, on a long thin torus); v itself is
+    // one shift away (near, across a short period); and a neighbour of v that
+    // is a copy shifted by (-i, -j) has its original right next to c. Start
+    // at the nearest of these: only the walk's length depends on the choice.
+    const Torus& t = copies_.torus();
+    const double sx = -i * t.px, sy = -j * t.py;  // exact on the grid
+    const auto distance2 = [&c](const Point& q) { return (q.x - c.x) * (q.x - c.x) + (q.y - c.y) * (q.y - c.y); };
+    VertexIndex start = v;
+    double best = distance2(dt_.point(v));
+    if (!Delaunay::is_ghost(hint) && distance2(dt_.point(hint)) < best) {
+        start = hint;
+        best = distance2(dt_.point(hint));
+    }
+    dt_.for_each_neighbour(v, [&](VertexIndex n) {
+        if (Delaunay::is_ghost(n) || original_[n] == n) return;
+        const Point& q = dt_.point(n);
+        const Point& o = dt_.point(original_[n]);
+        if (q.x - o.x == sx && q.y - o.y == sy && distance2(o) < best) {
+            start = original_[n];
+            best = distance2(o);
+        }
+    });
+    return start;
 }
 
 VertexIndex JonesStage::walk_start(const Point& p, const Point& w, VertexIndex near) const {
