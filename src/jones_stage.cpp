@@ -68,13 +68,13 @@ void JonesStage::adopt(const std::vector<Point>& points, const std::uint32_t* or
         make_room_for_copies(n + copies);
         VertexIndex previous = 0;
         for (std::size_t i = 0; i < n; ++i) {
-            previous = insert_real(points[order[i]], previous);
+            previous = insert_vertex(points[order[i]], previous);
             order_.set(order[i], previous);
         }
         for (std::size_t i = 0; i < n; ++i)
             copies_.for_each_copy(points[order[i]], copies_.margin(), -1.0, [&](const Point& c, int a, int b) {
                 VertexIndex& hint = copy_hint_[copies_.offset_slot(a, b)];
-                hint = insert_copy(c, hint, order_.vertex(order[i]));
+                hint = insert_vertex(c, hint, order_.vertex(order[i]));
             });
         widen_pending_ = true;
         return;

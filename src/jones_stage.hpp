@@ -48,6 +48,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "batch.hpp"
@@ -139,8 +140,15 @@ private:
     void make_room_for_copies(std::size_t copies);
     // Inserts p (real, wrapped) and its copies; returns p's vertex.
     VertexIndex insert_with_copies(const Point& p, VertexIndex near);
-    VertexIndex insert_real(const Point& p, VertexIndex near);
-    VertexIndex insert_copy(const Point& p, VertexIndex near, VertexIndex original);
+    // Inserts p with its bookkeeping: a copy of real vertex *copy_of, or a
+    // real point when there is none. Its tree leaf is 0 until measured.
+    VertexIndex insert_vertex(const Point& p, VertexIndex near, std::optional<VertexIndex> copy_of = std::nullopt);
+    // A real point's vertex (not a ghost, not a copy); the torus only.
+    bool is_real(VertexIndex v) const { return !Delaunay::is_ghost(v) && original_[v] == v; }
+    // Calls f(o) for each neighbour of v that is a copy of real vertex o
+    // shifted by exactly (sx, sy) (exact on the grid).
+    template <class F>
+    void for_each_neighbour_copy(VertexIndex v, double sx, double sy, const F& f) const;
     // Where to start the walk that inserts w, p moved into the domain.
     VertexIndex walk_start(const Point& p, const Point& w, VertexIndex near) const;
     // Where to start the walk that inserts c, the copy of real vertex v

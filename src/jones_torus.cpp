@@ -24,29 +24,30 @@ void JonesStage::make_room_for_copies(std::size_t copies) {
     order_.reserve(std::max(count() + 1, order_.capacity()));
 }
 
-VertexIndex JonesStage::insert_copy(const Point& p, VertexIndex near, VertexIndex original) {
+VertexIndex JonesStage::insert_vertex(const Point& p, VertexIndex near, std::optional<VertexIndex> copy_of) {
     const VertexIndex v = dt_.insert(p, near);
-    is_copy_.push_back(1);
-    original_.push_back(original);
+    is_copy_.push_back(copy_of ? 1 : 0);
+    original_.push_back(copy_of ? *copy_of : v);
     tree_.push_back(0.0);
     return v;
 }
 
-VertexIndex JonesStage::insert_real(const Point& p, VertexIndex near) {
-    const VertexIndex v = dt_.insert(p, near);
-    is_copy_.push_back(0);
-    original_.push_back(v);
-    tree_.push_back(0.0);
-    return v;
+template <class F>
+void JonesStage::for_each_neighbour_copy(VertexIndex v, double sx, double sy, const F& f) const {
+    dt_.for_each_neighbour(v, [&](VertexIndex n) {
+        if (Delaunay::is_ghost(n) || is_real(n)) return;
+        const Point& c = dt_.point(n);
+        const Point& o = dt_.point(original_[n]);
+        if (c.x - o.x == sx && c.y - o.y == sy) f(original_[n]);
+    });
 }
 
 VertexIndex JonesStage::insert_with_copies(const Point& p, VertexIndex near) {
-    const VertexIndex v = insert_real(p, near);
-    // Each offset's walk starts at the copy with that offset inserted last:
-    // copies of nearby points are near each other.
+    const VertexIndex v = insert_vertex(p, near);
+    // The hint of each offset is the copy with that offset inserted last.
     copies_.for_each_copy(p, copies_.margin(), -1.0, [&](const Point& c, int i, int j) {
         VertexIndex& hint = copy_hint_[copies_.offset_slot(i, j)];
-        hint = insert_copy(c, copy_walk_start(v, c, i, j, hint), v);
+        hint = insert_vertex(c, copy_walk_start(v, c, i, j, hint), v);
     });
     return v;
 }
@@ -58,23 +59,15 @@ VertexIndex JonesStage::copy_walk_start(VertexIndex v, const Point& c, int i, in
     // is a copy shifted by (-i, -j) has its original right next to c. Start
     // at the nearest of these: only the walk's length depends on the choice.
     const Torus& t = copies_.torus();
-    const double sx = -i * t.px, sy = -j * t.py;  // exact on the grid
     const auto distance2 = [&c](const Point& q) { return (q.x - c.x) * (q.x - c.x) + (q.y - c.y) * (q.y - c.y); };
     VertexIndex start = v;
     double best = distance2(dt_.point(v));
-    if (!Delaunay::is_ghost(hint) && distance2(dt_.point(hint)) < best) {
-        start = hint;
-        best = distance2(dt_.point(hint));
-    }
-    dt_.for_each_neighbour(v, [&](VertexIndex n) {
-        if (Delaunay::is_ghost(n) || original_[n] == n) return;
-        const Point& q = dt_.point(n);
-        const Point& o = dt_.point(original_[n]);
-        if (q.x - o.x == sx && q.y - o.y == sy && distance2(o) < best) {
-            start = original_[n];
-            best = distance2(o);
-        }
-    });
+    const auto consider = [&](VertexIndex u) {
+        const double d = distance2(dt_.point(u));
+        if (d < best) start = u, best = d;
+    };
+    if (!Delaunay::is_ghost(hint)) consider(hint);
+    for_each_neighbour_copy(v, -i * t.px, -j * t.py, consider);  // shifts exact on the grid
     return start;
 }
 
@@ -83,21 +76,15 @@ VertexIndex JonesStage::walk_start(const Point& p, const Point& w, VertexIndex n
     // from near, but near's ring holds copies of points near w: start at the
     // original of the one shifted as p was.
     if (p.x == w.x && p.y == w.y) return near;
-    const double sx = p.x - w.x, sy = p.y - w.y;  // exact on the grid
     VertexIndex start = near;
-    dt_.for_each_neighbour(near, [&](VertexIndex n) {
-        if (Delaunay::is_ghost(n) || original_[n] == n) return;
-        const Point& c = dt_.point(n);
-        const Point& o = dt_.point(original_[n]);
-        if (c.x - o.x == sx && c.y - o.y == sy) start = original_[n];
-    });
+    for_each_neighbour_copy(near, p.x - w.x, p.y - w.y, [&](VertexIndex o) { start = o; });  // exact on the grid
     return start;
 }
 
 bool JonesStage::new_rings_valid(VertexIndex from) const {
-    const auto is_real = [this](VertexIndex u) { return !Delaunay::is_ghost(u) && original_[u] == u; };
+    const auto real = [this](VertexIndex u) { return is_real(u); };
     for (VertexIndex v = from; v < dt_.vertex_count(); ++v)
-        if (!copies_.ring_valid(dt_, v, is_real)) return false;
+        if (!copies_.ring_valid(dt_, v, real)) return false;
     return true;
 }
 
@@ -115,7 +102,7 @@ void JonesStage::widen_margin() {
         for (PointIndex k = 0; k < count(); ++k)
             copies_.for_each_copy(point(k), now, old, [&](const Point& c, int i, int j) {
                 VertexIndex& hint = copy_hint_[copies_.offset_slot(i, j)];
-                hint = insert_copy(c, hint, order_.vertex(k));
+                hint = insert_vertex(c, hint, order_.vertex(k));
             });
         copies_.set_margin(now);
     }
@@ -130,8 +117,7 @@ bool JonesStage::cell_valid(VertexIndex v, const CellMeasure& m) const {
     const Point& p = dt_.point(v);
     const double need = 2.0 * m.reach * (1.0 + 0x1.0p-40) + 0x1.0p-40;
     if (p.x - e.x0 > need && e.x1 - p.x > need && p.y - e.y0 > need && e.y1 - p.y > need) return true;
-    const auto is_real = [this](VertexIndex u) { return !Delaunay::is_ghost(u) && original_[u] == u; };
-    return copies_.ring_valid(dt_, v, is_real);
+    return copies_.ring_valid(dt_, v, [this](VertexIndex u) { return is_real(u); });
 }
 
 void JonesStage::settle() {

@@ -14,33 +14,51 @@ constexpr double kCellSlack = 1.0 + 0x1.0p-20;
 constexpr double kMaxCellsPerAxis = 1e9;
 static_assert(kMaxCellsPerAxis < 4294967296.0, "cell coordinates must fit 32 bits");
 
+// Cells to a period: whole, each at least the slackened radius wide, and
+// within the key's range (a coarser cell holds more points: time, not
+// correctness).
+std::int64_t cells_per_period(double period, double radius) {
+    const double n = std::floor(period / (radius * kCellSlack));
+    return n < 1.0 ? 1 : static_cast<std::int64_t>(n < kMaxCellsPerAxis ? n : kMaxCellsPerAxis);
+}
+
 }  // namespace
 
 SpatialHash::SpatialHash(const std::vector<Point>& points, std::size_t first, const Box& domain,
                          double radius)
-    : domain_(domain), cell_(radius * kCellSlack) {
+    : x0_(domain.x0), y0_(domain.y0), cell_x_(radius * kCellSlack), cell_y_(cell_x_) {
     // Cells per axis must fit in 32 bits; a cell that large holds more points,
     // which costs time, not correctness.
     const double span = domain.width() > domain.height() ? domain.width() : domain.height();
-    if (span / cell_ > kMaxCellsPerAxis) cell_ = span / kMaxCellsPerAxis;
+    if (span / cell_x_ > kMaxCellsPerAxis) cell_x_ = cell_y_ = span / kMaxCellsPerAxis;
+    index(points, first);
+}
+
+SpatialHash::SpatialHash(const std::vector<Point>& points, std::size_t first, const Torus& t,
+                         double radius)
+    : x0_(t.x0), y0_(t.y0), cols_(cells_per_period(t.px, radius)), rows_(cells_per_period(t.py, radius)) {
+    cell_x_ = t.px / static_cast<double>(cols_);
+    cell_y_ = t.py / static_cast<double>(rows_);
+    index(points, first);
+}
+
+void SpatialHash::index(const std::vector<Point>& points, std::size_t first) {
     next_.assign(points.size(), kEnd);
     cells_.reserve(points.size() - first);
     for (std::size_t i = first; i < points.size(); ++i) {
-        const std::uint64_t k = key(cell_x(points[i]), cell_y(points[i]));
+        const std::uint64_t k =
+            key(cell(points[i].x, x0_, cell_x_, cols_), cell(points[i].y, y0_, cell_y_, rows_));
         const std::uint32_t* head = cells_.find(k);
         next_[i] = head ? *head : kEnd;
         cells_.insert_or_assign(k, static_cast<std::uint32_t>(i));
     }
 }
 
-std::int64_t SpatialHash::cell_x(const Point& p) const {
-    const double c = std::floor((p.x - domain_.x0) / cell_);
-    return c < 0.0 ? 0 : static_cast<std::int64_t>(c);
-}
-
-std::int64_t SpatialHash::cell_y(const Point& p) const {
-    const double c = std::floor((p.y - domain_.y0) / cell_);
-    return c < 0.0 ? 0 : static_cast<std::int64_t>(c);
+std::int64_t SpatialHash::cell(double v, double origin, double width, std::int64_t n) {
+    const double c = std::floor((v - origin) / width);
+    if (!(c > 0.0)) return 0;
+    const std::int64_t k = static_cast<std::int64_t>(c);
+    return n > 0 && k >= n ? n - 1 : k;
 }
 
 }  // namespace pds

@@ -31,7 +31,7 @@ bool check_points(const Delaunay& dt, const Box& box, double r, VerifyReport& re
     const SpatialHash grid(pts, Delaunay::kGhosts, box, r);
     for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
         bool close = false;
-        grid.for_each_near(pts[i], [&](std::uint32_t j) {
+        grid.for_each_near(pts[i], [&](std::uint32_t j, int, int) {
             if (j < i && compare_distance(pts[i], pts[j], r) < 0) close = true;
         });
         if (close) {
