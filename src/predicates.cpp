@@ -56,6 +56,26 @@ int compare_closer_exact(const Point& p, const Point& a, const Point& b) {
     return sign_of(squared_distance_exact(p, a) - squared_distance_exact(p, b));
 }
 
+int power_test_exact(const Point& a, double ra, const Point& b, double rb, const Point& c, double rc,
+                     const Point& d, double rd) {
+    const auto adx = exact_diff(a.x, d.x), ady = exact_diff(a.y, d.y);
+    const auto bdx = exact_diff(b.x, d.x), bdy = exact_diff(b.y, d.y);
+    const auto cdx = exact_diff(c.x, d.x), cdy = exact_diff(c.y, d.y);
+    const auto rd2 = exact_product(rd, rd);
+    const auto alift = adx * adx + ady * ady - exact_product(ra, ra) + rd2;
+    const auto blift = bdx * bdx + bdy * bdy - exact_product(rb, rb) + rd2;
+    const auto clift = cdx * cdx + cdy * cdy - exact_product(rc, rc) + rd2;
+    const auto bc = bdx * cdy - cdx * bdy;
+    const auto ca = cdx * ady - adx * cdy;
+    const auto ab = adx * bdy - bdx * ady;
+    return sign_of(alift * bc + blift * ca + clift * ab);
+}
+
+int compare_power_exact(const Point& p, const Point& a, double ra, const Point& b, double rb) {
+    return sign_of(squared_distance_exact(p, a) - exact_product(ra, ra) - squared_distance_exact(p, b) +
+                   exact_product(rb, rb));
+}
+
 }  // namespace predicate_detail
 
 }  // namespace pds

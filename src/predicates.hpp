@@ -38,11 +38,18 @@ constexpr double kU = kUnitRoundoff;
 constexpr double kOrientBound = (3.0 + 16.0 * kU) * kU;
 constexpr double kInCircleBound = (10.0 + 96.0 * kU) * kU;
 constexpr double kDistanceBound = 8.0 * kU;
+// The weighted forms add the squared radii (one more rounding each, and the
+// difference of two) to every lifted coordinate: a looser constant.
+constexpr double kPowerTestBound = (24.0 + 256.0 * kU) * kU;
+constexpr double kPowerBound = 12.0 * kU;
 
 int orient2d_exact(const Point& a, const Point& b, const Point& c);
 int incircle_exact(const Point& a, const Point& b, const Point& c, const Point& d);
 int compare_distance_exact(const Point& p, const Point& q, double r);
 int compare_closer_exact(const Point& p, const Point& a, const Point& b);
+int power_test_exact(const Point& a, double ra, const Point& b, double rb, const Point& c, double rc,
+                     const Point& d, double rd);
+int compare_power_exact(const Point& p, const Point& a, double ra, const Point& b, double rb);
 
 }  // namespace predicate_detail
 
@@ -107,6 +114,60 @@ inline int compare_closer(const Point& p, const Point& a, const Point& b) {
     if (diff > bound) return 1;
     if (-diff > bound) return -1;
     return compare_closer_exact(p, a, b);
+}
+
+// The weighted forms (the power diagram of disks, variable radius). A disk
+// (x, r) is lifted to (x, |x|^2 - r^2); its power at a point p is
+// |p - x|^2 - r^2, and the power diagram is the projection of the lower hull
+// of the lifted points (the regular triangulation is its dual). Radii enter
+// squared, and exactly in the exact path. Equal radii give the unweighted
+// predicates' signs, bit for bit: the weights' differences are then 0.
+
+// +1 if the lifted d lies strictly below the plane through the lifted a, b, c
+// (a, b, c counterclockwise): d conflicts with the triangle, as a point
+// strictly inside the circumcircle does; -1 if above, 0 if on it.
+inline int power_test(const Point& a, double ra, const Point& b, double rb, const Point& c, double rc,
+                      const Point& d, double rd) {
+    using namespace predicate_detail;
+    const double adx = a.x - d.x, ady = a.y - d.y;
+    const double bdx = b.x - d.x, bdy = b.y - d.y;
+    const double cdx = c.x - d.x, cdy = c.y - d.y;
+    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    const double cdxady = cdx * ady, adxcdy = adx * cdy;
+    const double adxbdy = adx * bdy, bdxady = bdx * ady;
+    const double rd2 = rd * rd;
+    const double ra2 = ra * ra, rb2 = rb * rb, rc2 = rc * rc;
+    const double alift = adx * adx + ady * ady - (ra2 - rd2);
+    const double blift = bdx * bdx + bdy * bdy - (rb2 - rd2);
+    const double clift = cdx * cdx + cdy * cdy - (rc2 - rd2);
+    const double det =
+        alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+    const double aabs = adx * adx + ady * ady + ra2 + rd2;
+    const double babs = bdx * bdx + bdy * bdy + rb2 + rd2;
+    const double cabs = cdx * cdx + cdy * cdy + rc2 + rd2;
+    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * aabs +
+                             (std::fabs(cdxady) + std::fabs(adxcdy)) * babs +
+                             (std::fabs(adxbdy) + std::fabs(bdxady)) * cabs;
+    const double bound = kPowerTestBound * permanent;
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+    return power_test_exact(a, ra, b, rb, c, rc, d, rd);
+}
+
+// Sign of pow_a(p) - pow_b(p) = (|p - a|^2 - ra^2) - (|p - b|^2 - rb^2): -1
+// when p is strictly nearer disk a in power (inside a's power cell, not b's).
+inline int compare_power(const Point& p, const Point& a, double ra, const Point& b, double rb) {
+    using namespace predicate_detail;
+    const double ax = p.x - a.x, ay = p.y - a.y;
+    const double bx = p.x - b.x, by = p.y - b.y;
+    const double da = ax * ax + ay * ay;
+    const double db = bx * bx + by * by;
+    const double ra2 = ra * ra, rb2 = rb * rb;
+    const double diff = (da - db) - (ra2 - rb2);
+    const double bound = kPowerBound * (da + db + ra2 + rb2);
+    if (diff > bound) return 1;
+    if (-diff > bound) return -1;
+    return compare_power_exact(p, a, ra, b, rb);
 }
 
 }  // namespace pds

@@ -3,6 +3,7 @@
 // oracles derived by hand (exact arithmetic on a known configuration).
 #include <cmath>
 #include <random>
+#include <utility>
 
 #include "predicates.hpp"
 #include "suites.hpp"
@@ -100,6 +101,100 @@ START_TEST(random_symmetries) {
 }
 END_TEST
 
+// Weighted forms. a, b, c, d at the unit square's corners with radii
+// (0.5, 0.75, 0.5, 0.75): the lifted d is exactly on the plane of the others
+// (rd^2 = rb^2 + rc^2 - ra^2), so moving rd by ulps gives a known sign, at
+// any scale and offset that keeps the arithmetic exact.
+START_TEST(power_test_near_the_plane) {
+    std::mt19937_64 rng(3);
+    for (int trial = 0; trial < 200; ++trial) {
+        const double s = std::ldexp(1.0, -static_cast<int>(rng() % 12));
+        const double ox = std::ldexp(static_cast<double>(rng() % (1u << 20)), -20);
+        const double oy = std::ldexp(static_cast<double>(rng() % (1u << 20)), -20);
+        const Point a{ox, oy}, b{ox + s, oy}, c{ox, oy + s}, d{ox + s, oy + s};
+        const double ra = 0.5 * s, rb = 0.75 * s, rc = 0.5 * s, rd0 = 0.75 * s;
+        ck_assert_int_eq(pds::power_test(a, ra, b, rb, c, rc, d, rd0), 0);
+        double up = rd0, down = rd0;
+        for (int k = 1; k <= 4; ++k) {
+            up = std::nextafter(up, 1.0);
+            down = std::nextafter(down, 0.0);
+            // A larger radius lowers the lifted d: below the plane, a conflict.
+            ck_assert_int_eq(pds::power_test(a, ra, b, rb, c, rc, d, up), 1);
+            ck_assert_int_eq(pds::power_test(a, ra, b, rb, c, rc, d, down), -1);
+            ck_assert_int_eq(pds::power_test(b, rb, c, rc, a, ra, d, up), 1);
+        }
+    }
+}
+END_TEST
+
+START_TEST(power_test_filter_agrees_with_exact) {
+    // Random triangles and radii, and d's radius chosen so its lifted point
+    // lies on the plane up to rounding: the cases the filter must not get wrong.
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int near = 0;
+    for (int n = 0; n < 20000; ++n) {
+        Point a{u(rng), u(rng)}, b{u(rng), u(rng)}, c{u(rng), u(rng)};
+        if (pds::orient2d(a, b, c) < 0) std::swap(b, c);
+        if (pds::orient2d(a, b, c) == 0) continue;
+        const double ra = 0.1 * u(rng), rb = 0.1 * u(rng), rc = 0.1 * u(rng);
+        const Point d{u(rng), u(rng)};
+        // Plane z = k0 + k1 x + k2 y through the lifted a, b, c.
+        const auto lift = [](const Point& p, double r) { return p.x * p.x + p.y * p.y - r * r; };
+        const double za = lift(a, ra), zb = lift(b, rb), zc = lift(c, rc);
+        const double det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        const double k1 = ((zb - za) * (c.y - a.y) - (zc - za) * (b.y - a.y)) / det;
+        const double k2 = ((b.x - a.x) * (zc - za) - (c.x - a.x) * (zb - za)) / det;
+        const double zd = za + k1 * (d.x - a.x) + k2 * (d.y - a.y);
+        const double rd2 = d.x * d.x + d.y * d.y - zd;
+        if (!(rd2 > 0.0)) continue;
+        double rd = std::sqrt(rd2);
+        for (int k = 0; k < 8; ++k, rd = std::nextafter(rd, 1.0)) {
+            const int exact = pds::predicate_detail::power_test_exact(a, ra, b, rb, c, rc, d, rd);
+            ck_assert_int_eq(pds::power_test(a, ra, b, rb, c, rc, d, rd), exact);
+            ++near;
+        }
+    }
+    ck_assert_int_gt(near, 50000);
+}
+END_TEST
+
+START_TEST(power_test_with_equal_radii_is_incircle) {
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int n = 0; n < 20000; ++n) {
+        Point a{u(rng), u(rng)}, b{u(rng), u(rng)}, c{u(rng), u(rng)};
+        if (pds::orient2d(a, b, c) <= 0) continue;
+        const Point d{u(rng), u(rng)};
+        const double r = u(rng);
+        ck_assert_int_eq(pds::power_test(a, r, b, r, c, r, d, r), pds::incircle(a, b, c, d));
+    }
+    // And on the cocircular square, exactly 0.
+    ck_assert_int_eq(pds::power_test({0, 0}, 0.3, {1, 0}, 0.3, {1, 1}, 0.3, {0, 1}, 0.3), 0);
+}
+END_TEST
+
+START_TEST(power_on_the_radical_axis) {
+    // pow_a = |p|^2 - 1/4, pow_b = |p - (1, 0)|^2: pow_a - pow_b = 2x - 5/4,
+    // 0 on the line x = 5/8.
+    const Point a{0.0, 0.0}, b{1.0, 0.0};
+    for (int k = -50; k <= 50; ++k) {
+        const Point p{0.625 + k * std::ldexp(1.0, -53), 0.7123};
+        // Right of the axis p is nearer b in power.
+        ck_assert_int_eq(pds::compare_power(p, a, 0.5, b, 0.0), (k > 0) - (k < 0));
+        ck_assert_int_eq(pds::compare_power(p, b, 0.0, a, 0.5), (k < 0) - (k > 0));
+    }
+    // Equal radii: the plain bisector test.
+    std::mt19937_64 rng(29);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int n = 0; n < 20000; ++n) {
+        const Point p{u(rng), u(rng)}, q{u(rng), u(rng)}, s{u(rng), u(rng)};
+        const double r = u(rng);
+        ck_assert_int_eq(pds::compare_power(p, q, r, s, r), pds::compare_closer(p, q, s));
+    }
+}
+END_TEST
+
 Suite* predicates_suite() {
     Suite* s = suite_create("predicates");
     TCase* t = tcase_create("orientation");
@@ -111,6 +206,12 @@ Suite* predicates_suite() {
     t = tcase_create("distances");
     tcase_add_test(t, distance_to_radius);
     tcase_add_test(t, closer_on_the_bisector);
+    suite_add_tcase(s, t);
+    t = tcase_create("weighted");
+    tcase_add_test(t, power_test_near_the_plane);
+    tcase_add_test(t, power_test_filter_agrees_with_exact);
+    tcase_add_test(t, power_test_with_equal_radii_is_incircle);
+    tcase_add_test(t, power_on_the_radical_axis);
     suite_add_tcase(s, t);
     t = tcase_create("symmetries");
     tcase_add_test(t, random_symmetries);
