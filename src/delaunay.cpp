@@ -9,7 +9,7 @@
 
 namespace pds {
 
-Delaunay::Delaunay(const Box& domain) {
+Delaunay::Delaunay(const Box& domain, bool weighted) : weighted_(weighted) {
     const double cx = 0.5 * (domain.x0 + domain.x1);
     const double cy = 0.5 * (domain.y0 + domain.y1);
     // sqrt, not hypot: libm's hypot may differ in the last bit between
@@ -26,6 +26,10 @@ Delaunay::Delaunay(const Box& domain) {
         mesh_.splice(QuadEdgeMesh::sym(side[i]), side[(i + 1) % kGhosts]);
     mesh_.connect(side[1], side[0]);  // 2 -> 0
     vertex_edge_.assign(side, side + kGhosts);
+    if (weighted_) {
+        radii_.assign(kGhosts, 0.0);
+        hidden_by_.assign(kGhosts, kNoVertex);
+    }
 }
 
 void Delaunay::reserve(std::size_t vertices) {
@@ -34,11 +38,16 @@ void Delaunay::reserve(std::size_t vertices) {
     mesh_.reserve(3 * vertices);
     points_.reserve(vertices);
     vertex_edge_.reserve(vertices);
+    if (weighted_) {
+        radii_.reserve(vertices);
+        hidden_by_.reserve(vertices);
+    }
 }
 
 bool Delaunay::has_room_for_one() const {
     return points_.size() < points_.capacity() && vertex_edge_.size() < vertex_edge_.capacity() &&
-           mesh_.spare_records() >= 3;
+           mesh_.spare_records() >= 3 &&
+           (!weighted_ || (radii_.size() < radii_.capacity() && hidden_by_.size() < hidden_by_.capacity()));
 }
 
 EdgeRef Delaunay::locate(const Point& p, EdgeRef e) const {
@@ -129,33 +138,18 @@ void Delaunay::delete_edge(EdgeRef e) {
 }
 
 std::uint32_t Delaunay::insert(const Point& p, std::uint32_t near) {
+    if (weighted_) throw std::logic_error("Delaunay::insert without a radius on a weighted mesh");
     if (!has_room_for_one()) throw std::logic_error("Delaunay::insert without reserved room");
     EdgeRef e = locate(p, vertex_edge_[near]);
     const Point& o = points_[mesh_.org(e)];
     const Point& d = points_[mesh_.dest(e)];
     if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y))
         throw std::logic_error("Delaunay::insert of a duplicate point");
-    if (orient2d(o, d, p) == 0) {
-        // p lies on e (strictly inside it, since it is in the closed triangle
-        // and not a corner): remove e and fill the quadrilateral instead.
-        const EdgeRef t = mesh_.oprev(e);
-        delete_edge(e);
-        e = t;
-    }
-
+    const bool on_edge = orient2d(o, d, p) == 0;
     const std::uint32_t v = static_cast<std::uint32_t>(points_.size());
     points_.push_back(p);
     vertex_edge_.push_back(kNoEdge);
-
-    // Connect p to every corner of the (triangle or quadrilateral) face.
-    EdgeRef base = mesh_.make_edge(mesh_.org(e), v);
-    mesh_.splice(base, e);
-    const EdgeRef start = base;
-    do {
-        base = mesh_.connect(e, QuadEdgeMesh::sym(base));
-        e = mesh_.oprev(base);
-    } while (mesh_.lnext(e) != start);
-    vertex_edge_[v] = QuadEdgeMesh::sym(start);
+    const EdgeRef start = connect_spokes(e, v, on_edge, &e);
 
     // Restore the Delaunay property: examine the edges opposite p, flip those
     // whose far corner lies inside the circle through p and the edge.
@@ -169,6 +163,113 @@ std::uint32_t Delaunay::insert(const Point& p, std::uint32_t near) {
         } else if (mesh_.onext(e) == start) {
             break;
         } else {
+            e = mesh_.lprev(mesh_.onext(e));
+        }
+    }
+    return v;
+}
+
+EdgeRef Delaunay::connect_spokes(EdgeRef e, VertexIndex v, bool on_edge, EdgeRef* link) {
+    if (on_edge) {
+        // p lies on e (strictly inside it, since it is in the closed triangle
+        // and not a corner): remove e and fill the quadrilateral instead.
+        const EdgeRef t = mesh_.oprev(e);
+        delete_edge(e);
+        e = t;
+    }
+    // Connect p to every corner of the (triangle or quadrilateral) face.
+    EdgeRef base = mesh_.make_edge(mesh_.org(e), v);
+    mesh_.splice(base, e);
+    const EdgeRef start = base;
+    do {
+        base = mesh_.connect(e, QuadEdgeMesh::sym(base));
+        e = mesh_.oprev(base);
+    } while (mesh_.lnext(e) != start);
+    vertex_edge_[v] = QuadEdgeMesh::sym(start);
+    *link = e;  // a link edge (opposite v, v on its left)
+    return start;
+}
+
+std::size_t Delaunay::degree(VertexIndex v) const {
+    std::size_t n = 0;
+    for_each_neighbour(v, [&](VertexIndex) { ++n; });
+    return n;
+}
+
+void Delaunay::hide_vertex(VertexIndex a, VertexIndex v) {
+    // Deleting a's three edges merges its triangles into one.
+    while (vertex_edge_[a] != kNoEdge) {
+        const EdgeRef e = vertex_edge_[a];
+        const EdgeRef next = mesh_.onext(e);
+        delete_edge(e);
+        vertex_edge_[a] = next == e ? kNoEdge : next;
+    }
+    hidden_by_[a] = v;
+    ++hidden_count_;
+}
+
+std::uint32_t Delaunay::insert(const Point& p, double r, std::uint32_t near) {
+    if (!weighted_) throw std::logic_error("Delaunay::insert with a radius on an unweighted mesh");
+    if (!has_room_for_one()) throw std::logic_error("Delaunay::insert without reserved room");
+    EdgeRef e = locate(p, vertex_edge_[visible(near)]);
+    const VertexIndex a0 = mesh_.org(e), b0 = mesh_.dest(e), c0 = mesh_.dest(mesh_.lnext(e));
+    const Point& o = points_[a0];
+    const Point& d = points_[b0];
+    if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y))
+        throw std::logic_error("Delaunay::insert of a duplicate point");
+    const VertexIndex v = static_cast<VertexIndex>(points_.size());
+    points_.push_back(p);
+    vertex_edge_.push_back(kNoEdge);
+    radii_.push_back(r);
+    hidden_by_.push_back(kNoVertex);
+    // Hidden at once: the lifted p on or above the plane of the triangle
+    // holding it (on an edge, both triangles' planes agree there).
+    if (power_test(o, radii_[a0], d, radii_[b0], points_[c0], radii_[c0], p, r) <= 0) {
+        hidden_by_[v] = a0;
+        ++hidden_count_;
+        return v;
+    }
+    const bool on_edge = orient2d(o, d, p) == 0;
+    std::size_t degree_v = on_edge ? 4 : 3;
+    connect_spokes(e, v, on_edge, &e);
+
+    // Edelsbrunner-Shah flips, around v clockwise (e: a link edge a -> b
+    // with v on its left, far corner f across it). Every link edge must end
+    // regular; while one is not, one of them can be flipped (their Lemma),
+    // so the walk goes on until a whole turn finds every link edge regular.
+    const std::size_t limit = 64 * (mesh_.live_count() + 16);
+    std::size_t quiet = 0;
+    for (std::size_t step = 0; quiet < degree_v; ++step) {
+        if (step > limit) throw std::logic_error("regular insertion did not terminate");
+        const EdgeRef t = mesh_.oprev(e);  // a -> f
+        const VertexIndex a = mesh_.org(e), b = mesh_.dest(e), f = mesh_.dest(t);
+        const Point& pf = points_[f];
+        if (!right_of(pf, e) ||
+            power_test(points_[a], radii_[a], pf, radii_[f], points_[b], radii_[b], p, r) <= 0) {
+            ++quiet;
+            e = mesh_.lprev(mesh_.onext(e));
+            continue;
+        }
+        quiet = 0;
+        const int side_a = orient2d(p, pf, points_[a]), side_b = orient2d(p, pf, points_[b]);
+        if (side_a < 0 && side_b > 0) {
+            // Convex: the 2-2 flip; look at the first of the two new link edges.
+            swap_edge(e);
+            e = mesh_.oprev(e);
+            ++degree_v;
+        } else if (side_a > 0 && !is_ghost(a) && degree(a) == 3) {
+            // a is inside triangle (v, f, b) and only joins them: 3-1.
+            const EdgeRef fb = mesh_.lnext(t);
+            hide_vertex(a, v);
+            e = fb;
+            --degree_v;
+        } else if (side_b < 0 && !is_ghost(b) && degree(b) == 3) {
+            // b is inside triangle (v, a, f): 3-1, leaving link edge a -> f.
+            hide_vertex(b, v);
+            e = t;
+            --degree_v;
+        } else {
+            // Not flippable now; another link edge is (the Lemma).
             e = mesh_.lprev(mesh_.onext(e));
         }
     }

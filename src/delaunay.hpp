@@ -16,6 +16,18 @@
 // sites alone; and every triangle with a corner in the domain has a bounded
 // circumcircle (a huge circle would swallow a ghost). The ghosts only bound the
 // mesh; callers skip them when they enumerate sites.
+//
+// Weighted (a variable radius): each vertex is a disk (point, radius), and
+// the mesh is the regular triangulation, dual of the power diagram; the
+// flip test is the power test (predicates.hpp) and the insertion is
+// Edelsbrunner & Shah's (1996): the point's spokes, then 2-2 flips of link
+// edges that fail the test where the quadrilateral is convex, and 3-1 flips
+// that remove a reflex vertex of degree 3. A disk whose power cell is empty
+// is "hidden": it is not in the mesh, keeps its point and radius, and names
+// the vertex that hid it (a walk starting there begins nearby). A disk is
+// hidden when its lifted point lies on or above the lower hull: a cell of
+// zero area counts as empty. With equal radii every decision is the
+// unweighted one, so the mesh is the same, edge for edge.
 #ifndef PDS_DELAUNAY_HPP
 #define PDS_DELAUNAY_HPP
 
@@ -34,7 +46,7 @@ class Delaunay {
 public:
     static constexpr VertexIndex kGhosts = kGhostVertices;
 
-    explicit Delaunay(const Box& domain);
+    explicit Delaunay(const Box& domain, bool weighted = false);
 
     // Makes room for `vertices` vertices in all (ghosts included) and their
     // edges; strong guarantee (std::bad_alloc and nothing changed).
@@ -45,12 +57,16 @@ public:
     // included) without allocating, as reserve(vertices) makes.
     bool has_room_for(std::size_t vertices) const {
         return points_.capacity() >= vertices && vertex_edge_.capacity() >= vertices &&
-               mesh_.record_count() + mesh_.spare_records() >= 3 * vertices;
+               mesh_.record_count() + mesh_.spare_records() >= 3 * vertices &&
+               (!weighted_ || (radii_.capacity() >= vertices && hidden_by_.capacity() >= vertices));
     }
 
     // Inserts p, which must be strictly inside the ghost square and distinct
     // from every vertex; `near` is where the walk starts. Returns p's vertex.
     std::uint32_t insert(const Point& p, std::uint32_t near);
+    // The same for the disk (p, r) on a weighted mesh; the vertex may be
+    // hidden at once, and others may become hidden.
+    std::uint32_t insert(const Point& p, double r, std::uint32_t near);
 
     // Inserts points[order[0]], points[order[1]], ... (n of them), each walk
     // starting at the vertex inserted before it: a neighbour when the order
@@ -64,6 +80,18 @@ public:
             previous = insert(points[order[i]], previous);
             inserted(order[i], previous);
         }
+    }
+
+    bool weighted() const { return weighted_; }
+    double radius(VertexIndex v) const { return weighted_ ? radii_[v] : 0.0; }
+    // A weighted mesh only: a disk whose power cell is empty, not in the mesh.
+    bool is_hidden(VertexIndex v) const { return vertex_edge_[v] == kNoEdge; }
+    std::size_t hidden_count() const { return hidden_count_; }
+    // v, or if v is hidden the nearest vertex in the chain of those that hid
+    // it that is still in the mesh: a walk start near v.
+    VertexIndex visible(VertexIndex v) const {
+        while (is_hidden(v)) v = hidden_by_[v];
+        return v;
     }
 
     std::size_t vertex_count() const { return points_.size(); }
@@ -105,10 +133,20 @@ private:
     }
     void swap_edge(EdgeRef e);
     void delete_edge(EdgeRef e);
+    // The new vertex's spokes to the corners of the face left of e (p on e
+    // when on_edge): its ring before any flip; returns the first spoke.
+    EdgeRef connect_spokes(EdgeRef e, VertexIndex v, bool on_edge, EdgeRef* link);
+    // Removes vertex a, of degree 3, hidden by v.
+    void hide_vertex(VertexIndex a, VertexIndex v);
+    std::size_t degree(VertexIndex v) const;
 
     QuadEdgeMesh mesh_;
     std::vector<Point> points_;
     std::vector<EdgeRef> vertex_edge_;
+    bool weighted_ = false;
+    std::vector<double> radii_;             // weighted only: per vertex (ghosts 0)
+    std::vector<VertexIndex> hidden_by_;    // weighted only: who hid it, if hidden
+    std::size_t hidden_count_ = 0;
 };
 
 }  // namespace pds

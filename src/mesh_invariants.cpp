@@ -70,12 +70,16 @@ bool faces_hold(const Delaunay& dt, MeshReport& rep) {
             // The neighbour across `start`, if it is a triangle.
             const EdgeRef s = Q::sym(start);
             if (m.lnext(m.lnext(m.lnext(s))) == s) {
-                const Point& d = dt.point(m.dest(m.lnext(s)));
-                if (incircle(a, b, c, d) > 0) return fail(rep, "the mesh is not Delaunay");
+                const VertexIndex dv = m.dest(m.lnext(s));
+                const Point& d = dt.point(dv);
+                if (!dt.weighted() && incircle(a, b, c, d) > 0) return fail(rep, "the mesh is not Delaunay");
+                if (dt.weighted() && power_test(a, dt.radius(m.org(start)), b, dt.radius(m.dest(start)), c,
+                                                dt.radius(m.dest(m.lnext(start))), d, dt.radius(dv)) > 0)
+                    return fail(rep, "the mesh is not regular (an edge fails the power test)");
             }
         }
     }
-    if (outer != 1 || dt.vertex_count() + faces != m.live_count() + 2)
+    if (outer != 1 || dt.vertex_count() - dt.hidden_count() + faces != m.live_count() + 2)
         return fail(rep, "the mesh is not a triangulation of the ghost square");
     rep.triangles = triangles;
     return true;
@@ -92,12 +96,32 @@ MeshReport check_edge_algebra(const QuadEdgeMesh& m) {
 MeshReport check_mesh_invariants(const Delaunay& dt) {
     MeshReport rep;
     if (!algebra_holds(dt.mesh(), rep)) return rep;
-    for (VertexIndex v = 0; v < dt.vertex_count(); ++v)
+    std::size_t hidden = 0;
+    for (VertexIndex v = 0; v < dt.vertex_count(); ++v) {
+        if (dt.weighted() && dt.is_hidden(v)) {
+            // Hidden: its lifted point on or above the lower hull, that is
+            // above the plane of the triangle holding it.
+            ++hidden;
+            const EdgeRef e = dt.locate(dt.point(v), dt.edge_of(dt.visible(v)));
+            const VertexIndex a = dt.mesh().org(e), b = dt.mesh().dest(e),
+                              c = dt.mesh().dest(dt.mesh().lnext(e));
+            if (power_test(dt.point(a), dt.radius(a), dt.point(b), dt.radius(b), dt.point(c), dt.radius(c),
+                           dt.point(v), dt.radius(v)) > 0) {
+                fail(rep, "a hidden disk has a power cell");
+                return rep;
+            }
+            continue;
+        }
         if (dt.edge_of(v) == kNoEdge || (dt.edge_of(v) >> 2) >= dt.mesh().record_count() ||
             !dt.mesh().is_live(dt.edge_of(v) >> 2) || dt.mesh().org(dt.edge_of(v)) != v) {
             fail(rep, "a vertex's entry edge does not start at it");
             return rep;
         }
+    }
+    if (hidden != dt.hidden_count()) {
+        fail(rep, "the mesh miscounts its hidden disks");
+        return rep;
+    }
     faces_hold(dt, rep);
     return rep;
 }
