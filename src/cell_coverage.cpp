@@ -13,9 +13,6 @@ namespace {
 
 using E = Expansion;
 
-// x/2 exactly (a power-of-two scaling; our frame keeps values far from underflow).
-E half(double x) { return E(x * 0.5); }
-
 struct Interval {
     Rational lo, hi;
     bool has_lo = false, has_hi = false;
@@ -42,12 +39,13 @@ struct Interval {
     }
 };
 
-// |P(t) - c|^2 <= R^2 for t = a/q on the bisector of c and c + b:
-// |b|^2 / 4 + t^2 |b|^2 <= R^2  <=>  |b|^2 (q^2 + 4 a^2) <= 4 R^2 q^2.
-bool within_radius(const Rational& t, const E& bb, const E& r2) {
+// |P(t) - c|^2 <= R^2 on the power bisector of c and c + b, for t = a/q:
+// P(t) - c = s b + t perp(b) with s = bw / (2 |b|^2), so the condition is
+// |b|^2 (s^2 + t^2) <= R^2  <=>  bw^2 q^2 + 4 |b|^4 a^2 <= 4 |b|^2 R^2 q^2.
+bool within_radius(const Rational& t, const E& bb, const E& bw, const E& r2) {
     const E q2 = t.den * t.den;
-    const E lhs = bb * (q2 + (t.num * t.num).scaled(4.0));
-    const E rhs = (r2 * q2).scaled(4.0);
+    const E lhs = bw * bw * q2 + (bb * bb * t.num * t.num).scaled(4.0);
+    const E rhs = (bb * r2 * q2).scaled(4.0);
     return (rhs - lhs).sign() >= 0;
 }
 
@@ -60,33 +58,41 @@ E squared_distance(const Point& p, const Point& q) {
 
 bool cell_is_covered_exact(const Point& c, const std::vector<Point>& ring, const Box& box,
                            double radius) {
+    return power_cell_is_covered_exact(c, radius, ring, std::vector<double>(ring.size(), radius), box);
+}
+
+bool power_cell_is_covered_exact(const Point& c, double radius, const std::vector<Point>& ring,
+                                 const std::vector<double>& ring_radii, const Box& box) {
     const E r2 = E::product(radius, radius);
     const std::size_t k = ring.size();
     for (std::size_t j = 0; j < k; ++j) {
         const Point& n = ring[j];
-        const Point& left = ring[(j + 1) % k];       // triangle (c, n, left) is CCW
-        const Point& right = ring[(j + k - 1) % k];  // triangle (c, right, n) is CCW
-        Interval t;
-        t.raise_lo(bisector_parameter(c, n, right));
-        t.lower_hi(bisector_parameter(c, n, left));
-        // P(t) = (c + n)/2 + t * (-by, bx) must stay inside the box.
+        const std::size_t jl = (j + 1) % k, jr = (j + k - 1) % k;
+        const double rn = ring_radii[j];
+        Interval t;  // triangle (c, n, left) and (c, right, n) are CCW
+        t.raise_lo(power_bisector_parameter(c, radius, n, rn, ring[jr], ring_radii[jr]));
+        t.lower_hi(power_bisector_parameter(c, radius, n, rn, ring[jl], ring_radii[jl]));
+        // 2|b|^2 P(t) = 2|b|^2 c + bw b + 2|b|^2 t (-by, bx) must stay inside the box.
         const E bx = E::diff(n.x, c.x), by = E::diff(n.y, c.y);
-        const E mx = half(c.x) + half(n.x), my = half(c.y) + half(n.y);
-        t.at_least(-by, E(box.x0) - mx);  // x >= x0
-        t.at_least(by, mx - E(box.x1));   // x <= x1
-        t.at_least(bx, E(box.y0) - my);   // y >= y0
-        t.at_least(-bx, my - E(box.y1));  // y <= y1
-        if (t.empty || compare(t.lo, t.hi) > 0) continue;  // edge outside the box
         const E bb = bx * bx + by * by;
-        if (!within_radius(t.lo, bb, r2) || !within_radius(t.hi, bb, r2)) return false;
+        const E bw = bb + r2 - E::product(rn, rn);
+        const E bb2 = bb.scaled(2.0);
+        const E mx = bb2 * E(c.x) + bw * bx, my = bb2 * E(c.y) + bw * by;
+        t.at_least(-(bb2 * by), bb2 * E(box.x0) - mx);  // x >= x0
+        t.at_least(bb2 * by, mx - bb2 * E(box.x1));     // x <= x1
+        t.at_least(bb2 * bx, bb2 * E(box.y0) - my);     // y >= y0
+        t.at_least(-(bb2 * bx), my - bb2 * E(box.y1));  // y <= y1
+        if (t.empty || compare(t.lo, t.hi) > 0) continue;  // edge outside the box
+        if (!within_radius(t.lo, bb, bw, r2) || !within_radius(t.hi, bb, bw, r2)) return false;
     }
     const Point corners[4] = {{box.x0, box.y0}, {box.x1, box.y0}, {box.x1, box.y1}, {box.x0, box.y1}};
     for (const Point& corner : corners) {
         const E dc = squared_distance(corner, c);
         if ((dc - r2).sign() <= 0) continue;  // within R: fine wherever it belongs
         bool in_cell = true;
-        for (const Point& n : ring) {
-            if ((squared_distance(corner, n) - dc).sign() < 0) {
+        for (std::size_t j = 0; j < k; ++j) {
+            // A neighbour with a smaller power at the corner owns it.
+            if ((squared_distance(corner, ring[j]) - E::product(ring_radii[j], ring_radii[j]) - dc + r2).sign() < 0) {
                 in_cell = false;
                 break;
             }

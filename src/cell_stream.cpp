@@ -18,6 +18,14 @@ int fan_pieces(const Vtx& va, const Vtx& vb, double r2, Piece out[2]) {
 void CellSink::edge(const Vtx& a, const Vtx& b) {
     if (done()) return;
     Piece pieces[2];
+    if (cross(Point{a.x, a.y}, Point{b.x, b.y}) < 0.0) {
+        // A clockwise fan triangle: the site is outside its power cell. Its
+        // free area, measured turned counterclockwise, is the shadow's.
+        flush();
+        const int n = fan_pieces(b, a, r2_, pieces);
+        for (int i = 0; i < n; ++i) shadow_ += piece_area(pieces[i], r2_);
+        return;
+    }
     const int n = fan_pieces(a, b, r2_, pieces);
     if (n == 0) flush();  // the boundary runs inside the disk here
     for (int i = 0; i < n; ++i) {

@@ -2,6 +2,10 @@
 // the domain, as the fan of triangles around its site (Jones 2006, figure 3).
 // Private to free_area.hpp, its only user.
 //
+// Power cells (a variable radius) stream the same way, with power centres in
+// place of circumcentres; the site may then lie outside its cell (see
+// CellSink::shadow).
+//
 // The cell is streamed, never stored: the Delaunay neighbours of the site
 // arrive counterclockwise, consecutive pairs give the Voronoi vertices
 // (circumcentre.hpp), and the clipped polygon's edges form the fan. Most
@@ -31,7 +35,7 @@ namespace pds {
 struct CellQuery {
     Point site;      // c
     Box domain;      // absolute coordinates
-    double radius;   // R
+    double radius;   // R, the site's radius
 };
 
 namespace cell_stream {
@@ -64,14 +68,20 @@ class VoronoiStage {
 public:
     VoronoiStage(const Point& site, const RelativeBox& box, Fan& fan, Clip& clip)
         : site_(site), box_(box), fan_(fan), clip_(clip) {}
-    void push(const Point& neighbour) {
+    // w: the site's squared radius minus the neighbour's (0 for equal radii).
+    void push(const Point& neighbour, double w) {
         const Point rel{neighbour.x - site_.x, neighbour.y - site_.y};
-        if (count_++ == 0) first_ = rel;
-        else emit(relative_circumcentre(prev_, rel));
+        if (count_++ == 0) {
+            first_ = rel;
+            first_w_ = w;
+        } else {
+            emit(relative_power_centre(prev_, rel, prev_w_, w));
+        }
         prev_ = rel;
+        prev_w_ = w;
     }
     void close() {
-        if (count_ >= 2) emit(relative_circumcentre(prev_, first_));
+        if (count_ >= 2) emit(relative_power_centre(prev_, first_, prev_w_, first_w_));
         if (streaming_) {
             clip_.close();
             return;
@@ -106,6 +116,7 @@ private:
     Fan& fan_;
     Clip& clip_;
     Point first_{0, 0}, prev_{0, 0};
+    double first_w_ = 0.0, prev_w_ = 0.0;
     int count_ = 0;
     int buffered_ = 0;
     bool streaming_ = false;
@@ -227,8 +238,8 @@ bool stream_cell(const CellQuery& q, const Ring& ring, Sink& sink) {
     VoronoiStage<Fan, Left> voronoi(c, rel, fan, left);
     // A sink that has what it needs (a selection found its chunk) stops the
     // geometry; the rest of the ring is still walked, but not computed.
-    ring([&](const Point& n) {
-        if (!sink.done()) voronoi.push(n);
+    ring([&](const Point& n, double w) {
+        if (!sink.done()) voronoi.push(n, w);
     });
     if (!sink.done()) voronoi.close();
     return doubtful;
@@ -256,6 +267,12 @@ public:
     void stop_at_target() { stop_at_target_ = true; }
 
     double sum() const { return sum_; }
+    // The free area of the fan triangles that turn clockwise: a site outside
+    // its power cell sees the cell's near side that way, and those triangles
+    // cover the part of the fan outside the cell (the shadow). The cell's
+    // free area is sum() - shadow(); chunks hold only the counterclockwise
+    // pieces, which cover the cell once, and the shadow too.
+    double shadow() const { return shadow_; }
     // A bound on the distance from the site to every polygon vertex.
     double reach() const { return std::sqrt(max_d2_) * (1.0 + 4.0 * kUnitRoundoff) + max_err_; }
     int certainly_out() const { return certainly_out_; }
@@ -275,6 +292,7 @@ private:
     double target_;
     double rounding_;  // bound on the rounding of |v|^2 and R^2
     double sum_ = 0.0;
+    double shadow_ = 0.0;
     double max_d2_ = 0.0, max_err_ = 0.0;
     int certainly_out_ = 0, undecided_ = 0;
     bool found_ = false, fallback_ = false, stop_at_target_ = false;

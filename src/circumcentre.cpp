@@ -24,4 +24,18 @@ Rational bisector_parameter(const Point& a, const Point& b, const Point& c) {
     return make_rational(num, den);
 }
 
+Rational power_bisector_parameter(const Point& a, double ra, const Point& b, double rb, const Point& c,
+                                  double rc) {
+    using E = Expansion;
+    const E bx = E::diff(b.x, a.x), by = E::diff(b.y, a.y);
+    const E dx = E::diff(c.x, a.x), dy = E::diff(c.y, a.y);
+    const E bb = bx * bx + by * by, dd = dx * dx + dy * dy;
+    const E wa = E::product(ra, ra);
+    const E bw = bb + wa - E::product(rb, rb), dw = dd + wa - E::product(rc, rc);
+    // t = perp(e) . centre / |e|^2 = (|e|^2 dw - bw (e . d)) / (|e|^2 2 (e x d)).
+    const E num = bb * dw - bw * (bx * dx + by * dy);
+    const E den = bb * (bx * dy - by * dx).scaled(2.0);
+    return make_rational(num, den);
+}
+
 }  // namespace pds

@@ -58,6 +58,29 @@ inline RelativeCentre relative_circumcentre(const Point& b, const Point& d) {
     return RelativeCentre{vx, vy, err, vx * vx + vy * vy};
 }
 
+// The power centre (a vertex of the power diagram) of the counterclockwise
+// triangle (0, b, d) of disks: the point of equal power to the three. wb and
+// wd are the site's squared radius minus b's and d's: with them the formula
+// is the circumcentre's with |b|^2 + wb and |d|^2 + wd in place of |b|^2
+// and |d|^2 (2 v.b = |b|^2 + wb). With zero offsets it is the circumcentre,
+// bit for bit. The centre may lie anywhere, even at the site, so its error
+// is bounded from the inputs' sizes, not from its distance.
+inline RelativeCentre relative_power_centre(const Point& b, const Point& d, double wb, double wd) {
+    if (wb == 0.0 && wd == 0.0) return relative_circumcentre(b, d);
+    const double bb = b.x * b.x + b.y * b.y, dd = d.x * d.x + d.y * d.y;
+    const double cr = cross(b, d);
+    if (!(cr > 0.0) || !(cr < 1e300)) degenerate_triangle();
+    const double inv = 0.5 / cr;
+    const double bw = bb + wb, dw = dd + wd;
+    const double vx = (d.y * bw - b.y * dw) * inv;
+    const double vy = (b.x * dw - d.x * bw) * inv;
+    const double size = std::fabs(b.x) + std::fabs(b.y) + std::fabs(d.x) + std::fabs(d.y);
+    const double err = 256.0 * kUnitRoundoff * inv *
+                       ((bb + dd) * (std::fabs(vx) + std::fabs(vy)) +
+                        size * (bb + dd + std::fabs(wb) + std::fabs(wd)));
+    return RelativeCentre{vx, vy, err, vx * vx + vy * vy};
+}
+
 // Exact centre of the counterclockwise triangle (a, b, c): a + (nx, ny) / den.
 struct ExactCentre {
     Expansion nx;
@@ -68,6 +91,13 @@ ExactCentre exact_circumcentre(const Point& a, const Point& b, const Point& c);
 
 // Exact parameter of the centre of (a, b, c) on the bisector of a and b.
 Rational bisector_parameter(const Point& a, const Point& b, const Point& c);
+
+// The power bisector of disks (a, ra) and (b, rb), with e = b - a:
+// P(t) = a + s e + t perp(e), s = (|e|^2 + ra^2 - rb^2) / (2 |e|^2); with
+// equal radii the bisector above (s = 1/2). Exact parameter of the power
+// centre of the disks (a, b, c) on it.
+Rational power_bisector_parameter(const Point& a, double ra, const Point& b, double rb, const Point& c,
+                                  double rc);
 
 }  // namespace pds
 

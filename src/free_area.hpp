@@ -6,6 +6,14 @@
 // point there is free exactly when it is at least R from c, and the free
 // regions of all cells tile the free area of the whole domain.
 //
+// A variable radius: power cells (weights R_i^2) instead of Voronoi cells.
+// Inside c's power cell, a point covered by any disk is covered by c's
+// (power_c <= power_i <= 0), so the same holds with c's own radius. A site
+// may then lie outside its cell: the fan's pieces cover the cell and a
+// shadow beside it (CellSink::shadow); `area` counts both, and is what the
+// sampler selects by, and a point drawn in the shadow is rejected by the
+// exact cell test. So the law stays exact.
+//
 // How: the cell is streamed as a fan of triangles around c (cell_stream.hpp),
 // each cut into the paper's pieces (cell_pieces.hpp). Measuring and selecting
 // (the chunk of pieces holding a target, then a piece in it) share one pass,
@@ -27,7 +35,9 @@
 namespace pds {
 
 struct CellMeasure {
-    double area = 0.0;      // free area; exactly 0 when certified covered
+    double area = 0.0;      // free area (with the shadow); exactly 0 when certified covered
+    double shadow = 0.0;    // a site outside its power cell: area - shadow is the cell's
+    double free() const { return area > shadow ? area - shadow : 0.0; }
     bool doubtful = false;  // rounding left the classification open
     double reach = 0.0;     // bound on the distance from the site to the cell's vertices
 };
@@ -44,6 +54,7 @@ inline CellMeasure verdict(const cell_stream::CellSink& sink, bool clip_doubtful
     m.doubtful = clip_doubtful || sink.certainly_out() == 0;
     const double floor = area_floor(r);
     m.area = sink.sum() > floor ? sink.sum() : floor;
+    m.shadow = sink.shadow();
     return m;
 }
 

@@ -13,6 +13,7 @@ int main() {
     srunner_add_suite(runner, tree_suite());
     srunner_add_suite(runner, hash_map_suite());
     srunner_add_suite(runner, free_area_suite());
+    srunner_add_suite(runner, power_cells_suite());
     srunner_add_suite(runner, verify_suite());
     srunner_add_suite(runner, dart_stage_suite());
     srunner_add_suite(runner, sampler_suite());

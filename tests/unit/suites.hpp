@@ -15,6 +15,7 @@ Suite* angle_suite();
 Suite* tree_suite();
 Suite* hash_map_suite();
 Suite* free_area_suite();
+Suite* power_cells_suite();
 Suite* verify_suite();
 Suite* dart_stage_suite();
 Suite* sampler_suite();

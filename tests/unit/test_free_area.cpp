@@ -22,7 +22,7 @@ std::vector<pds::Point> real_points(const pds::Sampler& s) {
 double measured_area(const pds::Sampler& s, std::size_t site) {
     const std::vector<pds::Point> ring = s.jones().cells().ring_points(pds::vertex_of(site));
     return pds::measure_cell(s.jones().cells().query(pds::vertex_of(site)), [&](const auto& visit) {
-               for (const pds::Point& p : ring) visit(p);
+               for (const pds::Point& p : ring) visit(p, 0.0);
            }).area;
 }
 
@@ -122,7 +122,7 @@ START_TEST(float_classification_is_certified) {
             for (std::size_t i = 0; i < s.count(); ++i) {
                 const std::vector<pds::Point> ring = s.jones().cells().ring_points(pds::vertex_of(i));
                 const pds::CellMeasure m = pds::measure_cell(s.jones().cells().query(pds::vertex_of(i)), [&](const auto& visit) {
-                    for (const pds::Point& p : ring) visit(p);
+                    for (const pds::Point& p : ring) visit(p, 0.0);
                 });
                 if (m.doubtful) continue;
                 const bool exact = pds::cell_is_covered_exact(s.jones().cells().query(pds::vertex_of(i)).site, ring,
@@ -169,7 +169,7 @@ void add_uniformity_chi2(const pds::Sampler& s, std::size_t site, int n, std::ui
     const std::vector<pds::Point> ring = s.jones().cells().ring_points(pds::vertex_of(site));
     const pds::CellQuery q = s.jones().cells().query(pds::vertex_of(site));
     const auto ring_fn = [&](const auto& visit) {
-        for (const pds::Point& p : ring) visit(p);
+        for (const pds::Point& p : ring) visit(p, 0.0);
     };
     const pds::Box& box = s.frame().box();
     const double r = q.radius;

@@ -10,24 +10,14 @@
 #include <vector>
 
 #include "delaunay.hpp"
+#include "disk_patterns.hpp"
 #include "mesh_checks.hpp"
 #include "predicates.hpp"
 #include "suites.hpp"
 
 namespace {
 
-struct Disk {
-    pds::Point p;
-    double r;
-};
-
-pds::Delaunay build(const std::vector<Disk>& disks) {
-    pds::Delaunay dt(pds::Box{0, 0, 1, 1}, true);
-    dt.reserve(disks.size() + pds::Delaunay::kGhosts);
-    std::uint32_t near = 0;
-    for (const Disk& d : disks) near = dt.insert(d.p, d.r, near);
-    return dt;
-}
+pds::Delaunay build(const std::vector<Disk>& disks) { return weighted_mesh(disks); }
 
 // Every inner triangle's orthocircle conflicts with no disk, hidden or not:
 // with the mesh invariants, the mesh is the regular triangulation of them all.
@@ -56,23 +46,9 @@ std::set<std::array<std::uint32_t, 3>> check_regular_brute(const pds::Delaunay& 
     return triangles;
 }
 
-// Random sequential adsorption with the variable-radius rule: a dart is kept
-// when it lies outside every earlier disk (|p - p_i| >= r_i).
 std::vector<Disk> rsa(std::size_t darts, double (*field)(const pds::Point&), std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<Disk> kept;
-    for (std::size_t i = 0; i < darts; ++i) {
-        const pds::Point p{u(rng), u(rng)};
-        bool free = true;
-        for (const Disk& d : kept)
-            if (pds::compare_distance(p, d.p, d.r) < 0) free = false;
-        if (free) kept.push_back({p, field(p)});
-    }
-    return kept;
+    return rsa_disks(darts, field, seed);
 }
-
-double step_field(const pds::Point& p) { return p.x < 0.5 ? 0.02 : 0.08; }
 
 }  // namespace
 

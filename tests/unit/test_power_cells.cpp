@@ -1,0 +1,161 @@
+// test_power_cells.cpp - free areas of power cells (a variable radius): the
+// streamed areas against a brute-force grid that gives each point to the
+// disk of least power, cells whose site lies outside them (the shadow), and
+// the float classification against the exact power-cell classifier.
+#include <cmath>
+#include <algorithm>
+#include <vector>
+
+#include "cell_coverage.hpp"
+#include "disk_patterns.hpp"
+#include "mesh_cells.hpp"
+#include "suites.hpp"
+
+namespace {
+
+// The free area of each vertex's power cell in the unit square, counted on a
+// g x g grid of cell midpoints: a point is free when every power is positive,
+// and belongs to the disk of least power.
+std::vector<double> grid_free_areas(const pds::Delaunay& dt, int g) {
+    std::vector<double> area(dt.vertex_count(), 0.0);
+    const double h = 1.0 / g;
+    for (int i = 0; i < g; ++i) {
+        for (int j = 0; j < g; ++j) {
+            const pds::Point x{(i + 0.5) * h, (j + 0.5) * h};
+            double best = INFINITY;
+            std::uint32_t owner = 0;
+            for (std::uint32_t v = pds::Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
+                const double dx = x.x - dt.point(v).x, dy = x.y - dt.point(v).y;
+                const double pw = dx * dx + dy * dy - dt.radius(v) * dt.radius(v);
+                if (pw < best) {
+                    best = pw;
+                    owner = v;
+                }
+            }
+            if (best > 0.0) area[owner] += h * h;
+        }
+    }
+    return area;
+}
+
+// Free area of disk k's power cell in the box by polar integration around its
+// site, which may lie outside the cell: along each ray the cell is the
+// interval where k's power is least, and the free part is where t >= r_k.
+double free_area_by_rays(const std::vector<Disk>& disks, std::size_t k, const pds::Box& box, int steps) {
+    const pds::Point c = disks[k].p;
+    const double rc = disks[k].r;
+    long double sum = 0;
+    for (int i = 0; i < steps; ++i) {
+        const double phi = (i + 0.5) * 2 * M_PI / steps;
+        const double ux = std::cos(phi), uy = std::sin(phi);
+        double lo = 0.0, hi = INFINITY;
+        if (ux > 0) hi = std::min(hi, (box.x1 - c.x) / ux);
+        if (ux < 0) hi = std::min(hi, (box.x0 - c.x) / ux);
+        if (uy > 0) hi = std::min(hi, (box.y1 - c.y) / uy);
+        if (uy < 0) hi = std::min(hi, (box.y0 - c.y) / uy);
+        for (std::size_t j = 0; j < disks.size(); ++j) {
+            if (j == k) continue;
+            const double bx = disks[j].p.x - c.x, by = disks[j].p.y - c.y;
+            // pow_k <= pow_j along c + t u:  2 t (u . b) <= |b|^2 + r_k^2 - r_j^2.
+            const double ub = ux * bx + uy * by;
+            const double bw = bx * bx + by * by + rc * rc - disks[j].r * disks[j].r;
+            if (ub > 0) hi = std::min(hi, bw / (2 * ub));
+            else if (ub < 0) lo = std::max(lo, bw / (2 * ub));
+            else if (bw < 0) hi = -1.0;
+        }
+        lo = std::max(lo, rc);
+        if (hi > lo) sum += 0.5L * ((long double)hi * hi - (long double)lo * lo);
+    }
+    return static_cast<double>(sum * (2 * M_PI / steps));
+}
+
+}  // namespace
+
+START_TEST(power_cell_areas_match_integration) {
+    // Every cell whose site lies outside it, and a sample of the others.
+    const std::vector<Disk> disks = rsa_disks(600, step_field, 5);
+    const pds::Delaunay dt = weighted_mesh(disks);
+    const pds::MeshCells cells(dt, pds::Box{0, 0, 1, 1}, 0.0);
+    int shadowed = 0, checked = 0;
+    for (std::uint32_t v = pds::Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
+        const std::size_t k = v - pds::Delaunay::kGhosts;
+        const double ref = free_area_by_rays(disks, k, pds::Box{0, 0, 1, 1}, 20000);
+        if (dt.is_hidden(v)) {
+            ck_assert_double_eq(ref, 0.0);
+            continue;
+        }
+        const pds::CellMeasure m = cells.measure(v);
+        if (m.shadow > 0.0) ++shadowed;
+        else if (k % 8 != 0) continue;
+        ++checked;
+        ck_assert_msg(std::fabs(m.free() - ref) <= 1e-4 * ref + 1e-10, "cell %u: streamed %.9g, integrated %.9g",
+                      v, m.free(), ref);
+    }
+    ck_assert_int_gt(shadowed, 0);
+    ck_assert_int_gt(checked, 20);
+}
+END_TEST
+
+START_TEST(power_cell_areas_match_a_grid) {
+    const std::vector<Disk> disks = rsa_disks(test_light() ? 300 : 600, step_field, 5);
+    const pds::Delaunay dt = weighted_mesh(disks);
+    const pds::MeshCells cells(dt, pds::Box{0, 0, 1, 1}, 0.0);
+    const int g = test_light() ? 400 : 800;
+    const std::vector<double> grid = grid_free_areas(dt, g);
+    int shadowed = 0;
+    double total = 0.0, grid_total = 0.0;
+    for (std::uint32_t v = pds::Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
+        grid_total += grid[v];
+        if (dt.is_hidden(v)) {
+            ck_assert_double_eq(grid[v], 0.0);  // a hidden disk owns no point
+            continue;
+        }
+        const pds::CellMeasure m = cells.measure(v);
+        if (m.shadow > 0.0) ++shadowed;
+        total += m.free();
+        // Grid error: about one grid step along the cell's boundary.
+        const double tol = 4.0 * (1.0 / g) * 2.0 * M_PI * 0.16 + 1e-6;
+        ck_assert_msg(std::fabs(m.free() - grid[v]) <= tol, "cell %u: streamed %g, grid %g (shadow %g)", v,
+                      m.free(), grid[v], m.shadow);
+    }
+    ck_assert_msg(std::fabs(total - grid_total) <= 0.01 * grid_total, "total %g, grid %g", total, grid_total);
+    ck_assert_int_gt(shadowed, 0);
+}
+END_TEST
+
+START_TEST(float_classification_agrees_with_exact_power_cells) {
+    // A denser pattern, so many cells are covered.
+    for (std::uint64_t seed = 1; seed <= (test_light() ? 1u : 3u); ++seed) {
+        const std::vector<Disk> disks = rsa_disks(20000, step_field, seed);
+        const pds::Delaunay dt = weighted_mesh(disks);
+        const pds::MeshCells cells(dt, pds::Box{0, 0, 1, 1}, 0.0);
+        int covered = 0, free = 0;
+        for (std::uint32_t v = pds::Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
+            if (dt.is_hidden(v)) continue;
+            const pds::CellMeasure m = cells.measure(v);
+            if (m.doubtful) continue;
+            const bool exact = cells.covered_exactly(v);
+            if (m.area == 0.0) {
+                ck_assert_msg(exact, "cell %u certified covered, exactly free", v);
+                ++covered;
+            } else if (m.free() > 1e-12) {
+                ck_assert_msg(!exact, "cell %u measured free (%g), exactly covered", v, m.free());
+                ++free;
+            }
+        }
+        ck_assert_int_gt(covered, 10);
+        ck_assert_int_gt(free, 10);
+    }
+}
+END_TEST
+
+Suite* power_cells_suite() {
+    Suite* s = suite_create("power_cells");
+    TCase* t = tcase_create("area");
+    tcase_set_timeout(t, 300);
+    tcase_add_test(t, power_cell_areas_match_integration);
+    tcase_add_test(t, power_cell_areas_match_a_grid);
+    tcase_add_test(t, float_classification_agrees_with_exact_power_cells);
+    suite_add_tcase(s, t);
+    return s;
+}
