@@ -47,8 +47,8 @@ extern "C" {
 
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
-#define PDS_VERSION_MINOR 2
-#define PDS_VERSION_PATCH 1
+#define PDS_VERSION_MINOR 3
+#define PDS_VERSION_PATCH 0
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
 
@@ -299,6 +299,70 @@ typedef int (*pds_progress_fn)(void *user, size_t count, double done);
  * not NULL), PDS_ESTATE (called from inside the callback). (1.2)
  */
 PDS_API int pds_set_progress(pds_sampler *s, pds_progress_fn fn, void *user) PDS_NOEXCEPT;
+
+/*
+ * A variable radius (1.3). Each point p_i carries the radius r_i = r(p_i) of
+ * a field r, evaluated once, when the point is placed. A later point keeps
+ * out of every earlier point's closed disk: |p_j - p_i| >= r_i for i < j
+ * (distance exactly r_i allowed). Each new point is uniform over the free
+ * region F, the domain minus the union of the disks B(p_i, r_i); the pattern
+ * is maximal when F is empty. Inside a cell of the power diagram of the
+ * disks (weights r_i^2) the union is the cell's own disk, so the Jones
+ * construction is exact on the power diagram: no approximation. With a
+ * constant field the points are those of the plain sampler at that radius,
+ * byte for byte.
+ * pds_radius() is then the largest radius in force, rmax (the map's largest
+ * value, or the function's declared bound), and pds_refine(s, R) scales
+ * every radius, old points' too, by R / pds_radius(s). The smallest radius,
+ * rmin, is judged against the domain at the first point as pds_create's
+ * radius is (PDS_ERANGE, nothing added). Works with pds_set_domain,
+ * pds_step, pds_run in any batches (the same seed gives the same points),
+ * pds_verify, pds_free_area and pds_set_progress; not with pds_set_periodic
+ * or pds_set_count (PDS_EINVAL, either way round).
+ * Allowed only before the first point; the last field set wins.
+ */
+
+/*
+ * pds_set_radius_map - a radius field from a w x h map over the domain.
+ *   r  w*h radii in user units, row-major, row 0 along y = y0 and column 0
+ *      along x = x0; each finite and > 0. Copied: the array may be freed.
+ * The field is bilinear between pixel centres ((i + 1/2) (x1-x0)/w, ...)
+ * and constant beyond the outermost centres (clamped). A 1 x 1 map is a
+ * constant radius.
+ * Returns 0, PDS_EINVAL (s or r NULL, w or h 0, w*h overflowing, a value
+ * not finite or <= 0, a periodic domain or a count set), PDS_ENOMEM,
+ * PDS_ESTATE (points exist already). (1.3)
+ */
+PDS_API int pds_set_radius_map(pds_sampler *s, size_t w, size_t h, const double *r) PDS_NOEXCEPT;
+
+/*
+ * A radius function: the radius at user point (x, y) of the domain, in
+ * [rmin, rmax]. Called once per point, when it is placed (and at pds_run's
+ * start, 4096 times over a grid, for the progress estimate). It must not
+ * call functions that change the same sampler (they return PDS_ESTATE). (1.3)
+ */
+typedef double (*pds_radius_fn)(void *user, double x, double y);
+
+/*
+ * pds_set_radius_fn - a radius field from a function.
+ *   fn          the field; user is passed back to it unchanged.
+ *   rmin, rmax  finite, 0 < rmin <= rmax: the bounds of its values.
+ * A value outside [rmin, rmax], or not finite, stops pds_run or pds_step
+ * with PDS_EINVAL before the point is added: the points so far are kept,
+ * the sampler stays valid, and the message gives the value and where.
+ * Returns 0, PDS_EINVAL (s or fn NULL, bad bounds, a periodic domain or a
+ * count set), PDS_ESTATE (points exist already). (1.3)
+ */
+PDS_API int pds_set_radius_fn(pds_sampler *s, pds_radius_fn fn, void *user, double rmin,
+                              double rmax) PDS_NOEXCEPT;
+
+/*
+ * pds_radii - copy the radii in force of points first .. first+count-1 (in
+ * the order they were added) into r (count doubles). Without a field each
+ * is pds_radius(s). Returns the number copied: min(count, pds_count(s) -
+ * first), or 0 for s or r NULL or first >= pds_count(s). (1.3)
+ */
+PDS_API size_t pds_radii(const pds_sampler *s, size_t first, size_t count, double *r) PDS_NOEXCEPT;
 
 /* pds_strerror - static English text for any code, including unknown ones. (1.0) */
 PDS_API const char *pds_strerror(int code) PDS_NOEXCEPT;

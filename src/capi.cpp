@@ -7,6 +7,7 @@
 // this file's functions: they are all noexcept.
 #include <cmath>
 #include <cstdarg>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <limits>
@@ -22,7 +23,9 @@ struct pds_sampler {
     bool broken = false;  // an internal invariant failed: refuse changes
     pds_progress_fn progress = nullptr;
     void* progress_user = nullptr;
-    bool in_callback = false;  // the progress function is running: refuse changes
+    bool in_callback = false;  // a user callback is running: refuse changes
+    pds_radius_fn radius_fn = nullptr;
+    void* radius_user = nullptr;
     char message[256] = "no error";
 };
 
@@ -73,6 +76,12 @@ int guarded(pds_sampler* s, const char* what, F&& f, bool changes = true) PDS_NO
         return f();
     } catch (const std::bad_alloc&) {
         return fail(s, PDS_ENOMEM, "%s: out of memory", what);
+    } catch (const pds::FieldError& e) {
+        // Thrown before the point was added: the sampler is as it was.
+        return fail(s, PDS_EINVAL,
+                    "%s: the radius function returned %g at (%g, %g), outside its declared bounds or not "
+                    "finite; the points so far are kept",
+                    what, e.value(), e.x(), e.y());
     } catch (const pds::LimitError& e) {
         // Thrown before anything changed.
         return fail(s, PDS_ERANGE, "%s: %s (radius %g)", what, limit_text(e.limit()), e.radius());
@@ -102,6 +111,27 @@ int progress_trampoline(void* handle, std::size_t count, double done) {
     const int stop = s->progress(s->progress_user, count, done);
     s->in_callback = false;
     return stop;
+}
+
+double radius_trampoline(void* handle, double x, double y) {
+    pds_sampler* s = static_cast<pds_sampler*>(handle);
+    s->in_callback = true;
+    const double r = s->radius_fn(s->radius_user, x, y);
+    s->in_callback = false;
+    return r;
+}
+
+// What a field needs of the sampler's state; 0 when it may be set.
+int refuse_field(pds_sampler* s, const char* what) {
+    if (refuses_changes(s)) return refuse_broken(s, what);
+    if (s->core->count() != 0)
+        return fail(s, PDS_ESTATE, "%s: points exist already (%zu); set the field before the first point",
+                    what, s->core->count());
+    if (s->core->frame().periodic())
+        return fail(s, PDS_EINVAL, "%s: a radius field is not supported on a periodic domain", what);
+    if (s->core->count_target() != 0)
+        return fail(s, PDS_EINVAL, "%s: a radius field is not supported with a count (pds_set_count)", what);
+    return 0;
 }
 
 }  // namespace
@@ -149,6 +179,8 @@ PDS_API int pds_set_periodic(pds_sampler* s, int periodic) PDS_NOEXCEPT {
     if (s->core->count() != 0)
         return fail(s, PDS_ESTATE, "pds_set_periodic: points exist already (%zu); choose the "
                     "domain's kind before the first point", s->core->count());
+    if (periodic != 0 && s->core->has_field())
+        return fail(s, PDS_EINVAL, "pds_set_periodic: a radius field is not supported on a periodic domain");
     return guarded(s, "pds_set_periodic", [&] {
         s->core->set_periodic(periodic != 0);
         return 0;
@@ -162,10 +194,51 @@ PDS_API int pds_set_count(pds_sampler* s, size_t n) PDS_NOEXCEPT {
     if (s->core->count() != 0)
         return fail(s, PDS_ESTATE, "pds_set_count: points exist already (%zu); set the count "
                     "before the first point", s->core->count());
+    if (s->core->has_field())
+        return fail(s, PDS_EINVAL, "pds_set_count: a count is not supported with a radius field");
     return guarded(s, "pds_set_count", [&] {
         s->core->set_count(n);
         return 0;
     });
+}
+
+PDS_API int pds_set_radius_map(pds_sampler* s, size_t w, size_t h, const double* r) PDS_NOEXCEPT {
+    if (s == nullptr) return PDS_EINVAL;
+    if (r == nullptr) return fail(s, PDS_EINVAL, "pds_set_radius_map: the map is NULL");
+    if (w == 0 || h == 0) return fail(s, PDS_EINVAL, "pds_set_radius_map: the map is empty (%zu x %zu)", w, h);
+    if (w > SIZE_MAX / sizeof(double) / h)
+        return fail(s, PDS_EINVAL, "pds_set_radius_map: a %zu x %zu map does not fit in memory", w, h);
+    if (const int rc = refuse_field(s, "pds_set_radius_map")) return rc;
+    for (std::size_t k = 0; k < w * h; ++k)
+        if (!std::isfinite(r[k]) || r[k] <= 0.0)
+            return fail(s, PDS_EINVAL,
+                        "pds_set_radius_map: the radius at row %zu, column %zu is %g; radii must be finite "
+                        "and > 0",
+                        k / w, k % w, r[k]);
+    return guarded(s, "pds_set_radius_map", [&] {
+        s->core->set_field(pds::RadiusField::map(w, h, r));
+        return 0;
+    });
+}
+
+PDS_API int pds_set_radius_fn(pds_sampler* s, pds_radius_fn fn, void* user, double rmin, double rmax) PDS_NOEXCEPT {
+    if (s == nullptr) return PDS_EINVAL;
+    if (fn == nullptr) return fail(s, PDS_EINVAL, "pds_set_radius_fn: the function is NULL");
+    if (!std::isfinite(rmin) || !std::isfinite(rmax) || !(rmin > 0.0) || !(rmin <= rmax))
+        return fail(s, PDS_EINVAL,
+                    "pds_set_radius_fn: the bounds [%g, %g] must be finite with 0 < rmin <= rmax", rmin, rmax);
+    if (const int rc = refuse_field(s, "pds_set_radius_fn")) return rc;
+    return guarded(s, "pds_set_radius_fn", [&] {
+        s->core->set_field(pds::RadiusField::function(radius_trampoline, s, rmin, rmax));
+        s->radius_fn = fn;
+        s->radius_user = user;
+        return 0;
+    });
+}
+
+PDS_API size_t pds_radii(const pds_sampler* s, size_t first, size_t count, double* r) PDS_NOEXCEPT {
+    if (s == nullptr || r == nullptr) return 0;
+    return s->core->copy_radii(first, count, r);
 }
 
 PDS_API int pds_set_progress(pds_sampler* s, pds_progress_fn fn, void* user) PDS_NOEXCEPT {

@@ -15,6 +15,16 @@ ExactCentre exact_circumcentre(const Point& a, const Point& b, const Point& c) {
     return ExactCentre{dy * bb - by * dd, bx * dd - dx * bb, (bx * dy - by * dx).scaled(2.0)};
 }
 
+ExactCentre exact_power_centre(const Point& a, double ra, const Point& b, double rb, const Point& c, double rc) {
+    using E = Expansion;
+    const E bx = E::diff(b.x, a.x), by = E::diff(b.y, a.y);
+    const E dx = E::diff(c.x, a.x), dy = E::diff(c.y, a.y);
+    const E wa = E::product(ra, ra);
+    const E bb = bx * bx + by * by + wa - E::product(rb, rb);
+    const E dd = dx * dx + dy * dy + wa - E::product(rc, rc);
+    return ExactCentre{dy * bb - by * dd, bx * dd - dx * bb, (bx * dy - by * dx).scaled(2.0)};
+}
+
 Rational bisector_parameter(const Point& a, const Point& b, const Point& c) {
     using E = Expansion;
     const E bx = E::diff(b.x, a.x), by = E::diff(b.y, a.y);

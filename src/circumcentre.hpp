@@ -88,6 +88,9 @@ struct ExactCentre {
     Expansion den;  // > 0 for a counterclockwise triangle
 };
 ExactCentre exact_circumcentre(const Point& a, const Point& b, const Point& c);
+// Exact power centre of the counterclockwise disks (a, ra), (b, rb), (c, rc),
+// in the same form; with equal radii the circumcentre.
+ExactCentre exact_power_centre(const Point& a, double ra, const Point& b, double rb, const Point& c, double rc);
 
 // Exact parameter of the centre of (a, b, c) on the bisector of a and b.
 Rational bisector_parameter(const Point& a, const Point& b, const Point& c);

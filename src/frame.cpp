@@ -83,7 +83,11 @@ void Frame::set_periodic(bool periodic) {
 
 void Frame::set_radius(double user_radius) {
     user_radius_ = user_radius;
-    r_ = effective_radius(box_, std::ldexp(user_radius, scale_exp_));
+    r_ = internal_radius(user_radius);
+}
+
+double Frame::internal_radius(double user_radius) const {
+    return effective_radius(box_, std::ldexp(user_radius, scale_exp_));
 }
 
 Limit Frame::precision_limit() const {

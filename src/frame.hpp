@@ -102,6 +102,8 @@ public:
 
     Point to_user(const Point& p) const;
     double area_to_user(double a) const;
+    // A user radius in the internal frame, capped as r() is.
+    double internal_radius(double user_radius) const;
 
 private:
     Box user_domain_;

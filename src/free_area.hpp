@@ -89,16 +89,21 @@ CellSelection select_in_cell(const CellQuery& q, const Ring& ring, double target
     return s;
 }
 
-enum class SampleOutcome { placed, gave_up };
+// placed: *out holds the point; gave_up: no draw was accepted; rejected:
+// (no retry asked) the one draw was refused by `accept`.
+enum class SampleOutcome { placed, gave_up, rejected };
 
 // Draws a point uniformly from one chunk of a cell's free region: a piece is
 // chosen with probability proportional to its area (u in [0, 1)), then points
 // are drawn in that piece until one lies in the free region and
 // `accept(absolute point)` (the exact checks) agrees. Retrying within the
 // chosen piece keeps the law exact.
+//
+// retry false: a draw that `accept` refuses ends the sampling (rejected),
+// for cells whose pieces reach outside them (a site outside its power cell).
 template <class Accept>
 SampleOutcome sample_chunk(const CellQuery& q, const Chunk& chunk, double u, Rng& rng,
-                           const Accept& accept, int max_draws, Point* out) {
+                           const Accept& accept, int max_draws, Point* out, bool retry = true) {
     const double r2 = q.radius * q.radius;
     const int k = select_piece(chunk, r2, u);
     if (k < 0) return SampleOutcome::gave_up;
@@ -111,6 +116,7 @@ SampleOutcome sample_chunk(const CellQuery& q, const Chunk& chunk, double u, Rng
             *out = p;
             return SampleOutcome::placed;
         }
+        if (!retry) return SampleOutcome::rejected;
     }
     return SampleOutcome::gave_up;
 }

@@ -12,8 +12,12 @@
 
 namespace pds {
 
-JonesStage::JonesStage(const Box& box, double r, const Torus& torus)
-    : box_(box), r_(r), dt_(torus.on() ? TorusCopies(torus, r).largest_region() : box) {
+JonesStage::JonesStage(const Box& box, double r, const Torus& torus, const PointRadii* radii)
+    : box_(box), r_(r), dt_(torus.on() ? TorusCopies(torus, r).largest_region() : box, radii != nullptr) {
+    if (radii) {
+        if (torus.on()) throw std::logic_error("a variable radius on the torus");
+        radii_ = *radii;
+    }
     if (torus.on()) {
         copies_ = TorusCopies(torus, r);
         is_copy_.assign(Delaunay::kGhosts, 0);
@@ -38,6 +42,7 @@ void JonesStage::reserve(std::size_t points) {
     dt_.reserve(vertices + Delaunay::kGhosts);
     tree_.reserve(vertices);
     order_.reserve(points);
+    if (radii_) values_.reserve(points);
     if (copies_.on()) {
         is_copy_.reserve(vertices + Delaunay::kGhosts);
         original_.reserve(vertices + Delaunay::kGhosts);
@@ -47,12 +52,29 @@ void JonesStage::reserve(std::size_t points) {
 bool JonesStage::has_room_for(std::size_t points) const {
     const std::size_t vertices = vertices_for(points);
     return dt_.has_room_for(vertices + Delaunay::kGhosts) && tree_.capacity() >= vertices &&
-           order_.capacity() >= points &&
+           order_.capacity() >= points && (!radii_ || values_.capacity() >= points) &&
            (!copies_.on() || (is_copy_.capacity() >= vertices + Delaunay::kGhosts &&
                               original_.capacity() >= vertices + Delaunay::kGhosts));
 }
 
+void JonesStage::adopt(const std::vector<Point>& points, const std::vector<double>& values,
+                       const std::uint32_t* order) {
+    if (!radii_ || count() != 0 || !has_room_for(points.size())) throw std::logic_error("hand-over without room");
+    const std::size_t n = points.size();
+    order_.resize(n);
+    values_.assign(values.begin(), values.end());  // within the reserved room
+    VertexIndex previous = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t k = order[i];
+        previous = dt_.insert(points[k], radii_->radius_of(values[k]), previous);
+        order_.set(k, previous);
+    }
+    tree_.resize(n);
+    measure_all_cells();
+}
+
 void JonesStage::adopt(const std::vector<Point>& points, const std::uint32_t* order) {
+    if (radii_) throw std::logic_error("hand-over without radii");
     if (count() != 0 || (!copies_.on() && !has_room_for(points.size()))) throw std::logic_error("hand-over without room");
     const std::size_t n = points.size();
     order_.resize(n);
@@ -84,12 +106,55 @@ void JonesStage::adopt(const std::vector<Point>& points, const std::uint32_t* or
     measure_all_cells();
 }
 
-void JonesStage::set_radius(double r) {
+void JonesStage::set_radius(double r, const PointRadii* radii) {
     settle();
+    if (radii_) {
+        const PointRadii old = *radii_;
+        radii_ = *radii;
+        try {
+            rebuild_mesh();
+        } catch (...) {
+            radii_ = old;
+            throw;
+        }
+    }
     drop_queue();
     has_first_ = false;
     r_ = r;
     measure_all_cells();
+}
+
+void JonesStage::rebuild_mesh() {
+    // The points in rows of about one radius, alternate rows reversed, so
+    // each walk starts next to its point. Built aside: a failure changes
+    // nothing.
+    const std::size_t n = count();
+    std::vector<std::uint32_t> by_row(n);
+    std::vector<std::uint64_t> key(n);
+    const double row = std::max(2.0 * radii_->rmin(), box_.height() / 65536.0);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Point& p = point(k);
+        const auto band = static_cast<std::uint64_t>((p.y - box_.y0) / row);
+        const double t = (p.x - box_.x0) / box_.width();
+        const auto along = static_cast<std::uint64_t>((band % 2 ? 1.0 - t : t) * 4294967295.0);
+        key[k] = (band << 32) | along;
+        by_row[k] = static_cast<std::uint32_t>(k);
+    }
+    std::sort(by_row.begin(), by_row.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+    Delaunay fresh(box_, true);
+    fresh.reserve(std::max(order_.capacity(), n) + Delaunay::kGhosts);
+    std::vector<Point> points(n);
+    for (std::size_t k = 0; k < n; ++k) points[k] = point(k);
+    std::vector<VertexIndex> vertex(n);
+    VertexIndex previous = 0;
+    for (std::uint32_t k : by_row) {
+        previous = fresh.insert(points[k], radii_->radius_of(values_[k]), previous);
+        vertex[k] = previous;
+    }
+    // Nothing below allocates: order_ has room for every point.
+    dt_ = std::move(fresh);
+    order_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) order_.set(k, vertex[k]);
 }
 
 bool JonesStage::measure_all_cells() {
@@ -98,7 +163,7 @@ bool JonesStage::measure_all_cells() {
     bool valid = true;
     for (SiteIndex site = 0; site < sites; ++site) {
         const VertexIndex v = vertex_of(site);
-        if (is_copy(v)) {
+        if (is_copy(v) || (radii_ && dt_.is_hidden(v))) {
             tree_.set_leaf_only(site, 0.0);
             continue;
         }
@@ -147,15 +212,18 @@ const Point* JonesStage::next(Rng& rng) {
 }
 
 void JonesStage::add_next() {
+    // The field is asked first: if it refuses, nothing has changed.
     if (count() == 0) {
         if (!has_first_) throw std::logic_error("add_next without next");
+        const double value = value_at(first_.p);
         has_first_ = false;
-        insert_point(first_.p, 0);
+        insert_point(first_.p, 0, value);
         return;
     }
     if (queue_head_ >= queue_.size()) throw std::logic_error("add_next without next");
+    const double value = value_at(queue_[queue_head_].p);
     const Candidate cand = queue_[queue_head_++];
-    insert_point(cand.p, cand.source);
+    insert_point(cand.p, cand.source, value);
 }
 
 void JonesStage::adapt_batch_size() {
@@ -210,7 +278,8 @@ bool JonesStage::still_free(const Point& p) const {
     for (VertexIndex v : since_batch_) {
         const Point& q = dt_.point(v);
         if (std::fabs(p.x - q.x) > reach || std::fabs(p.y - q.y) > reach) continue;
-        if (compare_distance(p, q, r_) < 0) return false;
+        // Each newer disk by its own radius (r_ is the largest).
+        if (compare_distance(p, q, radii_ ? dt_.radius(v) : r_) < 0) return false;
     }
     return true;
 }
@@ -251,15 +320,22 @@ void JonesStage::draw_batch_unguarded(std::size_t n, Rng& rng) {
     const double total = tree_.total();
     for (std::size_t k = 0; k < n; ++k) target[k] = rng.next_double() * total;
     tree_.select_many(target, n, sites);
+    VertexIndex rings[kMaxBatch];
     for (std::size_t k = 0; k < n; ++k) {
         vertices[k] = vertex_of(sites[k]);
         bound[k] = tree_.weight(sites[k]);
+        // A hidden disk has no ring: a ghost's stands in for the prefetch.
+        rings[k] = radii_ && dt_.is_hidden(vertices[k]) ? 0 : vertices[k];
     }
-    dt_.prefetch_rings(vertices, n);
+    dt_.prefetch_rings(rings, n);
     const MeshCells cells = this->cells();
     for (std::size_t k = 0; k < n; ++k) {
         const SiteIndex site = sites[k];
         const VertexIndex v = vertices[k];
+        if (rings[k] != v) {
+            set_weight(site, 0.0);  // hidden since it was measured: no cell left
+            continue;
+        }
         const CellQuery q = cells.query(v);
         // One pass: the chunk holding target u * U; if the exact area A falls
         // short of the target, the selection is rejected.
@@ -293,11 +369,16 @@ void JonesStage::draw_batch_unguarded(std::size_t n, Rng& rng) {
             return acceptable(chosen, v);
         };
         Point p;
-        if (sample_chunk(q, sel.chunk(), rng.next_double(), rng, accept, kMaxDraws, &p) ==
-            SampleOutcome::placed) {
+        // A site outside its power cell: its pieces reach outside the cell,
+        // so a draw there rejects the whole selection (a retry inside the
+        // piece would favour the piece's part in the cell).
+        const bool retry = !radii_ || site_in_own_cell(v);
+        const SampleOutcome drawn = sample_chunk(q, sel.chunk(), rng.next_double(), rng, accept, kMaxDraws, &p, retry);
+        if (drawn == SampleOutcome::placed) {
             queue_.push_back(Candidate{chosen, v});
             continue;
         }
+        if (drawn == SampleOutcome::rejected) continue;
         // A healthy piece practically never fails 64 draws; a cell that keeps
         // failing has a free region below double resolution, or none.
         if (++draw_failures_ % kFailuresPerGiveUp == 0) give_up(site);
@@ -316,6 +397,16 @@ bool JonesStage::acceptable(const Point& p, VertexIndex v) const {
     // into the fundamental domain when inserted.
     if (!copies_.on() && !box_.contains(p)) return false;
     const Point& c = dt_.point(v);
+    if (radii_) {
+        // In the site's power cell and outside its disk: outside every disk.
+        const double rc = dt_.radius(v);
+        if (compare_distance(p, c, rc) < 0) return false;
+        bool ok = true;
+        dt_.for_each_neighbour(v, [&](VertexIndex n) {
+            if (ok && !Delaunay::is_ghost(n) && compare_power(p, c, rc, dt_.point(n), dt_.radius(n)) > 0) ok = false;
+        });
+        return ok;
+    }
     if (compare_distance(p, c, r_) < 0) return false;
     bool ok = true;
     dt_.for_each_neighbour(v, [&](VertexIndex n) {
@@ -324,7 +415,26 @@ bool JonesStage::acceptable(const Point& p, VertexIndex v) const {
     return ok;
 }
 
-void JonesStage::insert_point(const Point& p, VertexIndex near) {
+bool JonesStage::site_in_own_cell(VertexIndex v) const {
+    const Point& c = dt_.point(v);
+    const double rc = dt_.radius(v);
+    bool inside = true;
+    dt_.for_each_neighbour(v, [&](VertexIndex n) {
+        if (inside && compare_power(c, c, rc, dt_.point(n), dt_.radius(n)) > 0) inside = false;
+    });
+    return inside;
+}
+
+void JonesStage::insert_point(const Point& p, VertexIndex near, double value) {
+    if (radii_) {
+        // Room was reserved (values_ too): nothing here allocates.
+        const VertexIndex v = dt_.insert(p, radii_->radius_of(value), near);
+        values_.push_back(value);
+        tree_.push_back(dt_.is_hidden(v) ? 0.0 : cells().measure(v).area);
+        since_batch_.push_back(v);
+        draw_failures_ = 0;
+        return;
+    }
     if (copies_.on()) {
         make_room_for_copies(copies_.max_copies());  // may throw; nothing changed yet
         const VertexIndex from = static_cast<VertexIndex>(dt_.vertex_count());
@@ -361,7 +471,8 @@ double JonesStage::free_area() const {
     const MeshCells cells = this->cells();
     double sum = 0.0;
     tree_.for_each_positive([&](SiteIndex site) {
-        sum += cells.measure(vertex_of(site)).area;
+        const VertexIndex v = vertex_of(site);
+        if (!radii_ || !dt_.is_hidden(v)) sum += cells.measure(v).free();
         return true;
     });
     return sum;
@@ -369,7 +480,14 @@ double JonesStage::free_area() const {
 
 VerifyReport JonesStage::verify() const {
     if (widen_pending_) throw std::bad_alloc();
-    VerifyReport rep = copies_.on() ? verify_torus(dt_, copies_, is_copy_, r_) : verify_pattern(dt_, box_, r_);
+    VerifyReport rep;
+    if (radii_) {
+        std::vector<std::size_t> rank(dt_.vertex_count(), 0);
+        for (std::size_t k = 0; k < count(); ++k) rank[order_.vertex(k)] = k;
+        rep = verify_pattern(dt_, box_, r_, &rank);
+    } else {
+        rep = copies_.on() ? verify_torus(dt_, copies_, is_copy_, r_) : verify_pattern(dt_, box_, r_);
+    }
     if (rep.vertex != kNoVertex) name_point(rep, order_.point(rep.vertex));
     if (rep.valid && !rep.maximal && count() > 0 && tree_.total() == 0.0) {
         rep.valid = false;

@@ -38,6 +38,14 @@
 // to the torus grid and moved into the fundamental domain when inserted, and
 // a candidate is checked against every copy of the points added since.
 //
+// A variable radius (point_radii.hpp): the mesh is the regular triangulation
+// of the disks and the cells are power cells (free_area.hpp), each new point
+// gets its radius from the field as it is added, and a candidate must keep
+// out of each newer disk by that disk's radius. A disk can lose its whole
+// power cell to later, larger ones (hidden, delaunay.hpp): its weight is
+// dropped when it is next selected. A refine changes every radius, and so
+// the power diagram: the mesh is rebuilt.
+//
 // Memory: reserve() makes room for the points beforehand; only the exact
 // coverage test allocates while points are drawn. If it runs out, the batch
 // being drawn is undone (generator, weights, queue) before std::bad_alloc
@@ -58,6 +66,7 @@
 #include "mesh_cells.hpp"
 #include "point.hpp"
 #include "point_order.hpp"
+#include "point_radii.hpp"
 #include "rng.hpp"
 #include "stage.hpp"
 #include "torus_copies.hpp"
@@ -71,9 +80,9 @@ struct JonesStats {
 
 class JonesStage final : public Stage {
 public:
-    // box and r in the internal frame, torus on for a periodic domain; may
-    // throw std::bad_alloc.
-    JonesStage(const Box& box, double r, const Torus& torus = Torus{});
+    // box and r in the internal frame, torus on for a periodic domain; radii
+    // for a variable radius (r: the largest). May throw std::bad_alloc.
+    JonesStage(const Box& box, double r, const Torus& torus = Torus{}, const PointRadii* radii = nullptr);
 
     // Room for `points` points in all; strong guarantee (std::bad_alloc).
     void reserve(std::size_t points);
@@ -83,12 +92,18 @@ public:
     // is the k-th added) in the order given, measures every cell and builds
     // the tree. Requires count() == 0 and room; never allocates.
     void adopt(const std::vector<Point>& points, const std::uint32_t* order);
+    // The same with a variable radius: values[k] is point k's field value.
+    void adopt(const std::vector<Point>& points, const std::vector<double>& values, const std::uint32_t* order);
     // The torus: finishes a widening of the margin that memory interrupted,
     // or that the hand-over left to do (may throw std::bad_alloc).
     void settle();
     // Continues at a smaller radius: drops drawn candidates (they were drawn
-    // for the old free region) and measures every cell again.
-    void set_radius(double r);
+    // for the old free region) and measures every cell again. With a variable
+    // radius, radii gives the new scale and the mesh is rebuilt (allocates;
+    // on std::bad_alloc nothing has changed).
+    void set_radius(double r, const PointRadii* radii = nullptr);
+    // Point k's field value (a variable radius only).
+    double value(PointIndex k) const { return values_[k]; }
 
     std::size_t count() const override {
         return copies_.on() ? order_.handed_over() : dt_.vertex_count() - Delaunay::kGhosts;
@@ -135,7 +150,15 @@ private:
     void set_weight(SiteIndex site, double weight);
     void give_up(SiteIndex site);
     bool acceptable(const Point& p, VertexIndex vertex) const;
-    void insert_point(const Point& p, VertexIndex near);
+    // The field's value at a point about to be added (0 without a field);
+    // may throw FieldError, before anything changes.
+    double value_at(const Point& p) const { return radii_ ? radii_->value_at(p) : 0.0; }
+    void insert_point(const Point& p, VertexIndex near, double value);
+    // A variable radius: whether v's site lies in its own power cell (else
+    // its fan's pieces reach outside the cell, see free_area.hpp).
+    bool site_in_own_cell(VertexIndex v) const;
+    // A variable radius: the mesh built anew from the points (refine).
+    void rebuild_mesh();
     // The torus: room for one more point and all its copies (may allocate).
     void make_room_for_copies(std::size_t copies);
     // Inserts p (real, wrapped) and its copies; returns p's vertex.
@@ -186,6 +209,8 @@ private:
     std::vector<VertexIndex> original_;       // per vertex: the real one it copies (itself if real)
     std::vector<VertexIndex> copy_hint_;      // per offset: the last copy inserted
     bool widen_pending_ = false;              // copies may be missing: widen_margin() first
+    std::optional<PointRadii> radii_;         // a variable radius
+    std::vector<double> values_;              // a variable radius: per point, the field's value
 };
 
 }  // namespace pds

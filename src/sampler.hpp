@@ -32,12 +32,15 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "dart_stage.hpp"
 #include "frame.hpp"
 #include "jones_stage.hpp"
 #include "point.hpp"
+#include "point_radii.hpp"
 #include "progress.hpp"
+#include "radius_field.hpp"
 #include "rng.hpp"
 #include "verify.hpp"
 
@@ -56,6 +59,11 @@ public:
     void set_count(std::size_t n);
     std::size_t count_target() const { return count_target_; }
     void set_progress(const ProgressHook& hook) { progress_ = hook; }
+    // A variable radius (radius_field.hpp): the radius in force becomes the
+    // field's largest; requires count() == 0, a plain rectangle and no count.
+    void set_field(const RadiusField& field);
+    bool has_field() const { return field_.has_value(); }
+    const RadiusField* field() const { return field_ ? &*field_ : nullptr; }
 
     // Adds one point (true), or finds the pattern complete (false): maximal,
     // or holding the count asked for.
@@ -76,6 +84,8 @@ public:
 
     std::size_t count() const { return started() ? stage().count() : 0; }
     std::size_t copy_points(std::size_t first, std::size_t n, double* xy) const;
+    // Each point's radius in force (user units): R for all without a field.
+    std::size_t copy_radii(std::size_t first, std::size_t n, double* r) const;
     double radius() const { return frame_.user_radius(); }
     const Box& domain() const { return frame_.user_domain(); }
     // Exact free area: O(cells not yet known covered), 0 at once when maximal.
@@ -92,6 +102,18 @@ public:
 
 private:
     bool started() const { return jones_ != nullptr; }
+    // The expected size of a maximal pattern (for progress and the grid).
+    double expected_count() const;
+    // The frame at the smallest radius in force: what the limits and the
+    // bounds on the count are judged with.
+    Frame smallest_frame() const;
+    // A field whose values differ; a constant one runs the plain stages at
+    // its radius (the same points, at the same speed).
+    bool varying_field() const { return field_ && !field_->constant(); }
+    // What the stages see of a varying field.
+    std::optional<PointRadii> point_radii(const Frame& frame) const {
+        return varying_field() ? std::optional<PointRadii>(PointRadii(*field_, frame)) : std::nullopt;
+    }
     bool use_darts() const;
     Stage& stage() { return darts_ ? static_cast<Stage&>(*darts_) : *jones_; }
     const Stage& stage() const { return darts_ ? static_cast<const Stage&>(*darts_) : *jones_; }
@@ -110,6 +132,7 @@ private:
     bool skip_darts_ = false;
     std::size_t count_target_ = 0;
     ProgressHook progress_;
+    std::optional<RadiusField> field_;
     std::unique_ptr<DartStage> darts_;   // while the dart stage runs
     std::unique_ptr<JonesStage> jones_;  // from the first point on
 };

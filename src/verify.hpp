@@ -16,6 +16,7 @@
 #define PDS_VERIFY_HPP
 
 #include <string>
+#include <vector>
 
 #include "delaunay.hpp"
 #include "indices.hpp"
@@ -34,7 +35,11 @@ struct VerifyReport {
 
 // Checks the pattern of dt's real vertices. A failure about one point sets
 // rep.vertex; the caller maps it to the user's order and calls name_point.
-VerifyReport verify_pattern(const Delaunay& dt, const Box& domain, double radius);
+// A weighted mesh (a variable radius): radius is the largest, rank[v] is
+// vertex v's place in the order the points were added (the spacing rule
+// depends on it), and maximality is judged on the power diagram.
+VerifyReport verify_pattern(const Delaunay& dt, const Box& domain, double radius,
+                            const std::vector<std::size_t>* rank = nullptr);
 // Exact: the circumcentre of the counterclockwise triangle (a, b, c) lies in
 // the closed box and farther than r from the corners.
 bool voronoi_vertex_uncovered(const Point& a, const Point& b, const Point& c, const Box& box, double r);
