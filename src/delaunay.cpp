@@ -9,7 +9,7 @@
 
 namespace pds {
 
-Delaunay::Delaunay(const Box& domain, bool weighted) : weighted_(weighted) {
+Delaunay::Delaunay(const Box& domain, bool weighted, double ghost_radius) : weighted_(weighted) {
     const double cx = 0.5 * (domain.x0 + domain.x1);
     const double cy = 0.5 * (domain.y0 + domain.y1);
     // sqrt, not hypot: libm's hypot may differ in the last bit between
@@ -27,7 +27,7 @@ Delaunay::Delaunay(const Box& domain, bool weighted) : weighted_(weighted) {
     mesh_.connect(side[1], side[0]);  // 2 -> 0
     vertex_edge_.assign(side, side + kGhosts);
     if (weighted_) {
-        radii_.assign(kGhosts, 0.0);
+        radii_.assign(kGhosts, ghost_radius);
         hidden_by_.assign(kGhosts, kNoVertex);
     }
 }

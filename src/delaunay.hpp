@@ -46,7 +46,12 @@ class Delaunay {
 public:
     static constexpr VertexIndex kGhosts = kGhostVertices;
 
-    explicit Delaunay(const Box& domain, bool weighted = false);
+    // Weighted: the ghosts get ghost_radius. Given the largest radius, every
+    // decision with equal radii is the unweighted one; and radii up to twice
+    // the diagonal (the frame's cap) keep the ghosts' cells out of the domain
+    // (a site's power there is under diagonal^2, a ghost's over 9 diagonal^2
+    // - (2 diagonal)^2).
+    explicit Delaunay(const Box& domain, bool weighted = false, double ghost_radius = 0.0);
 
     // Makes room for `vertices` vertices in all (ghosts included) and their
     // edges; strong guarantee (std::bad_alloc and nothing changed).

@@ -13,7 +13,8 @@
 namespace pds {
 
 JonesStage::JonesStage(const Box& box, double r, const Torus& torus, const PointRadii* radii)
-    : box_(box), r_(r), dt_(torus.on() ? TorusCopies(torus, r).largest_region() : box, radii != nullptr) {
+    : box_(box), r_(r), dt_(torus.on() ? TorusCopies(torus, r).largest_region() : box, radii != nullptr,
+                            radii ? radii->rmax() : 0.0) {
     if (radii) {
         if (torus.on()) throw std::logic_error("a variable radius on the torus");
         radii_ = *radii;
@@ -125,36 +126,24 @@ void JonesStage::set_radius(double r, const PointRadii* radii) {
 }
 
 void JonesStage::rebuild_mesh() {
-    // The points in rows of about one radius, alternate rows reversed, so
-    // each walk starts next to its point. Built aside: a failure changes
-    // nothing.
-    const std::size_t n = count();
-    std::vector<std::uint32_t> by_row(n);
-    std::vector<std::uint64_t> key(n);
-    const double row = std::max(2.0 * radii_->rmin(), box_.height() / 65536.0);
-    for (std::size_t k = 0; k < n; ++k) {
-        const Point& p = point(k);
-        const auto band = static_cast<std::uint64_t>((p.y - box_.y0) / row);
-        const double t = (p.x - box_.x0) / box_.width();
-        const auto along = static_cast<std::uint64_t>((band % 2 ? 1.0 - t : t) * 4294967295.0);
-        key[k] = (band << 32) | along;
-        by_row[k] = static_cast<std::uint32_t>(k);
+    // The vertices again in their order, with their new radii: each keeps its
+    // number (so the point order and the tree stay), and with equal radii
+    // the mesh comes out record for record as before (the scaling changes no
+    // decision). Each walk starts at an older neighbour in the old mesh,
+    // which is close. Built aside: a failure changes nothing.
+    Delaunay fresh(box_, true, radii_->rmax());
+    fresh.reserve(std::max(order_.capacity(), count()) + Delaunay::kGhosts);
+    std::vector<double> value_of_vertex(dt_.vertex_count(), 0.0);
+    for (std::size_t k = 0; k < count(); ++k) value_of_vertex[order_.vertex(k)] = values_[k];
+    for (VertexIndex v = Delaunay::kGhosts; v < dt_.vertex_count(); ++v) {
+        VertexIndex near = v - 1;
+        if (!dt_.is_hidden(v))
+            dt_.for_each_neighbour(v, [&](VertexIndex n) {
+                if (n < v && !Delaunay::is_ghost(n)) near = n;
+            });
+        fresh.insert(dt_.point(v), radii_->radius_of(value_of_vertex[v]), near);
     }
-    std::sort(by_row.begin(), by_row.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
-    Delaunay fresh(box_, true);
-    fresh.reserve(std::max(order_.capacity(), n) + Delaunay::kGhosts);
-    std::vector<Point> points(n);
-    for (std::size_t k = 0; k < n; ++k) points[k] = point(k);
-    std::vector<VertexIndex> vertex(n);
-    VertexIndex previous = 0;
-    for (std::uint32_t k : by_row) {
-        previous = fresh.insert(points[k], radii_->radius_of(values_[k]), previous);
-        vertex[k] = previous;
-    }
-    // Nothing below allocates: order_ has room for every point.
     dt_ = std::move(fresh);
-    order_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) order_.set(k, vertex[k]);
 }
 
 bool JonesStage::measure_all_cells() {

@@ -21,6 +21,7 @@ Suite* dart_stage_suite();
 Suite* sampler_suite();
 Suite* law_suite();
 Suite* law_torus_suite();
+Suite* field_suite();
 Suite* out_of_memory_suite();
 Suite* torus_suite();
 

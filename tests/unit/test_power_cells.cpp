@@ -4,9 +4,12 @@
 // the float classification against the exact power-cell classifier.
 #include <cmath>
 #include <algorithm>
+#include <random>
 #include <vector>
 
 #include "cell_coverage.hpp"
+#include "free_area.hpp"
+#include "rng.hpp"
 #include "disk_patterns.hpp"
 #include "mesh_cells.hpp"
 #include "suites.hpp"
@@ -149,6 +152,89 @@ START_TEST(float_classification_agrees_with_exact_power_cells) {
 }
 END_TEST
 
+namespace {
+
+// Is p free and in disk k's power cell (brute force over all disks)?
+bool in_free_power_cell(const std::vector<Disk>& disks, std::size_t k, const pds::Point& p) {
+    const pds::Box box{0, 0, 1, 1};
+    if (!box.contains(p) || pds::compare_distance(p, disks[k].p, disks[k].r) < 0) return false;
+    for (std::size_t j = 0; j < disks.size(); ++j)
+        if (j != k && pds::compare_power(p, disks[k].p, disks[k].r, disks[j].p, disks[j].r) > 0) return false;
+    return true;
+}
+
+}  // namespace
+
+START_TEST(draws_are_uniform_in_shadowed_cells) {
+    // Cells whose site lies outside them: the pieces cover the cell and its
+    // shadow, and a draw in the shadow must reject the whole selection (a
+    // retry in the same piece would favour pieces by their share in the
+    // cell). The sampler's draws against rejection sampling of the region,
+    // binned by angle around the site; pooled over the shadowed cells.
+    const std::vector<Disk> disks = rsa_disks(600, step_field, 5);
+    const pds::Delaunay dt = weighted_mesh(disks);
+    const pds::MeshCells cells(dt, pds::Box{0, 0, 1, 1}, 0.0);
+    const int n = test_light() ? 6000 : 40000;
+    double chi2 = 0;
+    int dof = 0, shadowed = 0;
+    for (std::uint32_t v = pds::Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
+        if (dt.is_hidden(v)) continue;
+        const pds::CellMeasure m = cells.measure(v);
+        if (!(m.shadow > 0.0) || m.free() < 1e-6) continue;
+        ++shadowed;
+        const std::size_t k = v - pds::Delaunay::kGhosts;
+        const pds::Point c = disks[k].p;
+        const auto accept = [&](const pds::Point& p) { return in_free_power_cell(disks, k, p); };
+        // Reference: uniform in a square around the cell, kept when in it.
+        double reach = 0;
+        dt.for_each_neighbour(v, [&](std::uint32_t u) {
+            if (!pds::Delaunay::is_ghost(u))
+                reach = std::max(reach, std::hypot(dt.point(u).x - c.x, dt.point(u).y - c.y));
+        });
+        std::mt19937_64 ref(77 + v);
+        std::uniform_real_distribution<double> u(-reach, reach);
+        std::vector<pds::Point> want, got;
+        while (static_cast<int>(want.size()) < n) {
+            const pds::Point p{c.x + u(ref), c.y + u(ref)};
+            if (accept(p)) want.push_back(p);
+        }
+        pds::Rng rng(99 + v);
+        const pds::CellQuery q = cells.query(v);
+        while (static_cast<int>(got.size()) < n) {
+            const pds::CellSelection sel = pds::select_in_cell(q, cells.ring(v), rng.next_double() * m.area);
+            if (!sel.found()) continue;
+            pds::Point p;
+            if (pds::sample_chunk(q, sel.chunk(), rng.next_double(), rng, accept, 64, &p, false) ==
+                pds::SampleOutcome::placed)
+                got.push_back(p);
+        }
+        const int bins = 36;
+        double lo = INFINITY, hi = -INFINITY;
+        for (const pds::Point& p : want) {
+            const double a = std::atan2(p.y - c.y, p.x - c.x);
+            lo = std::min(lo, a);
+            hi = std::max(hi, a);
+        }
+        const auto bin = [&](const pds::Point& p) {
+            const double a = (std::atan2(p.y - c.y, p.x - c.x) - lo) / (hi - lo);
+            return std::max(0, std::min(bins - 1, static_cast<int>(a * bins)));
+        };
+        std::vector<double> a(bins, 0), b(bins, 0);
+        for (const pds::Point& p : got) ++a[bin(p)];
+        for (const pds::Point& p : want) ++b[bin(p)];
+        for (int j = 0; j < bins; ++j) {
+            if (a[j] + b[j] < 10) continue;
+            chi2 += (a[j] - b[j]) * (a[j] - b[j]) / (a[j] + b[j]);
+            ++dof;
+        }
+        --dof;
+    }
+    ck_assert_int_gt(shadowed, 0);
+    const double excess = (chi2 - dof) / std::sqrt(2.0 * dof);
+    ck_assert_msg(excess < 5.0, "pooled chi-square %.1f on %d dof (%.1f sd above the mean)", chi2, dof, excess);
+}
+END_TEST
+
 Suite* power_cells_suite() {
     Suite* s = suite_create("power_cells");
     TCase* t = tcase_create("area");
@@ -156,6 +242,7 @@ Suite* power_cells_suite() {
     tcase_add_test(t, power_cell_areas_match_integration);
     tcase_add_test(t, power_cell_areas_match_a_grid);
     tcase_add_test(t, float_classification_agrees_with_exact_power_cells);
+    tcase_add_test(t, draws_are_uniform_in_shadowed_cells);
     suite_add_tcase(s, t);
     return s;
 }

@@ -1,0 +1,223 @@
+// test_field.cpp - the variable radius (radius_field.hpp) through the
+// sampler: its law against saturated dart throwing under the same rule
+// (field_dart_throwing.hpp) for a gradient and a step field; the rule and
+// maximality by brute force; the density along a linear field; and equal
+// radii through the weighted path giving the plain sampler's points.
+#include <cmath>
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "field_dart_throwing.hpp"
+#include "law_compare.hpp"
+#include "radius_field.hpp"
+#include "sampler.hpp"
+#include "suites.hpp"
+
+namespace {
+
+// 1:2 along x, and a 1:2.5 step at x = 1/2 (beyond sqrt 2: power cells
+// lose their sites and disks get hidden).
+double gradient(void*, double x, double) { return 0.05 * (1.0 + x); }
+double step(void*, double x, double) { return x < 0.5 ? 0.04 : 0.1; }
+
+struct Pattern {
+    std::vector<pds::Point> p;
+    std::vector<double> r;
+};
+
+Pattern run_to_the_end(pds::Sampler& s) {
+    bool maximal = false;
+    s.run(0, &maximal);
+    ck_assert(maximal);
+    Pattern out;
+    std::vector<double> xy(2 * s.count());
+    out.r.resize(s.count());
+    s.copy_points(0, s.count(), xy.data());
+    s.copy_radii(0, s.count(), out.r.data());
+    for (std::size_t i = 0; i < s.count(); ++i) out.p.push_back({xy[2 * i], xy[2 * i + 1]});
+    return out;
+}
+
+// Near-contact pairs: a later point within 1.2 times an earlier one's radius.
+double close_pairs(const Pattern& t) {
+    double n = 0;
+    for (std::size_t i = 0; i < t.p.size(); ++i)
+        for (std::size_t j = i + 1; j < t.p.size(); ++j) {
+            const double dx = t.p[i].x - t.p[j].x, dy = t.p[i].y - t.p[j].y;
+            if (dx * dx + dy * dy < 1.44 * t.r[i] * t.r[i]) ++n;
+        }
+    return n;
+}
+
+void compare_field_laws(FieldDartThrowing::Field field, double rmin, double rmax, int runs) {
+    law::Sample sampler, darts;
+    FieldDartThrowing reference(pds::Box{0, 0, 1, 1}, field, rmin, rmax);
+    for (int seed = 1; seed <= runs; ++seed) {
+        pds::Sampler s(1.0, static_cast<std::uint64_t>(seed));
+        s.set_field(pds::RadiusField::function(field, nullptr, rmin, rmax));
+        const Pattern a = run_to_the_end(s);
+        sampler.count.push_back(static_cast<double>(a.p.size()));
+        sampler.close_pairs.push_back(close_pairs(a));
+        Pattern b;
+        b.p = reference.run(static_cast<std::uint64_t>(1000000 + seed), &b.r);
+        darts.count.push_back(static_cast<double>(b.p.size()));
+        darts.close_pairs.push_back(close_pairs(b));
+    }
+    law::assert_same_law(sampler, darts);
+}
+
+// Every later point (from `first` on) outside every earlier disk, and no
+// room left: probes on a fine grid must each lie in some disk (closed).
+// Brute force.
+void check_rule_and_maximality_from(const Pattern& t, std::size_t first, int probes) {
+    for (std::size_t i = 0; i < t.p.size(); ++i) {
+        for (std::size_t j = std::max(i + 1, first); j < t.p.size(); ++j) {
+            const double dx = t.p[i].x - t.p[j].x, dy = t.p[i].y - t.p[j].y;
+            ck_assert_msg(dx * dx + dy * dy >= t.r[i] * t.r[i] * (1.0 - 1e-12), "point %zu inside point %zu's disk",
+                          j, i);
+        }
+    }
+    for (int a = 0; a <= probes; ++a) {
+        for (int b = 0; b <= probes; ++b) {
+            const double x = a / double(probes), y = b / double(probes);
+            bool in = false;
+            for (std::size_t i = 0; i < t.p.size() && !in; ++i) {
+                const double dx = t.p[i].x - x, dy = t.p[i].y - y;
+                in = dx * dx + dy * dy <= t.r[i] * t.r[i] * (1.0 + 1e-12);
+            }
+            ck_assert_msg(in, "the probe (%g, %g) is in no disk", x, y);
+        }
+    }
+}
+
+void check_rule_and_maximality(const Pattern& t, int probes) { check_rule_and_maximality_from(t, 0, probes); }
+
+}  // namespace
+
+START_TEST(reference_is_maximal) {
+    FieldDartThrowing reference(pds::Box{0, 0, 1, 1}, step, 0.04, 0.1);
+    for (int seed = 1; seed <= 3; ++seed) {
+        Pattern t;
+        t.p = reference.run(static_cast<std::uint64_t>(seed), &t.r);
+        check_rule_and_maximality(t, 200);
+    }
+}
+END_TEST
+
+START_TEST(law_of_a_gradient_field) {
+    compare_field_laws(gradient, 0.05, 0.1, test_light() ? 300 : 2000);
+}
+END_TEST
+
+START_TEST(law_of_a_step_field) {
+    compare_field_laws(step, 0.04, 0.1, test_light() ? 300 : 2000);
+}
+END_TEST
+
+START_TEST(rule_and_maximality_by_brute_force) {
+    for (int seed = 1; seed <= 4; ++seed) {
+        pds::Sampler s(1.0, static_cast<std::uint64_t>(seed));
+        s.set_field(pds::RadiusField::function(seed % 2 ? step : gradient, nullptr, seed % 2 ? 0.04 : 0.05, 0.1));
+        const Pattern t = run_to_the_end(s);
+        ck_assert(s.verify().valid && s.verify().maximal);
+        check_rule_and_maximality(t, 300);
+        // Each radius is the field's value at its point.
+        for (std::size_t i = 0; i < t.p.size(); ++i)
+            ck_assert_double_eq(t.r[i], (seed % 2 ? step : gradient)(nullptr, t.p[i].x, t.p[i].y));
+        // A refine scales every radius, old points' too, and the pattern
+        // goes on to a maximal one under the scaled field.
+        s.refine(0.7 * 0.1);
+        ck_assert_double_eq(s.radius(), 0.7 * 0.1);
+        const Pattern u = run_to_the_end(s);
+        ck_assert_uint_gt(u.p.size(), t.p.size());
+        for (std::size_t i = 0; i < u.p.size(); ++i) {
+            const double v = (seed % 2 ? step : gradient)(nullptr, u.p[i].x, u.p[i].y);
+            ck_assert(std::fabs(u.r[i] - 0.7 * v) <= 1e-15);
+        }
+        ck_assert(s.verify().valid && s.verify().maximal);
+        // Later points keep out of the scaled disks; old points may sit
+        // closer than their new radii to each other, so check the probes.
+        Pattern later = u;
+        check_rule_and_maximality_from(later, t.p.size(), 300);
+    }
+}
+END_TEST
+
+START_TEST(density_follows_a_linear_field) {
+    // r = r0 (1 + 3x): in a strip, RSA's saturation coverage 0.547 gives
+    // about 0.547 * 4 / pi * integral of 1 / r^2 points. Strips away from
+    // the left and right sides (their edge excess), the top and bottom
+    // sides' excess (0.23 per R of side) taken out.
+    const double r0 = test_light() ? 0.004 : 0.0015;
+    pds::Sampler s(1.0, 5);
+    s.set_field(pds::RadiusField::function(
+        [](void* u, double x, double) { return *static_cast<double*>(u) * (1.0 + 3.0 * x); },
+        const_cast<double*>(&r0), r0, 4 * r0));
+    const Pattern t = run_to_the_end(s);
+    const int strips = 10;
+    std::vector<double> count(strips, 0.0);
+    for (const pds::Point& p : t.p) count[std::min(strips - 1, static_cast<int>(p.x * strips))] += 1;
+    for (int k = 1; k < strips - 1; ++k) {
+        const double a = double(k) / strips, b = double(k + 1) / strips;
+        // integral of 1 / (r0 (1 + 3x))^2 over [a, b]
+        const double inv = (1.0 / (1.0 + 3.0 * a) - 1.0 / (1.0 + 3.0 * b)) / (3.0 * r0 * r0);
+        // the edge excess along the top and bottom sides, 0.23 per radius
+        const double rmid = r0 * (1.0 + 3.0 * (a + b) / 2);
+        const double expected = 0.547 * 4.0 / M_PI * inv + 2.0 * 0.23 * (b - a) / rmid;
+        ck_assert_msg(std::fabs(count[k] / expected - 1.0) < 0.05, "strip %d: %g points, expected %g", k,
+                      count[k], expected);
+    }
+}
+END_TEST
+
+START_TEST(equal_radii_through_the_weighted_path_are_the_plain_points) {
+    // A function field whose values are all R, with bounds wider than R, so
+    // the sampler takes the variable-radius path: regular triangulation,
+    // power cells, per-point radii. Every decision must be the plain one.
+    for (int seed = 1; seed <= 3; ++seed) {
+        const double r = 0.01 + 0.003 * seed;
+        pds::Sampler plain(r, static_cast<std::uint64_t>(seed));
+        plain.skip_dart_stage();
+        pds::Sampler field(1.0, static_cast<std::uint64_t>(seed));
+        field.set_field(pds::RadiusField::function([](void* u, double, double) { return *static_cast<double*>(u); },
+                                                   const_cast<double*>(&r), r / 4, r));
+        // In batches: one point at a time, then 100, then to the end. (A
+        // refine rebuilds the weighted mesh, whose walks may then reach a new
+        // point's triangle by another edge: the same mesh, other edge
+        // records, other draws; a constant field runs the plain stages, so
+        // users never see that.)
+        bool maximal = false;
+        for (int i = 0; i < 50; ++i) {
+            plain.run(1, &maximal);
+            field.run(1, &maximal);
+        }
+        plain.run(100, &maximal);
+        field.run(100, &maximal);
+        plain.run(0, &maximal);
+        field.run(0, &maximal);
+        ck_assert_uint_eq(plain.count(), field.count());
+        std::vector<double> a(2 * plain.count()), b(2 * field.count()), rb(field.count());
+        plain.copy_points(0, plain.count(), a.data());
+        field.copy_points(0, field.count(), b.data());
+        ck_assert(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+        field.copy_radii(0, field.count(), rb.data());
+        for (double x : rb) ck_assert_double_eq(x, r);
+        ck_assert(field.verify().valid && field.verify().maximal);
+    }
+}
+END_TEST
+
+Suite* field_suite() {
+    Suite* s = suite_create("field");
+    TCase* t = tcase_create("variable radius");
+    tcase_set_timeout(t, 900);
+    tcase_add_test(t, reference_is_maximal);
+    tcase_add_test(t, law_of_a_gradient_field);
+    tcase_add_test(t, law_of_a_step_field);
+    tcase_add_test(t, rule_and_maximality_by_brute_force);
+    tcase_add_test(t, density_follows_a_linear_field);
+    tcase_add_test(t, equal_radii_through_the_weighted_path_are_the_plain_points);
+    suite_add_tcase(s, t);
+    return s;
+}
