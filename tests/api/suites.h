@@ -15,6 +15,7 @@
  *   count_suite        pds_set_count: exactly n points, spacing, splits    (count.c)
  *   progress_suite     pds_set_progress: reports, cancel and resume        (progress.c)
  *   periodic_suite     pds_set_periodic: the torus, spacing, law, state    (periodic.c)
+ *   field_suite        a variable radius: rule, maximality, map, splits    (field.c)
  */
 #ifndef PDS_TESTS_API_SUITES_H
 #define PDS_TESTS_API_SUITES_H
@@ -34,5 +35,6 @@ Suite *limits_suite(void);
 Suite *count_suite(void);
 Suite *progress_suite(void);
 Suite *periodic_suite(void);
+Suite *field_suite(void);
 
 #endif /* PDS_TESTS_API_SUITES_H */
