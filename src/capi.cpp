@@ -127,8 +127,6 @@ int refuse_field(pds_sampler* s, const char* what) {
     if (s->core->count() != 0)
         return fail(s, PDS_ESTATE, "%s: points exist already (%zu); set the field before the first point",
                     what, s->core->count());
-    if (s->core->frame().periodic())
-        return fail(s, PDS_EINVAL, "%s: a radius field is not supported on a periodic domain", what);
     if (s->core->count_target() != 0)
         return fail(s, PDS_EINVAL, "%s: a radius field is not supported with a count (pds_set_count)", what);
     return 0;
@@ -179,8 +177,6 @@ PDS_API int pds_set_periodic(pds_sampler* s, int periodic) PDS_NOEXCEPT {
     if (s->core->count() != 0)
         return fail(s, PDS_ESTATE, "pds_set_periodic: points exist already (%zu); choose the "
                     "domain's kind before the first point", s->core->count());
-    if (periodic != 0 && s->core->has_field())
-        return fail(s, PDS_EINVAL, "pds_set_periodic: a radius field is not supported on a periodic domain");
     return guarded(s, "pds_set_periodic", [&] {
         s->core->set_periodic(periodic != 0);
         return 0;

@@ -13,14 +13,13 @@
 namespace pds {
 
 JonesStage::JonesStage(const Box& box, double r, const Torus& torus, const PointRadii* radii)
-    : box_(box), r_(r), dt_(torus.on() ? TorusCopies(torus, r).largest_region() : box, radii != nullptr,
-                            radii ? radii->rmax() : 0.0) {
-    if (radii) {
-        if (torus.on()) throw std::logic_error("a variable radius on the torus");
-        radii_ = *radii;
-    }
+    : box_(box),
+      r_(r),
+      dt_(torus.on() ? TorusCopies(torus, r, radii != nullptr).largest_region() : box, radii != nullptr,
+          radii ? radii->rmax() : 0.0) {
+    if (radii) radii_ = *radii;
     if (torus.on()) {
-        copies_ = TorusCopies(torus, r);
+        copies_ = TorusCopies(torus, r, radii != nullptr);
         is_copy_.assign(Delaunay::kGhosts, 0);
         original_.assign(Delaunay::kGhosts, 0);
         copy_hint_.assign(copies_.max_offsets(), 0);
@@ -122,7 +121,9 @@ void JonesStage::set_radius(double r, const PointRadii* radii) {
     drop_queue();
     has_first_ = false;
     r_ = r;
-    measure_all_cells();
+    // On the torus the new radii may need a wider margin (their conflict disks
+    // are not the old ones).
+    if (!measure_all_cells() && radii_) widen_margin();
 }
 
 void JonesStage::rebuild_mesh() {
@@ -131,8 +132,8 @@ void JonesStage::rebuild_mesh() {
     // the mesh comes out record for record as before (the scaling changes no
     // decision). Each walk starts at an older neighbour in the old mesh,
     // which is close. Built aside: a failure changes nothing.
-    Delaunay fresh(box_, true, radii_->rmax());
-    fresh.reserve(std::max(order_.capacity(), count()) + Delaunay::kGhosts);
+    Delaunay fresh(copies_.on() ? copies_.largest_region() : box_, true, radii_->rmax());
+    fresh.reserve(std::max<std::size_t>(dt_.vertex_count(), vertices_for(order_.capacity()) + Delaunay::kGhosts));
     std::vector<double> value_of_vertex(dt_.vertex_count(), 0.0);
     for (std::size_t k = 0; k < count(); ++k) value_of_vertex[order_.vertex(k)] = values_[k];
     for (VertexIndex v = Delaunay::kGhosts; v < dt_.vertex_count(); ++v) {
@@ -141,7 +142,9 @@ void JonesStage::rebuild_mesh() {
             dt_.for_each_neighbour(v, [&](VertexIndex n) {
                 if (n < v && !Delaunay::is_ghost(n)) near = n;
             });
-        fresh.insert(dt_.point(v), radii_->radius_of(value_of_vertex[v]), near);
+        // A copy has its original's radius.
+        const VertexIndex o = copies_.on() ? original_[v] : v;
+        fresh.insert(dt_.point(v), radii_->radius_of(value_of_vertex[o]), near);
     }
     dt_ = std::move(fresh);
 }
@@ -258,7 +261,7 @@ bool JonesStage::still_free(const Point& p) const {
                 for (int j = j0; j <= j1; ++j) {
                     const Point c = t.shifted(q, i, j);
                     if (std::fabs(p.x - c.x) > reach || std::fabs(p.y - c.y) > reach) continue;
-                    if (compare_distance(p, c, r_) < 0) return false;
+                    if (compare_distance(p, c, radii_ ? dt_.radius(v) : r_) < 0) return false;
                 }
             }
         }
@@ -415,7 +418,7 @@ bool JonesStage::site_in_own_cell(VertexIndex v) const {
 }
 
 void JonesStage::insert_point(const Point& p, VertexIndex near, double value) {
-    if (radii_) {
+    if (radii_ && !copies_.on()) {
         // Room was reserved (values_ too): nothing here allocates.
         const VertexIndex v = dt_.insert(p, radii_->radius_of(value), near);
         values_.push_back(value);
@@ -428,13 +431,15 @@ void JonesStage::insert_point(const Point& p, VertexIndex near, double value) {
         make_room_for_copies(copies_.max_copies());  // may throw; nothing changed yet
         const VertexIndex from = static_cast<VertexIndex>(dt_.vertex_count());
         const Point w = copies_.torus().wrap(p);
-        const VertexIndex v = insert_with_copies(w, walk_start(p, w, near));
+        const VertexIndex v = insert_with_copies(w, walk_start(p, w, near), radii_ ? radii_->radius_of(value) : 0.0);
+        if (radii_) values_.push_back(value);
         order_.push(v);
         since_batch_.push_back(v);
         draw_failures_ = 0;
         const CellMeasure m = cells().measure(v);
         if (cell_valid(v, m) && new_rings_valid(from + 1)) tree_.set(site_of(v), m.area);
         else widen_margin();  // if it fails, the next call finishes it (settle)
+        if (radii_) maybe_narrow_margin();
         return;
     }
     const VertexIndex v = dt_.insert(p, near);
@@ -473,7 +478,7 @@ VerifyReport JonesStage::verify() const {
     if (radii_) {
         std::vector<std::size_t> rank(dt_.vertex_count(), 0);
         for (std::size_t k = 0; k < count(); ++k) rank[order_.vertex(k)] = k;
-        rep = verify_pattern(dt_, box_, r_, &rank);
+        rep = copies_.on() ? verify_torus(dt_, copies_, is_copy_, r_, &rank) : verify_pattern(dt_, box_, r_, &rank);
     } else {
         rep = copies_.on() ? verify_torus(dt_, copies_, is_copy_, r_) : verify_pattern(dt_, box_, r_);
     }

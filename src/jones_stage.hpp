@@ -152,7 +152,11 @@ private:
     bool acceptable(const Point& p, VertexIndex vertex) const;
     // The field's value at a point about to be added (0 without a field);
     // may throw FieldError, before anything changes.
-    double value_at(const Point& p) const { return radii_ ? radii_->value_at(p) : 0.0; }
+    // On the torus, at the point moved into the fundamental domain.
+    double value_at(const Point& p) const {
+        if (!radii_) return 0.0;
+        return radii_->value_at(copies_.on() ? copies_.torus().wrap(p) : p);
+    }
     void insert_point(const Point& p, VertexIndex near, double value);
     // A variable radius: whether v's site lies in its own power cell (else
     // its fan's pieces reach outside the cell, see free_area.hpp).
@@ -161,11 +165,14 @@ private:
     void rebuild_mesh();
     // The torus: room for one more point and all its copies (may allocate).
     void make_room_for_copies(std::size_t copies);
-    // Inserts p (real, wrapped) and its copies; returns p's vertex.
-    VertexIndex insert_with_copies(const Point& p, VertexIndex near);
-    // Inserts p with its bookkeeping: a copy of real vertex *copy_of, or a
-    // real point when there is none. Its tree leaf is 0 until measured.
-    VertexIndex insert_vertex(const Point& p, VertexIndex near, std::optional<VertexIndex> copy_of = std::nullopt);
+    // Inserts p (real, wrapped; radius: its radius with a variable one) and
+    // its copies; returns p's vertex.
+    VertexIndex insert_with_copies(const Point& p, VertexIndex near, double radius);
+    // Inserts p with its bookkeeping: a copy of real vertex *copy_of (with
+    // its radius), or a real point of radius `radius` when there is none. Its
+    // tree leaf is 0 until measured.
+    VertexIndex insert_vertex(const Point& p, VertexIndex near, std::optional<VertexIndex> copy_of = std::nullopt,
+                              double radius = 0.0);
     // A real point's vertex (not a ghost, not a copy); the torus only.
     bool is_real(VertexIndex v) const { return !Delaunay::is_ghost(v) && original_[v] == v; }
     // Calls f(o) for each neighbour of v that is a copy of real vertex o
@@ -185,6 +192,14 @@ private:
     // Widens the margin until every real ring is valid, inserting the copies
     // it brings, and measures every cell again.
     void widen_margin();
+    // A variable radius on the torus runs the Jones loop from the first
+    // point, whose sparse start widens the margin to the whole domain: each
+    // time the count doubles, if the cells now need under half the margin,
+    // the mesh is rebuilt with the copies of a narrower one (drawn candidates
+    // are dropped, as at a refine: a decision that depends on the count
+    // only, so the law and the splits' bytes are kept).
+    void maybe_narrow_margin();
+    void rebuild_with_margin(double margin);
     Point first_point(Rng& rng) const;
     // Mesh vertices (ghosts aside) that `points` points need, copies included.
     std::size_t vertices_for(std::size_t points) const;
@@ -209,6 +224,7 @@ private:
     std::vector<VertexIndex> original_;       // per vertex: the real one it copies (itself if real)
     std::vector<VertexIndex> copy_hint_;      // per offset: the last copy inserted
     bool widen_pending_ = false;              // copies may be missing: widen_margin() first
+    std::size_t next_narrowing_ = 64;         // the count at which to look at the margin again
     std::optional<PointRadii> radii_;         // a variable radius
     std::vector<double> values_;              // a variable radius: per point, the field's value
 };

@@ -4,6 +4,7 @@
 // real cell is a true torus cell, and the test of one cell. The loop itself
 // is in jones_stage.cpp; these run only when the stage has copies.
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "jones_stage.hpp"
@@ -24,8 +25,10 @@ void JonesStage::make_room_for_copies(std::size_t copies) {
     order_.reserve(std::max(count() + 1, order_.capacity()));
 }
 
-VertexIndex JonesStage::insert_vertex(const Point& p, VertexIndex near, std::optional<VertexIndex> copy_of) {
-    const VertexIndex v = dt_.insert(p, near);
+VertexIndex JonesStage::insert_vertex(const Point& p, VertexIndex near, std::optional<VertexIndex> copy_of,
+                                      double radius) {
+    const VertexIndex v = !dt_.weighted() ? dt_.insert(p, near)
+                                          : dt_.insert(p, copy_of ? dt_.radius(*copy_of) : radius, near);
     is_copy_.push_back(copy_of ? 1 : 0);
     original_.push_back(copy_of ? *copy_of : v);
     tree_.push_back(0.0);
@@ -42,8 +45,8 @@ void JonesStage::for_each_neighbour_copy(VertexIndex v, double sx, double sy, co
     });
 }
 
-VertexIndex JonesStage::insert_with_copies(const Point& p, VertexIndex near) {
-    const VertexIndex v = insert_vertex(p, near);
+VertexIndex JonesStage::insert_with_copies(const Point& p, VertexIndex near, double radius) {
+    const VertexIndex v = insert_vertex(p, near, std::nullopt, radius);
     // The hint of each offset is the copy with that offset inserted last.
     copies_.for_each_copy(p, copies_.margin(), -1.0, [&](const Point& c, int i, int j) {
         VertexIndex& hint = copy_hint_[copies_.offset_slot(i, j)];
@@ -75,6 +78,7 @@ VertexIndex JonesStage::walk_start(const Point& p, const Point& w, VertexIndex n
     // p was drawn in near's cell; moved by whole periods to w, it is far
     // from near, but near's ring holds copies of points near w: start at the
     // original of the one shifted as p was.
+    if (dt_.weighted()) near = dt_.visible(near);  // hidden since p was drawn: no ring
     if (p.x == w.x && p.y == w.y) return near;
     VertexIndex start = near;
     for_each_neighbour_copy(near, p.x - w.x, p.y - w.y, [&](VertexIndex o) { start = o; });  // exact on the grid
@@ -112,12 +116,69 @@ void JonesStage::widen_margin() {
 bool JonesStage::cell_valid(VertexIndex v, const CellMeasure& m) const {
     // The cheap test first: every circumdisk around v has radius at most
     // m.reach and passes through v, so it lies within 2 reach of v; most
-    // cells are far enough inside E for that to settle it.
+    // cells are far enough inside E for that to settle it. (Weighted: the
+    // conflict disks, centred within reach of v, have radii at most
+    // sqrt(reach^2 + rmax^2).)
     const Box e = copies_.region();
     const Point& p = dt_.point(v);
-    const double need = 2.0 * m.reach * (1.0 + 0x1.0p-40) + 0x1.0p-40;
+    const double extent = copies_.weighted() ? m.reach + std::sqrt(m.reach * m.reach + copies_.rmax() * copies_.rmax())
+                                             : 2.0 * m.reach;
+    const double need = extent * (1.0 + 0x1.0p-40) + 0x1.0p-40;
     if (p.x - e.x0 > need && e.x1 - p.x > need && p.y - e.y0 > need && e.y1 - p.y > need) return true;
     return copies_.ring_valid(dt_, v, [this](VertexIndex u) { return is_real(u); });
+}
+
+void JonesStage::maybe_narrow_margin() {
+    if (count() < next_narrowing_) return;
+    next_narrowing_ = 2 * count();
+    double need = 0.0;
+    for (VertexIndex v = Delaunay::kGhosts; v < dt_.vertex_count() && std::isfinite(need); ++v)
+        if (is_real(v) && !dt_.is_hidden(v)) need = std::max(need, copies_.ring_overshoot(dt_, v));
+    const double margin = std::max(copies_.first_margin(), 2.0 * need);
+    if (std::isfinite(margin) && margin <= 0.5 * copies_.margin()) rebuild_with_margin(margin);
+}
+
+void JonesStage::rebuild_with_margin(double margin) {
+    // The vertices again in their order, without the copies beyond the new
+    // margin; each walk starts at an older kept neighbour. Built aside.
+    const Box e = copies_.region(margin);
+    const auto kept = [&](VertexIndex v) {
+        const Point& p = dt_.point(v);
+        return is_real(v) || (p.x >= e.x0 && p.x <= e.x1 && p.y >= e.y0 && p.y <= e.y1);
+    };
+    std::vector<VertexIndex> renumbered(dt_.vertex_count(), 0);
+    std::size_t vertices = Delaunay::kGhosts;
+    for (VertexIndex v = Delaunay::kGhosts; v < dt_.vertex_count(); ++v)
+        if (kept(v)) renumbered[v] = static_cast<VertexIndex>(vertices++);
+    Delaunay fresh(copies_.largest_region(), true, radii_->rmax());
+    fresh.reserve(std::max<std::size_t>(vertices, vertices_for(order_.capacity()) + Delaunay::kGhosts));
+    std::vector<std::uint8_t> is_copy(Delaunay::kGhosts, 0);
+    std::vector<VertexIndex> original(Delaunay::kGhosts, 0);
+    is_copy.reserve(vertices);
+    original.reserve(vertices);
+    for (VertexIndex v = Delaunay::kGhosts; v < dt_.vertex_count(); ++v) {
+        if (!kept(v)) continue;
+        VertexIndex near = 0;
+        if (!dt_.is_hidden(v))
+            dt_.for_each_neighbour(v, [&](VertexIndex n) {
+                if (n < v && !Delaunay::is_ghost(n) && kept(n)) near = renumbered[n];
+            });
+        fresh.insert(dt_.point(v), dt_.radius(v), near);
+        is_copy.push_back(is_copy_[v]);
+        original.push_back(renumbered[original_[v]]);
+    }
+    // Nothing below allocates beyond what is reserved.
+    const std::size_t n = count();
+    for (std::size_t k = 0; k < n; ++k) order_.set(k, renumbered[order_.vertex(k)]);
+    dt_ = std::move(fresh);
+    is_copy_ = std::move(is_copy);
+    original_ = std::move(original);
+    std::fill(copy_hint_.begin(), copy_hint_.end(), 0);
+    copies_.set_margin(margin);
+    tree_.resize(dt_.vertex_count() - Delaunay::kGhosts);
+    drop_queue();
+    has_first_ = false;
+    if (!measure_all_cells()) widen_margin();
 }
 
 void JonesStage::settle() {

@@ -33,7 +33,7 @@ Frame Sampler::smallest_frame() const {
 
 void Sampler::set_field(const RadiusField& field) {
     if (count() != 0) throw std::logic_error("set_field after the first point");
-    if (frame_.periodic() || count_target_ != 0) throw std::logic_error("set_field on a torus or in count mode");
+    if (count_target_ != 0) throw std::logic_error("set_field in count mode");
     forget_stages();
     field_ = field;
     frame_.set_radius(field.rmax());
@@ -84,8 +84,13 @@ void Sampler::skip_dart_stage() {
 void Sampler::prepare(std::size_t points) {
     if (points > Frame::max_points()) throw LimitError(Limit::too_many_points, frame_.user_radius());
     if (!started()) {
-        const Limit limit = smallest_frame().precision_limit();
-        if (limit != Limit::ok) throw LimitError(limit, frame_.user_radius());
+        // A field: precision at the smallest radius, the torus's period at
+        // the largest.
+        const Frame low = smallest_frame();
+        const Limit limit = low.precision_limit();
+        if (limit != Limit::ok) throw LimitError(limit, low.user_radius());
+        const Limit high = frame_.precision_limit();
+        if (high != Limit::ok) throw LimitError(high, frame_.user_radius());
         // Count mode lowers the radius as it goes: the lowest it can reach is
         // judged now, so a run never meets the limit half way.
         if (count_target_ != 0) {
@@ -204,6 +209,8 @@ void Sampler::refine(double radius) {
     if (field_) next_smallest.set_radius(scaled_radius(field_->rmin(), field_->rmax(), radius));
     const Limit limit = next_smallest.precision_limit();
     if (limit != Limit::ok) throw LimitError(limit, next_smallest.user_radius());
+    const Limit high = next.precision_limit();
+    if (high != Limit::ok) throw LimitError(high, radius);
     // The generator's state at a refine must not depend on whether the caller
     // already asked for room (sampler.hpp): draw the next point, then drop it.
     next_point();

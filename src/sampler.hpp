@@ -60,7 +60,7 @@ public:
     std::size_t count_target() const { return count_target_; }
     void set_progress(const ProgressHook& hook) { progress_ = hook; }
     // A variable radius (radius_field.hpp): the radius in force becomes the
-    // field's largest; requires count() == 0, a plain rectangle and no count.
+    // field's largest; requires count() == 0 and no count.
     void set_field(const RadiusField& field);
     bool has_field() const { return field_.has_value(); }
     const RadiusField* field() const { return field_ ? &*field_ : nullptr; }

@@ -16,6 +16,16 @@
 // fundamental domain. Early, sparse patterns get a wide margin; a dense one
 // (after the dart stage) keeps M near a few R, so copies cost a few percent.
 // Real cells are never clipped: on the torus the cells tile it exactly.
+//
+// A variable radius (a weighted mesh): the cells are power cells and a
+// triangle's disk is its conflict disk: centred at its power centre w, of
+// radius sqrt(pi + rmax^2) with pi the power of w (the same to its three
+// disks). A missing disk (q, r_q) with q outside that disk has power at w
+// above pi + rmax^2 - r_q^2 >= pi: it does not conflict. A real site's power
+// cell also lies in the rectangle of half-periods around it (its own copies
+// bound it, at equal weight), so pi <= D^2/4 and, with rmax <= D/2, the
+// disk stays within 1.21 D of the fundamental domain: the largest margin
+// is 1.25 D.
 #ifndef PDS_TORUS_COPIES_HPP
 #define PDS_TORUS_COPIES_HPP
 
@@ -33,12 +43,15 @@ namespace pds {
 class TorusCopies {
 public:
     TorusCopies() = default;
-    // t must be on; r is the radius (the first margin is a few R).
-    TorusCopies(const Torus& t, double r);
+    // t must be on; r is the radius (the first margin is a few R); weighted:
+    // a variable radius, r the largest.
+    TorusCopies(const Torus& t, double r, bool weighted = false);
 
     bool on() const { return torus_.on(); }
     const Torus& torus() const { return torus_; }
     double margin() const { return margin_; }
+    bool weighted() const { return weighted_; }
+    double rmax() const { return rmax_; }
     // E: the fundamental domain widened by the margin m.
     Box region(double m) const {
         return Box{torus_.x0 - m, torus_.y0 - m, torus_.x0 + torus_.px + m, torus_.y0 + torus_.py + m};
@@ -50,6 +63,12 @@ public:
     Box clip_box() const { return region(2.0 * max_margin_); }
     // The margin after the current one (the current one when it is the largest).
     double next_margin() const;
+    // The first margin (a few R): no margin is ever set below it.
+    double first_margin() const { return first_margin_; }
+    // How far beyond the fundamental domain the (conflict) disks of v's
+    // triangles reach, at most, rounding included; infinite with a ghost
+    // corner. A margin above it keeps v's cell a torus cell.
+    double ring_overshoot(const Delaunay& dt, VertexIndex v) const;
     void set_margin(double m) { margin_ = m; }
 
     // Calls f(copy) for every copy of the real point p inside region(m) but
@@ -87,8 +106,10 @@ public:
 
     // The invariant around vertex v: every triangle (v, a, b) of its ring
     // with a real corner (is_real(vertex)) has its circumdisk inside E.
+    // (A hidden disk has no triangles: nothing to check.)
     template <class IsReal>
     bool ring_valid(const Delaunay& dt, VertexIndex v, const IsReal& is_real) const {
+        if (dt.weighted() && dt.is_hidden(v)) return true;
         const Box e = region();
         const bool v_real = is_real(v);
         const Point& c = dt.point(v);
@@ -97,7 +118,9 @@ public:
         bool ok = true;
         const auto triangle = [&](VertexIndex a, VertexIndex b) {
             if (!ok || (!v_real && !is_real(a) && !is_real(b))) return;
-            ok = disk_inside(c, dt.point(a), dt.point(b), e);
+            ok = dt.weighted() ? conflict_disk_inside(c, dt.radius(v), dt.point(a), dt.radius(a), dt.point(b),
+                                                      dt.radius(b), e)
+                               : disk_inside(c, dt.point(a), dt.point(b), e);
         };
         dt.for_each_neighbour(v, [&](VertexIndex nb) {
             if (n++ == 0) first = nb;
@@ -116,10 +139,16 @@ private:
     // The circumdisk of the counterclockwise triangle (c, a, b) lies inside
     // e, certainly (false when unsure or when a corner is a ghost).
     static bool disk_inside(const Point& c, const Point& a, const Point& b, const Box& e);
+    // The same for the conflict disk of the disks (c, a, b) (weighted).
+    bool conflict_disk_inside(const Point& c, double rc, const Point& a, double ra, const Point& b, double rb,
+                              const Box& e) const;
 
     Torus torus_;
+    bool weighted_ = false;
     double margin_ = 0.0;
+    double first_margin_ = 0.0;
     double max_margin_ = 0.0;
+    double rmax_ = 0.0;          // weighted: the largest radius
     int max_i_ = 0, max_j_ = 0;  // the largest offsets for_each_copy can give
 };
 

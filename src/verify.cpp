@@ -228,6 +228,12 @@ bool voronoi_vertex_uncovered(const Point& a, const Point& b, const Point& c, co
     return u < 0 ? uncovered_vertex(a, r, b, r, c, r, box) : u == 1;
 }
 
+bool power_vertex_uncovered(const Point& a, double ra, const Point& b, double rb, const Point& c, double rc,
+                            const Box& box) {
+    const int u = uncovered_vertex_fast(a, ra, b, rb, c, rc, box);
+    return u < 0 ? uncovered_vertex(a, ra, b, rb, c, rc, box) : u == 1;
+}
+
 bool mesh_consistent(const Delaunay& dt, VerifyReport& rep) { return check_mesh(dt, rep); }
 
 void name_point(VerifyReport& rep, PointIndex k) {

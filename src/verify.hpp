@@ -43,6 +43,10 @@ VerifyReport verify_pattern(const Delaunay& dt, const Box& domain, double radius
 // Exact: the circumcentre of the counterclockwise triangle (a, b, c) lies in
 // the closed box and farther than r from the corners.
 bool voronoi_vertex_uncovered(const Point& a, const Point& b, const Point& c, const Box& box, double r);
+// The same for the power centre of the disks (a, ra), (b, rb), (c, rc): in
+// the box and of positive power (outside the three disks).
+bool power_vertex_uncovered(const Point& a, double ra, const Point& b, double rb, const Point& c, double rc,
+                            const Box& box);
 // The quad-edge mesh consistent and Delaunay (else rep.failure says why).
 bool mesh_consistent(const Delaunay& dt, VerifyReport& rep);
 // Appends " (point k)" to the failure: k in the user's order.

@@ -32,7 +32,7 @@ bool check_real_points(const Delaunay& dt, const Torus& t, const std::vector<Ver
 }
 
 bool check_distances(const Delaunay& dt, const Torus& t, const std::vector<VertexIndex>& real, double r,
-                     VerifyReport& rep) {
+                     const std::vector<std::size_t>* rank, VerifyReport& rep) {
     std::vector<Point> pts;
     pts.reserve(real.size());
     for (VertexIndex v : real) pts.push_back(dt.point(v));
@@ -41,10 +41,17 @@ bool check_distances(const Delaunay& dt, const Torus& t, const std::vector<Verte
         bool close = false;
         grid.for_each_near(pts[i], [&](std::uint32_t j, int sx, int sy) {
             if (close || (j == i && sx == 0 && sy == 0)) return;
+            if (rank) {
+                // A variable radius: only earlier points' disks, each its own size.
+                if ((*rank)[real[j]] < (*rank)[real[i]])
+                    close = compare_distance(pts[i], t.shifted(pts[j], sx, sy), dt.radius(real[j])) < 0;
+                return;
+            }
             close = compare_distance(pts[i], t.shifted(pts[j], sx, sy), r) < 0;
         });
         if (close) {
-            rep.failure = "two points are closer than the radius on the torus";
+            rep.failure = rank ? "a point lies inside an earlier point's disk on the torus"
+                               : "two points are closer than the radius on the torus";
             rep.vertex = real[i];
             return false;
         }
@@ -73,14 +80,14 @@ bool check_copies(const Delaunay& dt, const TorusCopies& copies, const std::vect
 }  // namespace
 
 VerifyReport verify_torus(const Delaunay& dt, const TorusCopies& copies, const std::vector<std::uint8_t>& is_copy,
-                          double radius) {
+                          double radius, const std::vector<std::size_t>* rank) {
     VerifyReport rep;
     const Torus& t = copies.torus();
     std::vector<VertexIndex> real;
     for (VertexIndex v = Delaunay::kGhosts; v < dt.vertex_count(); ++v)
         if (is_copy[v] == 0) real.push_back(v);
     const auto is_real = [&](VertexIndex v) { return !Delaunay::is_ghost(v) && is_copy[v] == 0; };
-    if (!check_real_points(dt, t, real, rep) || !check_distances(dt, t, real, radius, rep) ||
+    if (!check_real_points(dt, t, real, rep) || !check_distances(dt, t, real, radius, rank, rep) ||
         !check_copies(dt, copies, is_copy, real, rep) || !mesh_consistent(dt, rep)) {
         rep.valid = false;
         return rep;
@@ -97,12 +104,16 @@ VerifyReport verify_torus(const Delaunay& dt, const TorusCopies& copies, const s
     const Box everywhere = copies.clip_box();
     for (VertexIndex v : real) {
         if (!rep.maximal) break;
+        if (dt.weighted() && dt.is_hidden(v)) continue;  // no cell
         const Point& c = dt.point(v);
         VertexIndex first = 0, prev = 0;
         int n = 0;
         const auto triangle = [&](VertexIndex a, VertexIndex b) {
-            if (rep.maximal && voronoi_vertex_uncovered(c, dt.point(a), dt.point(b), everywhere, radius))
-                rep.maximal = false;
+            if (!rep.maximal) return;
+            const bool uncovered = dt.weighted() ? power_vertex_uncovered(c, dt.radius(v), dt.point(a), dt.radius(a),
+                                                                          dt.point(b), dt.radius(b), everywhere)
+                                                 : voronoi_vertex_uncovered(c, dt.point(a), dt.point(b), everywhere, radius);
+            if (uncovered) rep.maximal = false;
         };
         dt.for_each_neighbour(v, [&](VertexIndex nb) {
             if (n++ == 0) first = nb;
@@ -112,7 +123,9 @@ VerifyReport verify_torus(const Delaunay& dt, const TorusCopies& copies, const s
         if (n >= 2) triangle(prev, first);
     }
     if (!rep.maximal)
-        rep.failure = real.empty() ? "no points yet" : "a Voronoi vertex is farther than R from its site";
+        rep.failure = real.empty()      ? "no points yet"
+                      : dt.weighted() ? "a power-diagram vertex lies outside its disks"
+                                      : "a Voronoi vertex is farther than R from its site";
     return rep;
 }
 

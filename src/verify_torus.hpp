@@ -23,8 +23,12 @@
 namespace pds {
 
 // is_copy[v] != 0 marks the mesh's copies.
+// A variable radius (a weighted mesh): radius is the largest and rank[v] the
+// place of real vertex v in the order the points were added; each point must
+// lie outside every earlier point's disk (every copy of it), and maximality
+// is judged on the power diagram.
 VerifyReport verify_torus(const Delaunay& dt, const TorusCopies& copies, const std::vector<std::uint8_t>& is_copy,
-                          double radius);
+                          double radius, const std::vector<std::size_t>* rank = nullptr);
 
 }  // namespace pds
 

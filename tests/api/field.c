@@ -308,17 +308,13 @@ START_TEST(bad_fields_are_refused)
     ck_assert_double_eq(pds_radius(s), 0.05);
     ck_assert_int_eq(calls, 0);
     snapshot_free(&snap);
-    /* Not with a torus or a count, either order. */
-    ck_assert_int_eq(pds_set_periodic(s, 1), 0);
-    assert_failed(s, pds_set_radius_map(s, 2, 1, ok), PDS_EINVAL, "map on a torus");
-    assert_failed(s, pds_set_radius_fn(s, never_called, &calls, 0.1, 0.2), PDS_EINVAL, "fn on a torus");
-    ck_assert_int_eq(pds_set_periodic(s, 0), 0);
+    /* Not with a count, either order. */
     ck_assert_int_eq(pds_set_count(s, 100), 0);
     assert_failed(s, pds_set_radius_map(s, 2, 1, ok), PDS_EINVAL, "map with a count");
+    assert_failed(s, pds_set_radius_fn(s, never_called, &calls, 0.1, 0.2), PDS_EINVAL, "fn with a count");
     pds_destroy(s);
     s = sampler_new(0.05, 1);
     ck_assert_int_eq(pds_set_radius_map(s, 2, 1, ok), 0);
-    assert_failed(s, pds_set_periodic(s, 1), PDS_EINVAL, "torus after a map");
     assert_failed(s, pds_set_count(s, 100), PDS_EINVAL, "count after a map");
     /* After the first point: PDS_ESTATE. */
     ck_assert_int_eq(pds_step(s), PDS_MORE);
@@ -368,6 +364,79 @@ START_TEST(radii_without_a_field_and_bad_arguments)
 }
 END_TEST
 
+/* On the torus: distances wrap, so every check takes the nearest copy. */
+static double wrapped2(double dx, double dy, double px, double py)
+{
+    dx = fabs(dx);
+    dy = fabs(dy);
+    if (dx > px / 2) dx = px - dx;
+    if (dy > py / 2) dy = py - dy;
+    return dx * dx + dy * dy;
+}
+
+static double stripes(void *user, double x, double y)
+{
+    (void)user;
+    (void)y;
+    /* 1:3 in stripes across the seam at x = -1 == 2 (continuous across it). */
+    return 0.03 * (2.0 - cos(2.0 * 3.14159265358979323846 * (x + 1.0) / 3.0));
+}
+
+START_TEST(torus_field_rule_and_maximality)
+{
+    const test_domain d = {-1.0, 3.0, 2.0, 4.5};
+    const double px = 3.0, py = 1.5;
+    int seed;
+    for (seed = 1; seed <= 2; ++seed) {
+        pds_sampler *s = sampler_new_in(1.0, (uint64_t)seed, d);
+        struct span f = {0.03, -1.0, 3.0};
+        size_t n, i, j;
+        double *xy, *r;
+        int a, b;
+        ck_assert_int_eq(pds_set_periodic(s, 1), 0);
+        ck_assert_int_eq(pds_set_radius_fn(s, seed == 1 ? stripes : step_over, &f, 0.03, seed == 1 ? 0.09 : 0.075), 0);
+        run_to_end(s);
+        assert_maximal(s, "torus field");
+        xy = points_copy(s, &n);
+        r = radii_copy(s, n);
+        for (i = 0; i < n; ++i) {
+            ck_assert(xy[2 * i] >= d.x0 && xy[2 * i] < d.x1 && xy[2 * i + 1] >= d.y0 && xy[2 * i + 1] < d.y1);
+            for (j = i + 1; j < n; ++j)
+                ck_assert_msg(wrapped2(xy[2 * i] - xy[2 * j], xy[2 * i + 1] - xy[2 * j + 1], px, py) >=
+                                  r[i] * r[i] * (1 - 1e-12),
+                              "torus: point %zu inside point %zu's disk", j, i);
+        }
+        for (a = 0; a < 300; ++a)
+            for (b = 0; b < 150; ++b) {
+                const double x = d.x0 + px * a / 300, y = d.y0 + py * b / 150;
+                int in = 0;
+                for (i = 0; i < n && !in; ++i)
+                    in = wrapped2(xy[2 * i] - x, xy[2 * i + 1] - y, px, py) <= r[i] * r[i] * (1 + 1e-12);
+                ck_assert_msg(in, "torus: the probe (%g, %g) is in no disk", x, y);
+            }
+        /* A refine goes on to a maximal pattern at the scaled field. */
+        ck_assert_int_eq(pds_refine(s, 0.6 * pds_radius(s)), 0);
+        run_to_end(s);
+        assert_maximal(s, "torus field refined");
+        free(xy);
+        free(r);
+        pds_destroy(s);
+    }
+}
+END_TEST
+
+START_TEST(torus_field_limits)
+{
+    /* rmax above half the shorter period: PDS_ERANGE at the first point. */
+    double r0 = 0.2;
+    pds_sampler *s = sampler_new(1.0, 1);
+    ck_assert_int_eq(pds_set_periodic(s, 1), 0);
+    ck_assert_int_eq(pds_set_radius_fn(s, gradient, &r0, 0.2, 0.6), 0);
+    assert_run_rejected(s, 0, "rmax above half a period");
+    pds_destroy(s);
+}
+END_TEST
+
 Suite *field_suite(void)
 {
     Suite *s = suite_create("field");
@@ -381,5 +450,7 @@ Suite *field_suite(void)
     tcase_add_test(t, bad_fields_are_refused);
     tcase_add_test(t, smallest_radius_judged_at_the_first_point);
     tcase_add_test(t, radii_without_a_field_and_bad_arguments);
+    tcase_add_test(t, torus_field_rule_and_maximality);
+    tcase_add_test(t, torus_field_limits);
     return s;
 }

@@ -39,30 +39,37 @@ Pattern run_to_the_end(pds::Sampler& s) {
     return out;
 }
 
-// Near-contact pairs: a later point within 1.2 times an earlier one's radius.
-double close_pairs(const Pattern& t) {
+// Near-contact pairs: a later point within 1.2 times an earlier one's
+// radius (the nearest copy on a unit torus).
+double close_pairs(const Pattern& t, bool periodic = false) {
+    const auto wrap = [periodic](double d) {
+        d = std::fabs(d);
+        return periodic && d > 0.5 ? 1.0 - d : d;
+    };
     double n = 0;
     for (std::size_t i = 0; i < t.p.size(); ++i)
         for (std::size_t j = i + 1; j < t.p.size(); ++j) {
-            const double dx = t.p[i].x - t.p[j].x, dy = t.p[i].y - t.p[j].y;
+            const double dx = wrap(t.p[i].x - t.p[j].x), dy = wrap(t.p[i].y - t.p[j].y);
             if (dx * dx + dy * dy < 1.44 * t.r[i] * t.r[i]) ++n;
         }
     return n;
 }
 
-void compare_field_laws(FieldDartThrowing::Field field, double rmin, double rmax, int runs) {
+// Over the unit square, or the unit torus.
+void compare_field_laws(FieldDartThrowing::Field field, double rmin, double rmax, int runs, bool periodic = false) {
     law::Sample sampler, darts;
-    FieldDartThrowing reference(pds::Box{0, 0, 1, 1}, field, rmin, rmax);
+    FieldDartThrowing reference(pds::Box{0, 0, 1, 1}, field, rmin, rmax, periodic);
     for (int seed = 1; seed <= runs; ++seed) {
         pds::Sampler s(1.0, static_cast<std::uint64_t>(seed));
+        s.set_periodic(periodic);
         s.set_field(pds::RadiusField::function(field, nullptr, rmin, rmax));
         const Pattern a = run_to_the_end(s);
         sampler.count.push_back(static_cast<double>(a.p.size()));
-        sampler.close_pairs.push_back(close_pairs(a));
+        sampler.close_pairs.push_back(close_pairs(a, periodic));
         Pattern b;
         b.p = reference.run(static_cast<std::uint64_t>(1000000 + seed), &b.r);
         darts.count.push_back(static_cast<double>(b.p.size()));
-        darts.close_pairs.push_back(close_pairs(b));
+        darts.close_pairs.push_back(close_pairs(b, periodic));
     }
     law::assert_same_law(sampler, darts);
 }
@@ -112,6 +119,12 @@ END_TEST
 
 START_TEST(law_of_a_step_field) {
     compare_field_laws(step, 0.04, 0.1, test_light() ? 300 : 2000);
+}
+END_TEST
+
+START_TEST(law_of_a_step_field_on_the_torus) {
+    // The step wraps too: x = 0 == 1 is a second step.
+    compare_field_laws(step, 0.04, 0.1, test_light() ? 300 : 2000, true);
 }
 END_TEST
 
@@ -215,6 +228,7 @@ Suite* field_suite() {
     tcase_add_test(t, reference_is_maximal);
     tcase_add_test(t, law_of_a_gradient_field);
     tcase_add_test(t, law_of_a_step_field);
+    tcase_add_test(t, law_of_a_step_field_on_the_torus);
     tcase_add_test(t, rule_and_maximality_by_brute_force);
     tcase_add_test(t, density_follows_a_linear_field);
     tcase_add_test(t, equal_radii_through_the_weighted_path_are_the_plain_points);
