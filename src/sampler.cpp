@@ -20,8 +20,9 @@ bool Sampler::use_darts() const {
 double Sampler::expected_count() const {
     // A field's: as for the radius whose 1/R^2 is the mean of 1/r^2 over the domain.
     if (!varying_field()) return frame_.expected_count(frame_.user_radius());
-    return frame_.expected_count(frame_.user_radius() / field_->rmax() /
-                                 std::sqrt(field_->mean_inverse_square(frame_.user_domain())));
+    // The field's mean of 1/r^2 is measured once per field and domain.
+    if (!mean_inverse_square_) mean_inverse_square_ = field_->mean_inverse_square(frame_.user_domain());
+    return frame_.expected_count(frame_.user_radius() / field_->rmax() / std::sqrt(*mean_inverse_square_));
 }
 
 Frame Sampler::smallest_frame() const {
@@ -36,6 +37,7 @@ void Sampler::set_field(const RadiusField& field) {
     if (count_target_ != 0) throw std::logic_error("set_field in count mode");
     forget_stages();
     field_ = field;
+    mean_inverse_square_.reset();
     frame_.set_radius(field.rmax());
 }
 
@@ -49,6 +51,7 @@ void Sampler::set_domain(const Box& domain) {
     if (count() != 0) throw std::logic_error("set_domain after the first point");
     forget_stages();
     frame_.set_domain(domain);
+    mean_inverse_square_.reset();
     if (count_target_ != 0) set_count(count_target_);
 }
 
@@ -177,8 +180,10 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
     prepare(target);
     // A field's expected count: as for the radius whose 1/R^2 is the mean of
     // 1/r^2 over the domain.
-    ProgressMeter meter(progress_, count_target_ != 0 ? static_cast<double>(count_target_) : expected_count(),
-                        count_target_ != 0);
+    // The estimate is needed only for reports (a field's asks the field).
+    const double expected =
+        progress_.fn == nullptr ? 1.0 : count_target_ != 0 ? static_cast<double>(count_target_) : expected_count();
+    ProgressMeter meter(progress_, expected, count_target_ != 0);
     while (max_new == 0 || *added < max_new) {
         if (!add_one()) {
             // The final report; a stop asked for here changes nothing.

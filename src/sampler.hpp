@@ -133,6 +133,7 @@ private:
     std::size_t count_target_ = 0;
     ProgressHook progress_;
     std::optional<RadiusField> field_;
+    mutable std::optional<double> mean_inverse_square_;  // of the field over the domain, once asked
     std::unique_ptr<DartStage> darts_;   // while the dart stage runs
     std::unique_ptr<JonesStage> jones_;  // from the first point on
 };
