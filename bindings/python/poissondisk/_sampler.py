@@ -89,7 +89,7 @@ def _map_buffer(radius_map: Any) -> Tuple[int, int, Any]:
     empty map keeps its shape, for the library to refuse with its message)."""
     if _np is not None:
         try:
-            arr = _np.ascontiguousarray(radius_map, dtype=_np.float64)
+            arr = _np.asarray(radius_map, dtype=_np.float64)
         except (TypeError, ValueError) as exc:
             raise type(exc)("radius_map must be a 2-D array-like of numbers, shape (h, w): %s"
                             % exc) from None
@@ -104,7 +104,7 @@ def _map_buffer(radius_map: Any) -> Tuple[int, int, Any]:
         h, w = arr.shape
         if arr.size == 0:
             arr = _np.zeros(1)  # a valid pointer; w or h 0 is the library's to refuse
-        return w, h, arr
+        return w, h, _np.ascontiguousarray(arr)  # row-major, copied only if need be
     try:
         outer = list(radius_map)
     except TypeError:
@@ -129,9 +129,9 @@ def _map_buffer(radius_map: Any) -> Tuple[int, int, Any]:
         for v in row:
             try:
                 buf[k] = float(v)
-            except (TypeError, ValueError) as exc:
-                raise type(exc)("radius_map must hold numbers, got %r at row %d, column %d"
-                                % (v, k // w, k % w)) from None
+            except (TypeError, ValueError):
+                raise ValueError("radius_map must hold numbers, got %r at row %d, column %d"
+                                 % (v, k // w, k % w)) from None
             k += 1
     return w, h, buf
 
@@ -319,6 +319,8 @@ class Sampler:
             try:
                 value = call(x, y)
                 try:
+                    if isinstance(value, (str, bytes, bytearray)):
+                        raise TypeError(value)
                     return float(value)
                 except (TypeError, ValueError):
                     raise TypeError("radius_fn(%r, %r) must return a number, got %r"
