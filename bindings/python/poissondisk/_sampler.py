@@ -191,8 +191,8 @@ class Sampler:
     """
 
     _handle: Optional[ctypes.c_void_p] = None  # close()/__del__ work if __init__ failed
-    # (the C callback, [exceptions raised in the callbacks], self._errors) while
-    # a progress function is set: the library holds a pointer into the first,
+    # (the C callback, self._errors: what the callbacks raised) while a
+    # progress function is set: the library holds a pointer into the first,
     # so it must stay alive.
     _progress: Optional[Tuple[Any, List[BaseException]]] = None
     # The C callback of a radius function, kept alive as the library holds it.
