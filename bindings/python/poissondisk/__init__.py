@@ -17,32 +17,35 @@ names another one, e.g. an uninstalled build.
 
 from __future__ import annotations
 
-from typing import Optional, Sequence
+from typing import Any, Optional, Sequence
 
 from ._capi import (DONE, ECANCELED, EINTERNAL, EINVAL, ENOMEM, ERANGE, ESTATE, MORE,
                     library_path, strerror, version, version_number)
 from ._errors import (CanceledError, InternalError, InvalidArgumentError, OutOfMemoryError,
                       PoissonDiskError, RangeError, StateError)
-from ._sampler import UNIT_SQUARE, Points, ProgressFn, Sampler, random_seed
+from ._sampler import UNIT_SQUARE, Points, ProgressFn, Radii, RadiusFn, Sampler, random_seed
 
-__version__ = "1.2.1"  # of this package; version() is the loaded library's
+__version__ = "1.3.0"  # of this package; version() is the loaded library's
 
 
 def sample(radius: Optional[float], *, bounds: Sequence[Sequence[float]] = UNIT_SQUARE,
            seed: Optional[int] = None, periodic: bool = False,
-           count: Optional[int] = None) -> Points:
+           count: Optional[int] = None, radius_map: Any = None,
+           radius_fn: Optional[RadiusFn] = None, rmin: Optional[float] = None,
+           rmax: Optional[float] = None) -> Points:
     """A maximal pattern in one call: Sampler(...) run to the end, its points.
 
     Same arguments as Sampler; returns a float64 array of shape (N, 2) (a
     list of (x, y) tuples without numpy).
     """
-    with Sampler(radius, bounds=bounds, seed=seed, periodic=periodic, count=count) as s:
+    with Sampler(radius, bounds=bounds, seed=seed, periodic=periodic, count=count,
+                 radius_map=radius_map, radius_fn=radius_fn, rmin=rmin, rmax=rmax) as s:
         s.run()
         return s.points
 
 
 __all__ = [
-    "Sampler", "sample", "random_seed", "Points", "ProgressFn", "version", "version_number", "strerror",
+    "Sampler", "sample", "random_seed", "Points", "ProgressFn", "Radii", "RadiusFn", "version", "version_number", "strerror",
     "library_path", "PoissonDiskError", "InvalidArgumentError", "OutOfMemoryError",
     "StateError", "RangeError", "InternalError", "CanceledError",
     "EINVAL", "ENOMEM", "ESTATE", "ERANGE", "EINTERNAL", "ECANCELED", "DONE", "MORE",

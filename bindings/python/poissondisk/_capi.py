@@ -44,11 +44,15 @@ ENV_VARS = ("POISSONDISK_LIBRARY", "PDS_LIBRARY")
 # typedef int (*pds_progress_fn)(void *user, size_t count, double done); (1.2)
 PROGRESS_FN = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_size_t,
                                ctypes.c_double)
+# typedef double (*pds_radius_fn)(void *user, double x, double y); (1.3)
+RADIUS_FN = ctypes.CFUNCTYPE(ctypes.c_double, ctypes.c_void_p, ctypes.c_double,
+                             ctypes.c_double)
 DOUBLE_P = ctypes.POINTER(ctypes.c_double)
 
 # Functions of later minor versions: a library without them still loads, and
 # what needs them raises NotImplementedError when called.
-OPTIONAL = {"pds_set_periodic": "1.2", "pds_set_count": "1.2", "pds_set_progress": "1.2"}
+OPTIONAL = {"pds_set_periodic": "1.2", "pds_set_count": "1.2", "pds_set_progress": "1.2",
+            "pds_set_radius_map": "1.3", "pds_set_radius_fn": "1.3", "pds_radii": "1.3"}
 
 
 def _installed_libdirs() -> List[str]:
@@ -116,6 +120,9 @@ def _declare(lib: ctypes.CDLL) -> Set[str]:
         "pds_set_periodic": (i, [vp, i]),
         "pds_set_count": (i, [vp, sz]),
         "pds_set_progress": (i, [vp, PROGRESS_FN, vp]),
+        "pds_set_radius_map": (i, [vp, sz, sz, DOUBLE_P]),
+        "pds_set_radius_fn": (i, [vp, RADIUS_FN, vp, dbl, dbl]),
+        "pds_radii": (sz, [vp, sz, sz, DOUBLE_P]),
     }
     missing = set()
     for name, (restype, argtypes) in table.items():

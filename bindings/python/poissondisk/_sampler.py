@@ -3,15 +3,16 @@
 The points come back as a numpy float64 array of shape (N, 2) when numpy can
 be imported, filled by pds_points straight into the array's buffer (the C
 layout, interleaved x,y, is the array's), and as a list of (x, y) tuples
-otherwise.
+otherwise; the radii (pds_radii) likewise, shape (N,) or a list of floats.
 """
 
 from __future__ import annotations
 
 import ctypes
+import math
 import operator
 import os
-from typing import TYPE_CHECKING, Any, Callable, List, Optional, Sequence, Tuple, Union
+from typing import TYPE_CHECKING, Any, Callable, List, Optional, Sequence, Tuple, Union, cast
 
 from . import _capi
 from ._errors import error_for
@@ -27,7 +28,10 @@ except ImportError:  # the list fallback
 Bounds = Tuple[Tuple[float, float], Tuple[float, float]]
 # fn(count, done): count points exist, done in [0, 1]; a true result cancels.
 ProgressFn = Callable[[int, float], Any]
+# fn(x, y): the radius at user point (x, y), within [rmin, rmax].
+RadiusFn = Callable[[float, float], float]
 Points = Union["numpy.ndarray", List[Tuple[float, float]]]
+Radii = Union["numpy.ndarray", List[float]]
 
 UNIT_SQUARE: Bounds = ((0.0, 0.0), (1.0, 1.0))
 
@@ -54,6 +58,84 @@ def _check_bounds(bounds: Sequence[Sequence[float]]) -> Bounds:
     return (float(x0), float(y0)), (float(x1), float(y1))
 
 
+def _check_field(radius: Optional[float], radius_map: Any, radius_fn: Optional[RadiusFn],
+                 rmin: Optional[float], rmax: Optional[float]) -> Optional[str]:
+    """Which of radius_map / radius_fn defines the radius ("radius_map",
+    "radius_fn"), or None for a constant radius; TypeError for a combination
+    that does not say which."""
+    if radius_fn is None:
+        if rmin is not None or rmax is not None:
+            raise TypeError("rmin and rmax are the bounds of radius_fn; give them with it")
+        if radius_map is None:
+            return None
+        field = "radius_map"
+    else:
+        if radius_map is not None:
+            raise TypeError("give radius_map or radius_fn, not both")
+        if not callable(radius_fn):
+            raise TypeError("radius_fn must be a callable fn(x, y) -> radius, got %r"
+                            % (radius_fn,))
+        if rmin is None or rmax is None:
+            raise TypeError("radius_fn needs rmin and rmax, the bounds of its values")
+        field = "radius_fn"
+    if radius is not None:
+        raise TypeError("give radius=None with %s: the field defines the radius" % field)
+    return field
+
+
+def _map_buffer(radius_map: Any) -> Tuple[int, int, Any]:
+    """(w, h, buffer): an (h, w) radius map as w*h C doubles, row-major, row 0
+    first. The buffer is a numpy array or a ctypes array, never empty (an
+    empty map keeps its shape, for the library to refuse with its message)."""
+    if _np is not None:
+        try:
+            arr = _np.asarray(radius_map, dtype=_np.float64)
+        except (TypeError, ValueError) as exc:
+            raise type(exc)("radius_map must be a 2-D array-like of numbers, shape (h, w): %s"
+                            % exc) from None
+        if arr.ndim == 0:
+            raise TypeError("radius_map must be a 2-D array-like (a sequence of rows of "
+                            "numbers), got %r" % (type(radius_map).__name__,))
+        if arr.ndim == 1 and arr.size == 0:
+            arr = arr.reshape(0, 0)  # [] is a map with no rows, as without numpy
+        if arr.ndim != 2:
+            raise ValueError("radius_map must be 2-D, shape (h, w) (row 0 along y0), got %d-D "
+                             "shape %r" % (arr.ndim, arr.shape))
+        h, w = arr.shape
+        if arr.size == 0:
+            arr = _np.zeros(1)  # a valid pointer; w or h 0 is the library's to refuse
+        return w, h, _np.ascontiguousarray(arr)  # row-major, copied only if need be
+    try:
+        outer = list(radius_map)
+    except TypeError:
+        raise TypeError("radius_map must be a 2-D array-like (a sequence of rows of "
+                        "numbers), got %r" % (type(radius_map).__name__,)) from None
+    rows = []
+    for j, row in enumerate(outer):
+        try:
+            rows.append(list(row))
+        except TypeError:
+            raise ValueError("radius_map must be 2-D, shape (h, w) (row 0 along y0): row %d "
+                             "is %r, not a sequence of numbers" % (j, row)) from None
+    h = len(rows)
+    w = len(rows[0]) if rows else 0
+    for j, row in enumerate(rows):
+        if len(row) != w:
+            raise ValueError("radius_map rows must all have the same length: row 0 has %d "
+                             "values, row %d has %d" % (w, j, len(row)))
+    buf = (ctypes.c_double * max(w * h, 1))()
+    k = 0
+    for row in rows:
+        for v in row:
+            try:
+                buf[k] = float(v)
+            except (TypeError, ValueError):
+                raise ValueError("radius_map must hold numbers, got %r at row %d, column %d"
+                                 % (v, k // w, k % w)) from None
+            k += 1
+    return w, h, buf
+
+
 class Sampler:
     """Exact maximal Poisson-disk sampling in a rectangle or on a torus.
 
@@ -64,7 +146,8 @@ class Sampler:
 
     Args:
         radius: the minimum distance R, finite and > 0. May be None when
-            `count` is given (the library then chooses it).
+            `count` is given (the library then chooses it); must be None
+            when `radius_map` or `radius_fn` gives the radius.
         bounds: ((x0, y0), (x1, y1)), the closed rectangle [x0,x1]x[y0,y1].
         seed: an int in [0, 2**64); the same seed and library version give
             the same points. None draws one from os.urandom; read it back
@@ -78,6 +161,28 @@ class Sampler:
             that run() ends with exactly n points (then `radius` is the last
             radius used, and refine() is refused).
         progress: a callable fn(count, done), see set_progress().
+        radius_map: a variable radius (library 1.3): a 2-D array-like of
+            shape (h, w) of radii, each finite and > 0, spread over the
+            domain: row 0 along y0, column 0 along x0, bilinear between
+            pixel centres and constant beyond the outer ones. Copied.
+        radius_fn, rmin, rmax: a variable radius from a callable
+            fn(x, y) -> float, with the bounds of its values, both
+            required, finite, 0 < rmin <= rmax. It is called once per
+            point as it is placed, and by each run() 4096 times over a grid
+            for the progress estimate. A value outside [rmin, rmax] or not
+            finite stops run()/step() with InvalidArgumentError before the
+            point is added; an exception raised by fn stops it too and
+            comes out of run()/step(). Either way the points so far stay
+            and the sampler can go on. fn may read the sampler but not
+            change it.
+
+    With a field, point i gets the radius r_i = r(p_i) where it lands, and
+    each later point keeps out of its closed disk: |p_j - p_i| >= r_i for
+    i < j. `radius` is then the largest radius in force (rmax: the map's
+    largest value, or the declared bound), radii() gives each point's, and
+    refine(R) scales them all by R / radius. A field is not supported with
+    `periodic` or `count` (ValueError). A constant field gives exactly the
+    points of the plain sampler at that radius.
 
     Errors of the library raise subclasses of PoissonDiskError carrying its
     message; misuse on the Python side raises ValueError or TypeError.
@@ -86,18 +191,35 @@ class Sampler:
     """
 
     _handle: Optional[ctypes.c_void_p] = None  # close()/__del__ work if __init__ failed
-    # (the C callback, [exception raised in it]) while a progress function is
-    # set: the library holds a pointer into the first, so it must stay alive.
+    # (the C callback, self._errors: what the callbacks raised) while a
+    # progress function is set: the library holds a pointer into the first,
+    # so it must stay alive.
     _progress: Optional[Tuple[Any, List[BaseException]]] = None
+    # The C callback of a radius function, kept alive as the library holds it.
+    _radius_fn: Any = None
 
     def __init__(self, radius: Optional[float], *, bounds: Sequence[Sequence[float]] = UNIT_SQUARE,
                  seed: Optional[int] = None, periodic: bool = False,
-                 count: Optional[int] = None, progress: Optional[ProgressFn] = None) -> None:
+                 count: Optional[int] = None, progress: Optional[ProgressFn] = None,
+                 radius_map: Any = None, radius_fn: Optional[RadiusFn] = None,
+                 rmin: Optional[float] = None, rmax: Optional[float] = None) -> None:
+        # What the callbacks raised during the current run()/step(), first
+        # first. Shared by them; they hold the list, not self (no cycle).
+        self._errors: List[BaseException] = []
         self._seed = _check_seed(seed)
         self._bounds = _check_bounds(bounds)
-        if radius is None:
+        field = _check_field(radius, radius_map, radius_fn, rmin, rmax)
+        if field is not None:
+            if periodic:
+                raise ValueError("a variable radius (%s) is not supported with periodic=True"
+                                 % field)
+            if count is not None:
+                raise ValueError("a variable radius (%s) is not supported with count=" % field)
+            radius = 1.0  # replaced by the field's largest radius
+        elif radius is None:
             if count is None:
-                raise TypeError("Sampler() needs a radius unless count is given")
+                raise TypeError("Sampler() needs a radius unless count, radius_map or "
+                                "radius_fn is given")
             radius = 1.0  # ignored by the library in count mode
         handle = ctypes.c_void_p()
         rc = _capi.lib.pds_create(ctypes.byref(handle), float(radius), self._seed)
@@ -116,6 +238,10 @@ class Sampler:
                 if count < 0:
                     raise ValueError("count must be >= 1, got %d" % count)
                 self._check(_capi.need("pds_set_count")(handle, count), "pds_set_count")
+            if radius_map is not None:
+                self._set_radius_map(radius_map)
+            elif radius_fn is not None:
+                self._set_radius_fn(radius_fn, cast(float, rmin), cast(float, rmax))
             if progress is not None:
                 self.set_progress(progress)
         except BaseException:
@@ -131,7 +257,8 @@ class Sampler:
         handle, self._handle = self._handle, None
         if handle is not None:
             _destroy(handle)
-        self._progress = None  # the library no longer calls it
+        self._progress = None  # the library no longer calls them
+        self._radius_fn = None
 
     @property
     def closed(self) -> bool:
@@ -161,6 +288,52 @@ class Sampler:
             raise error_for(rc, msg)
         return rc
 
+    def _checked_call(self, rc: int, what: str) -> int:
+        """_check for a call that ran the callbacks: what one of them raised
+        comes first (it is what stopped the call, with its own traceback)."""
+        errors = self._errors
+        if errors:
+            exc = errors[0]
+            del errors[:]
+            raise exc
+        return self._check(rc, what)
+
+    def _set_radius_map(self, radius_map: Any) -> None:
+        w, h, buf = _map_buffer(radius_map)
+        if _np is not None and isinstance(buf, _np.ndarray):
+            ptr = buf.ctypes.data_as(_capi.DOUBLE_P)
+        else:
+            ptr = ctypes.cast(buf, _capi.DOUBLE_P)
+        # The library copies the map: buf may go once this returns.
+        self._check(_capi.need("pds_set_radius_map")(self._h(), w, h, ptr), "pds_set_radius_map")
+
+    def _set_radius_fn(self, fn: RadiusFn, rmin: float, rmax: float) -> None:
+        call = fn
+        errors = self._errors  # no reference to self: no cycle through C
+        nan = math.nan
+        rmin, rmax = float(rmin), float(rmax)  # the library judges them
+
+        def radius_at(user: Any, x: float, y: float) -> float:
+            if errors:
+                return nan  # fn raised: refuse every point until the call returns
+            try:
+                value = call(x, y)
+                try:
+                    if isinstance(value, (str, bytes, bytearray)):
+                        raise TypeError(value)
+                    return float(value)
+                except (TypeError, ValueError):
+                    raise TypeError("radius_fn(%r, %r) must return a number, got %r"
+                                    % (x, y, value)) from None
+            except BaseException as exc:  # never let it unwind through C
+                errors.append(exc)
+                return nan  # not finite: the library stops before the point
+
+        callback = _capi.RADIUS_FN(radius_at)
+        self._check(_capi.need("pds_set_radius_fn")(self._h(), callback, None, rmin, rmax),
+                    "pds_set_radius_fn")
+        self._radius_fn = callback  # only once the library holds it
+
     # -- building the pattern -----------------------------------------------------
 
     def run(self, max_new: Optional[int] = None) -> bool:
@@ -171,7 +344,9 @@ class Sampler:
         left. The same seed gives the same points however a run is split.
         Raises RangeError when the radius does not suit the domain (judged at
         the first point), CanceledError when the progress callback returned
-        a true value, and whatever the callback raised if it raised.
+        a true value, InvalidArgumentError when the radius function gave a
+        value outside [rmin, rmax], and whatever a callback (progress or
+        radius function) raised if it raised.
         """
         if max_new is None:
             limit = 0  # the C API's "no limit"
@@ -180,23 +355,23 @@ class Sampler:
             if limit < 1:
                 raise ValueError("max_new must be >= 1 or None (no limit), got %d" % limit)
         added = ctypes.c_size_t(0)
-        progress = self._progress
-        if progress is not None:
-            del progress[1][:]
-        rc = _capi.lib.pds_run(self._h(), limit, ctypes.byref(added))
-        if progress is not None and progress[1]:
-            exc = progress[1][0]
-            del progress[1][:]
-            raise exc  # what stopped the run, with its own traceback
-        return self._check(rc, "pds_run") == _capi.DONE
+        handle = self._h()
+        del self._errors[:]
+        rc = _capi.lib.pds_run(handle, limit, ctypes.byref(added))
+        return self._checked_call(rc, "pds_run") == _capi.DONE
 
     def step(self) -> bool:
-        """Add one point: True if one was added, False if the pattern is maximal."""
-        return self._check(_capi.lib.pds_step(self._h()), "pds_step") == _capi.MORE
+        """Add one point: True if one was added, False if the pattern is maximal.
+        With a radius function, raises as run() does when it refuses a point."""
+        handle = self._h()
+        del self._errors[:]
+        return self._checked_call(_capi.lib.pds_step(handle), "pds_step") == _capi.MORE
 
     def refine(self, radius: float) -> None:
         """Go on at a smaller radius (0 < radius <= self.radius), keeping every
-        point; run() then extends the pattern to maximal at the new radius."""
+        point; run() then extends the pattern to maximal at the new radius.
+        With a variable radius every radius, old points' too, is scaled by
+        radius / self.radius."""
         self._check(_capi.lib.pds_refine(self._h(), float(radius)), "pds_refine")
 
     def set_progress(self, fn: Optional[ProgressFn]) -> None:
@@ -222,7 +397,7 @@ class Sampler:
         if not callable(fn):
             raise TypeError("set_progress() needs a callable or None, got %r" % (fn,))
         call: ProgressFn = fn
-        errors: List[BaseException] = []  # no reference to self: no cycle through C
+        errors = self._errors  # no reference to self: no cycle through C
 
         def report(user: Any, count: int, done: float) -> int:
             try:
@@ -269,9 +444,35 @@ class Sampler:
         flat = buf[:2 * got]
         return list(zip(flat[0::2], flat[1::2]))
 
+    def radii(self, first: int = 0, count: Optional[int] = None) -> Radii:
+        """The radius in force of each point, in insertion order: a new float64
+        array of shape (N,) (a list of floats without numpy); first and count
+        select a slice as in get_points(). Without a variable radius each is
+        `radius`; with one, point i's radius r_i = r(p_i) (scaled by refine),
+        and every later point is at least r_i from it."""
+        handle = self._h()
+        copy = _capi.need("pds_radii")
+        total = int(_capi.lib.pds_count(handle))
+        first = operator.index(first)
+        if first < 0:
+            raise ValueError("first must be >= 0, got %d" % first)
+        avail = max(total - first, 0)
+        n = avail if count is None else max(min(operator.index(count), avail), 0)
+        if _np is not None:
+            out = _np.empty(n, dtype=_np.float64)
+            if n:
+                got = copy(handle, first, n, out.ctypes.data_as(_capi.DOUBLE_P))
+                if got != n:
+                    out = out[:got]
+            return out
+        buf = (ctypes.c_double * n)()
+        got = int(copy(handle, first, n, buf)) if n else 0
+        return buf[:got]
+
     @property
     def radius(self) -> float:
-        """The current radius R (in count mode, the last one the library used)."""
+        """The current radius R (in count mode, the last one the library used;
+        with a variable radius, the largest in force: rmax until refine())."""
         return float(_capi.lib.pds_radius(self._h()))
 
     @property
