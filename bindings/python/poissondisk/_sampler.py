@@ -168,8 +168,9 @@ class Sampler:
         radius_fn, rmin, rmax: a variable radius from a callable
             fn(x, y) -> float, with the bounds of its values, both
             required, finite, 0 < rmin <= rmax. It is called once per
-            point as it is placed, and by each run() 4096 times over a grid
-            for the progress estimate. A value outside [rmin, rmax] or not
+            point as it is placed and, with a progress callback, 4096 times
+            over a grid at the first run() for the progress estimate (not
+            at all when rmin == rmax). A value outside [rmin, rmax] or not
             finite stops run()/step() with InvalidArgumentError before the
             point is added; an exception raised by fn stops it too and
             comes out of run()/step(). Either way the points so far stay
@@ -180,8 +181,9 @@ class Sampler:
     each later point keeps out of its closed disk: |p_j - p_i| >= r_i for
     i < j. `radius` is then the largest radius in force (rmax: the map's
     largest value, or the declared bound), radii() gives each point's, and
-    refine(R) scales them all by R / radius. A field is not supported with
-    `periodic` or `count` (ValueError). A constant field gives exactly the
+    refine(R) scales them all by R / radius. A field works with `periodic`
+    (rmax at most half the shorter period) but not with `count`
+    (ValueError). A constant field gives exactly the
     points of the plain sampler at that radius.
 
     Errors of the library raise subclasses of PoissonDiskError carrying its
@@ -210,9 +212,6 @@ class Sampler:
         self._bounds = _check_bounds(bounds)
         field = _check_field(radius, radius_map, radius_fn, rmin, rmax)
         if field is not None:
-            if periodic:
-                raise ValueError("a variable radius (%s) is not supported with periodic=True"
-                                 % field)
             if count is not None:
                 raise ValueError("a variable radius (%s) is not supported with count=" % field)
             radius = 1.0  # replaced by the field's largest radius
