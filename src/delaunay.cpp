@@ -78,6 +78,7 @@ void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) cons
     for (std::size_t k = 0; k < n; ++k) {
         __builtin_prefetch(&vertex_edge_[vertices[k]]);
         __builtin_prefetch(&points_[vertices[k]]);
+        if (weighted_) __builtin_prefetch(&radii_[vertices[k]]);
     }
     for (std::size_t k = 0; k < n; ++k) edge[k] = first[k] = vertex_edge_[vertices[k]];
     // One step of every ring per round: the loads of a round are independent.
@@ -86,6 +87,7 @@ void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) cons
         for (std::size_t k = 0; k < n; ++k) {
             if (edge[k] == kNoEdge) continue;
             __builtin_prefetch(&points_[mesh_.dest(edge[k])]);
+            if (weighted_) __builtin_prefetch(&radii_[mesh_.dest(edge[k])]);
             const EdgeRef next = mesh_.onext(edge[k]);
             __builtin_prefetch(mesh_.record_address(next));
             edge[k] = next == first[k] ? kNoEdge : next;
@@ -117,8 +119,11 @@ void Delaunay::prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t 
         edge[i] = mesh_.oprev(edge[i]);
         __builtin_prefetch(mesh_.record_address(edge[i]));
     }
-    // Round 3: the far corners themselves.
-    for (std::size_t i = 0; i < m; ++i) __builtin_prefetch(&points_[mesh_.dest(edge[i])]);
+    // Round 3: the far corners themselves (and their radii).
+    for (std::size_t i = 0; i < m; ++i) {
+        __builtin_prefetch(&points_[mesh_.dest(edge[i])]);
+        if (weighted_) __builtin_prefetch(&radii_[mesh_.dest(edge[i])]);
+    }
 }
 
 void Delaunay::swap_edge(EdgeRef e) {
