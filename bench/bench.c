@@ -6,6 +6,11 @@
  *   poissondisk  this library: pds_create + pds_run to maximality
  *   bridson      plain Bridson sampling, k = 30 (bridson.c)
  *   dart         grid dart throwing, stopped after a run of misses (dart_grid.c)
+ *   periodic     this library on the unit torus (pds_set_periodic)
+ *   field        this library with a variable radius varying 1:4 across the
+ *                square, r(x) = (R/2)(1 + 3x), whose maximal patterns hold
+ *                about as many points as R does (pds_set_radius_fn); checked
+ *                by pds_verify (untimed), as the probes assume one radius
  *
  * For each target size N (10^4 .. 10^7 by default) the radius is
  * R = sqrt(0.6966 / N) (random sequential adsorption saturates at
@@ -76,7 +81,7 @@ static const char usage_text[] =
     "\n"
     "  --repeats K      runs per size and method, each in a fresh process, seeds\n"
     "                   1..K; the table shows medians (default 3)\n"
-    "  --methods LIST   comma-separated subset of poissondisk,bridson,dart,periodic\n"
+    "  --methods LIST   comma-separated subset of poissondisk,bridson,dart,periodic,field\n"
     "  --csv FILE       also write one CSV row per method and size; FILE '-' or\n"
     "                   no FILE: to standard output, the table then to stderr\n"
     "  --svg FILE       also write time / (N log2 N) against N as an SVG chart\n"
@@ -93,9 +98,17 @@ static const char usage_text[] =
 
 /* "periodic" is the library on the unit torus (pds_set_periodic): same law,
  * no edges, the copies near the edges are its extra cost. */
-enum method { METHOD_POISSONDISK, METHOD_BRIDSON, METHOD_DART, METHOD_PERIODIC, METHOD_COUNT };
-static const char *const method_name[METHOD_COUNT] = {"poissondisk", "bridson", "dart", "periodic"};
-static const char *const method_color[METHOD_COUNT] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
+enum method { METHOD_POISSONDISK, METHOD_BRIDSON, METHOD_DART, METHOD_PERIODIC, METHOD_FIELD, METHOD_COUNT };
+static const char *const method_name[METHOD_COUNT] = {"poissondisk", "bridson", "dart", "periodic", "field"};
+static const char *const method_color[METHOD_COUNT] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"};
+
+/* The field method's radius: r0 (1 + 3x) over the unit square, 1:4. Its
+ * maximal patterns hold about 0.6966 / 4 / r0^2 points (the mean of 1/r^2
+ * is 1 / (4 r0^2)): r0 = R/2 matches R's count. */
+static double gradient_field(void *user, double x, double y) {
+    (void)y;
+    return *(const double *)user * (1.0 + 3.0 * x);
+}
 
 /* What a child sends back through its pipe: plain data, same binary both ends. */
 struct run_record {
@@ -166,6 +179,16 @@ __attribute__((noinline)) int bench_timed_region(enum method m, double radius, u
         if (rc != 0) snprintf(error, error_size, "%s", pds_errmsg(out->sampler));
         if (rc != 0 && out->sampler == NULL) snprintf(error, error_size, "%s", pds_strerror(rc));
         return rc == 0 ? 0 : -1;
+    case METHOD_FIELD: {
+        static double r0;
+        r0 = 0.5 * radius;
+        rc = pds_create(&out->sampler, 1.0, seed);
+        if (rc == 0) rc = pds_set_radius_fn(out->sampler, gradient_field, &r0, r0, 4.0 * r0);
+        if (rc == 0) rc = pds_run(out->sampler, 0, &out->count);
+        if (rc != 0) snprintf(error, error_size, "%s", pds_errmsg(out->sampler));
+        if (rc != 0 && out->sampler == NULL) snprintf(error, error_size, "%s", pds_strerror(rc));
+        return rc == 0 ? 0 : -1;
+    }
     case METHOD_BRIDSON:
         rc = bridson_sample(radius, seed, &out->xy, &out->count);
         break;
@@ -217,7 +240,18 @@ static int child_run(enum method m, double radius, uint64_t seed, const struct o
     rec.peak_kib = usage.ru_maxrss;
     rec.seconds = t1 - t0;
     rec.points = (double)gen.count;
-    if (rc == 0) {
+    if (rc == 0 && m == METHOD_FIELD) {
+        /* Every pair is at least the smallest radius apart; maximality by the
+         * library's exact certificate (the probes assume one radius). */
+        const double *xy = generated_points(&gen);
+        const int verdict = pds_verify(gen.sampler);
+        if (xy == NULL || pattern_check(xy, gen.count, 0.5 * radius, 0, 0, &rec.check) != 0)
+            snprintf(rec.error, sizeof rec.error, "out of memory in the checks");
+        else if (verdict != PDS_DONE)
+            snprintf(rec.error, sizeof rec.error, "pds_verify: %d (%s)", verdict, pds_errmsg(gen.sampler));
+        else
+            rec.ok = 1;
+    } else if (rc == 0) {
         const double *xy = generated_points(&gen);
         if (xy == NULL || pattern_check(xy, gen.count, radius, m == METHOD_PERIODIC, probe_side,
                                          &rec.check) != 0)
