@@ -57,22 +57,6 @@ bool JonesStage::has_room_for(std::size_t points) const {
                               original_.capacity() >= vertices + Delaunay::kGhosts));
 }
 
-void JonesStage::adopt(const std::vector<Point>& points, const std::vector<double>& values,
-                       const std::uint32_t* order) {
-    if (!radii_ || count() != 0 || !has_room_for(points.size())) throw std::logic_error("hand-over without room");
-    const std::size_t n = points.size();
-    order_.resize(n);
-    values_.assign(values.begin(), values.end());  // within the reserved room
-    VertexIndex previous = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t k = order[i];
-        previous = dt_.insert(points[k], radii_->radius_of(values[k]), previous);
-        order_.set(k, previous);
-    }
-    tree_.resize(n);
-    measure_all_cells();
-}
-
 void JonesStage::adopt(const std::vector<Point>& points, const std::uint32_t* order) {
     if (radii_) throw std::logic_error("hand-over without radii");
     if (count() != 0 || (!copies_.on() && !has_room_for(points.size()))) throw std::logic_error("hand-over without room");
@@ -124,29 +108,6 @@ void JonesStage::set_radius(double r, const PointRadii* radii) {
     // On the torus the new radii may need a wider margin (their conflict disks
     // are not the old ones).
     if (!measure_all_cells() && radii_) widen_margin();
-}
-
-void JonesStage::rebuild_mesh() {
-    // The vertices again in their order, with their new radii: each keeps its
-    // number (so the point order and the tree stay), and with equal radii
-    // the mesh comes out record for record as before (the scaling changes no
-    // decision). Each walk starts at an older neighbour in the old mesh,
-    // which is close. Built aside: a failure changes nothing.
-    Delaunay fresh(copies_.on() ? copies_.largest_region() : box_, true, radii_->rmax());
-    fresh.reserve(std::max<std::size_t>(dt_.vertex_count(), vertices_for(order_.capacity()) + Delaunay::kGhosts));
-    std::vector<double> value_of_vertex(dt_.vertex_count(), 0.0);
-    for (std::size_t k = 0; k < count(); ++k) value_of_vertex[order_.vertex(k)] = values_[k];
-    for (VertexIndex v = Delaunay::kGhosts; v < dt_.vertex_count(); ++v) {
-        VertexIndex near = v - 1;
-        if (!dt_.is_hidden(v))
-            dt_.for_each_neighbour(v, [&](VertexIndex n) {
-                if (n < v && !Delaunay::is_ghost(n)) near = n;
-            });
-        // A copy has its original's radius.
-        const VertexIndex o = copies_.on() ? original_[v] : v;
-        fresh.insert(dt_.point(v), radii_->radius_of(value_of_vertex[o]), near);
-    }
-    dt_ = std::move(fresh);
 }
 
 bool JonesStage::measure_all_cells() {
@@ -238,35 +199,8 @@ void JonesStage::drop_queue() {
 bool JonesStage::still_free(const Point& p) const {
     // It was free when drawn; only the points added since can cover it. Most
     // of those are far away: a box test skips them before the exact check.
-    constexpr double kBoxReach = 1.5;  // any half-side >= R holds the disk; some margin
+    if (copies_.on()) return still_free_on_torus(p);
     const double reach = kBoxReach * r_;
-    if (copies_.on()) {
-        // The copy of each new point nearest p is the nearest in x and in y;
-        // if it is at least R away, so is every other. Near a tie (p half a
-        // period from q, up to rounding) both candidates are checked.
-        const Torus& t = copies_.torus();
-        const auto offsets = [](double d, double period, int* first, int* last) {
-            const double f = d / period;
-            *first = *last = static_cast<int>(std::nearbyint(f));
-            constexpr double kTie = 0.49;
-            if (f - *first > kTie) *last = *first + 1;
-            if (*first - f > kTie) *first = *last - 1;
-        };
-        for (VertexIndex v : since_batch_) {
-            const Point& q = dt_.point(v);
-            int i0, i1, j0, j1;
-            offsets(p.x - q.x, t.px, &i0, &i1);
-            offsets(p.y - q.y, t.py, &j0, &j1);
-            for (int i = i0; i <= i1; ++i) {
-                for (int j = j0; j <= j1; ++j) {
-                    const Point c = t.shifted(q, i, j);
-                    if (std::fabs(p.x - c.x) > reach || std::fabs(p.y - c.y) > reach) continue;
-                    if (compare_distance(p, c, radii_ ? dt_.radius(v) : r_) < 0) return false;
-                }
-            }
-        }
-        return true;
-    }
     for (VertexIndex v : since_batch_) {
         const Point& q = dt_.point(v);
         if (std::fabs(p.x - q.x) > reach || std::fabs(p.y - q.y) > reach) continue;
@@ -405,16 +339,6 @@ bool JonesStage::acceptable(const Point& p, VertexIndex v) const {
         if (ok && !Delaunay::is_ghost(n) && compare_closer(p, c, dt_.point(n)) > 0) ok = false;
     });
     return ok;
-}
-
-bool JonesStage::site_in_own_cell(VertexIndex v) const {
-    const Point& c = dt_.point(v);
-    const double rc = dt_.radius(v);
-    bool inside = true;
-    dt_.for_each_neighbour(v, [&](VertexIndex n) {
-        if (inside && compare_power(c, c, rc, dt_.point(n), dt_.radius(n)) > 0) inside = false;
-    });
-    return inside;
 }
 
 void JonesStage::insert_point(const Point& p, VertexIndex near, double value) {

@@ -92,8 +92,6 @@ public:
     // is the k-th added) in the order given, measures every cell and builds
     // the tree. Requires count() == 0 and room; never allocates.
     void adopt(const std::vector<Point>& points, const std::uint32_t* order);
-    // The same with a variable radius: values[k] is point k's field value.
-    void adopt(const std::vector<Point>& points, const std::vector<double>& values, const std::uint32_t* order);
     // The torus: finishes a widening of the margin that memory interrupted,
     // or that the hand-over left to do (may throw std::bad_alloc).
     void settle();
@@ -127,6 +125,9 @@ public:
 private:
     static constexpr int kMaxDraws = 64;  // per piece; a healthy piece accepts > 1/2 of draws
     static constexpr int kFailuresPerGiveUp = 8;
+    // A candidate is checked exactly only against the newer points within
+    // this many radii in x and y (any half-side >= R holds the disk).
+    static constexpr double kBoxReach = 1.5;
 
     // A point drawn from the free region as it was when its batch was drawn.
     struct Candidate {
@@ -145,6 +146,7 @@ private:
     void adapt_batch_size();
     void drop_queue();
     bool still_free(const Point& p) const;
+    bool still_free_on_torus(const Point& p) const;
     void draw_batch(std::size_t n, Rng& rng);
     void draw_batch_unguarded(std::size_t n, Rng& rng);
     void set_weight(SiteIndex site, double weight);

@@ -1,7 +1,9 @@
 // jones_torus.cpp - the Jones stage on the torus (see jones_stage.hpp and
 // torus_copies.hpp): room for the copies, inserting a point with its copies,
 // where a walk for a wrapped point starts, widening the margin until every
-// real cell is a true torus cell, and the test of one cell. The loop itself
+// real cell is a true torus cell (and narrowing it as a pattern with a
+// variable radius fills), the test of one cell, and whether a candidate is
+// still free across the wrap. The loop itself
 // is in jones_stage.cpp; these run only when the stage has copies.
 #include <algorithm>
 #include <cmath>
@@ -179,6 +181,35 @@ void JonesStage::rebuild_with_margin(double margin) {
     drop_queue();
     has_first_ = false;
     if (!measure_all_cells()) widen_margin();
+}
+
+bool JonesStage::still_free_on_torus(const Point& p) const {
+    const double reach = kBoxReach * r_;
+    // The copy of each new point nearest p is the nearest in x and in y;
+    // if it is at least R away, so is every other. Near a tie (p half a
+    // period from q, up to rounding) both candidates are checked.
+    const Torus& t = copies_.torus();
+    const auto offsets = [](double d, double period, int* first, int* last) {
+        const double f = d / period;
+        *first = *last = static_cast<int>(std::nearbyint(f));
+        constexpr double kTie = 0.49;
+        if (f - *first > kTie) *last = *first + 1;
+        if (*first - f > kTie) *first = *last - 1;
+    };
+    for (VertexIndex v : since_batch_) {
+        const Point& q = dt_.point(v);
+        int i0, i1, j0, j1;
+        offsets(p.x - q.x, t.px, &i0, &i1);
+        offsets(p.y - q.y, t.py, &j0, &j1);
+        for (int i = i0; i <= i1; ++i) {
+            for (int j = j0; j <= j1; ++j) {
+                const Point c = t.shifted(q, i, j);
+                if (std::fabs(p.x - c.x) > reach || std::fabs(p.y - c.y) > reach) continue;
+                if (compare_distance(p, c, radii_ ? dt_.radius(v) : r_) < 0) return false;
+            }
+        }
+    }
+    return true;
 }
 
 void JonesStage::settle() {

@@ -93,7 +93,7 @@ START_TEST(function_field_rule_and_maximality)
     int k;
     for (k = 0; k < 4; ++k) {
         const test_domain d = doms[k / 2];
-        struct span f = {0.03, d.x0, d.x1 - d.x0};
+        struct span f = {test_light() ? 0.06 : 0.03, d.x0, d.x1 - d.x0};
         pds_sampler *s = sampler_new_in(1.0, 10 + (uint64_t)k, d);
         size_t n, i;
         double *xy, *r;
@@ -389,12 +389,12 @@ START_TEST(torus_field_rule_and_maximality)
     int seed;
     for (seed = 1; seed <= 2; ++seed) {
         pds_sampler *s = sampler_new_in(1.0, (uint64_t)seed, d);
-        struct span f = {0.03, -1.0, 3.0};
+        struct span f = {test_light() ? 0.06 : 0.03, -1.0, 3.0};
         size_t n, i, j;
         double *xy, *r;
         int a, b;
         ck_assert_int_eq(pds_set_periodic(s, 1), 0);
-        ck_assert_int_eq(pds_set_radius_fn(s, seed == 1 ? stripes : step_over, &f, 0.03, seed == 1 ? 0.09 : 0.075), 0);
+        ck_assert_int_eq(pds_set_radius_fn(s, seed == 1 ? stripes : step_over, &f, 0.03, seed == 1 ? 0.09 : 2.5 * f.r0), 0);
         run_to_end(s);
         assert_maximal(s, "torus field");
         xy = points_copy(s, &n);
@@ -406,9 +406,10 @@ START_TEST(torus_field_rule_and_maximality)
                                   r[i] * r[i] * (1 - 1e-12),
                               "torus: point %zu inside point %zu's disk", j, i);
         }
-        for (a = 0; a < 300; ++a)
-            for (b = 0; b < 150; ++b) {
-                const double x = d.x0 + px * a / 300, y = d.y0 + py * b / 150;
+        const int ka = (int)pick(300, 60), kb = (int)pick(150, 30);
+        for (a = 0; a < ka; ++a)
+            for (b = 0; b < kb; ++b) {
+                const double x = d.x0 + px * a / ka, y = d.y0 + py * b / kb;
                 int in = 0;
                 for (i = 0; i < n && !in; ++i)
                     in = wrapped2(xy[2 * i] - x, xy[2 * i + 1] - y, px, py) <= r[i] * r[i] * (1 + 1e-12);

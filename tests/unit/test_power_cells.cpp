@@ -82,20 +82,21 @@ START_TEST(power_cell_areas_match_integration) {
     int shadowed = 0, checked = 0;
     for (std::uint32_t v = pds::Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
         const std::size_t k = v - pds::Delaunay::kGhosts;
+        // Under Valgrind (light): the shadowed cells and a few others.
+        const pds::CellMeasure m = dt.is_hidden(v) ? pds::CellMeasure{} : cells.measure(v);
+        if (!(m.shadow > 0.0) && k % (test_light() ? 64 : 8) != 0) continue;
         const double ref = free_area_by_rays(disks, k, pds::Box{0, 0, 1, 1}, 20000);
         if (dt.is_hidden(v)) {
             ck_assert_double_eq(ref, 0.0);
             continue;
         }
-        const pds::CellMeasure m = cells.measure(v);
         if (m.shadow > 0.0) ++shadowed;
-        else if (k % 8 != 0) continue;
         ++checked;
         ck_assert_msg(std::fabs(m.free() - ref) <= 1e-4 * ref + 1e-10, "cell %u: streamed %.9g, integrated %.9g",
                       v, m.free(), ref);
     }
     ck_assert_int_gt(shadowed, 0);
-    ck_assert_int_gt(checked, 20);
+    ck_assert_int_gt(checked, test_light() ? 4 : 20);
 }
 END_TEST
 
@@ -103,7 +104,7 @@ START_TEST(power_cell_areas_match_a_grid) {
     const std::vector<Disk> disks = rsa_disks(test_light() ? 300 : 600, step_field, 5);
     const pds::Delaunay dt = weighted_mesh(disks);
     const pds::MeshCells cells(dt, pds::Box{0, 0, 1, 1}, 0.0);
-    const int g = test_light() ? 400 : 800;
+    const int g = test_light() ? 150 : 800;
     const std::vector<double> grid = grid_free_areas(dt, g);
     int shadowed = 0;
     double total = 0.0, grid_total = 0.0;
@@ -117,7 +118,7 @@ START_TEST(power_cell_areas_match_a_grid) {
         if (m.shadow > 0.0) ++shadowed;
         total += m.free();
         // Grid error: about one grid step along the cell's boundary.
-        const double tol = 4.0 * (1.0 / g) * 2.0 * M_PI * 0.16 + 1e-6;
+        const double tol = 4.0 * (1.0 / g) * 2.0 * M_PI * 0.16 + 1e-6;  // coarse: a check of ownership
         ck_assert_msg(std::fabs(m.free() - grid[v]) <= tol, "cell %u: streamed %g, grid %g (shadow %g)", v,
                       m.free(), grid[v], m.shadow);
     }
@@ -129,7 +130,7 @@ END_TEST
 START_TEST(float_classification_agrees_with_exact_power_cells) {
     // A denser pattern, so many cells are covered.
     for (std::uint64_t seed = 1; seed <= (test_light() ? 1u : 3u); ++seed) {
-        const std::vector<Disk> disks = rsa_disks(20000, step_field, seed);
+        const std::vector<Disk> disks = rsa_disks(test_light() ? 6000 : 20000, step_field, seed);
         const pds::Delaunay dt = weighted_mesh(disks);
         const pds::MeshCells cells(dt, pds::Box{0, 0, 1, 1}, 0.0);
         int covered = 0, free = 0;
@@ -174,7 +175,7 @@ START_TEST(draws_are_uniform_in_shadowed_cells) {
     const std::vector<Disk> disks = rsa_disks(600, step_field, 5);
     const pds::Delaunay dt = weighted_mesh(disks);
     const pds::MeshCells cells(dt, pds::Box{0, 0, 1, 1}, 0.0);
-    const int n = test_light() ? 6000 : 40000;
+    const int n = test_light() ? 1500 : 40000;
     double chi2 = 0;
     int dof = 0, shadowed = 0;
     for (std::uint32_t v = pds::Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
