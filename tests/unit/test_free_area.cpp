@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cell_coverage.hpp"
+#include "binned_chi2.hpp"
 #include "cell_oracle.hpp"
 #include "free_area.hpp"
 #include "sampler.hpp"
@@ -209,13 +210,9 @@ void add_uniformity_chi2(const pds::Sampler& s, std::size_t site, int n, std::ui
     std::vector<double> a(bins, 0), b(bins, 0);
     for (const pds::Point& p : got) ++a[bin(p)];
     for (const pds::Point& p : want) ++b[bin(p)];
-    double chi2 = 0;
-    int dof = -1;
-    for (int k = 0; k < bins; ++k) {
-        if (a[k] + b[k] < 10) continue;  // sparse bins: too noisy to weigh
-        chi2 += (a[k] - b[k]) * (a[k] - b[k]) / (a[k] + b[k]);
-        ++dof;
-    }
+    const BinnedChi2 test = binned_chi2(a, b);
+    const double chi2 = test.chi2;
+    const int dof = test.dof;
     ck_assert_int_gt(dof, 4);
     // One cell alone must not be wildly off either.
     ck_assert_msg(chi2 - dof < 7 * std::sqrt(2.0 * dof), "cell %zu: chi-square %.1f on %d dof", site, chi2, dof);

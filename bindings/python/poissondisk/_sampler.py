@@ -421,16 +421,21 @@ class Sampler:
         a Poisson-disk set."""
         return self.get_points()
 
-    def get_points(self, first: int = 0, count: Optional[int] = None) -> Points:
-        """Points first .. first+count-1 (to the end by default), clipped to
-        the points that exist; same types as `points`."""
-        handle = self._h()
+    @staticmethod
+    def _slice(handle: Any, first: int, count: Optional[int]) -> Tuple[int, int]:
+        """(first, n): the slice of points first .. first+count-1 that exist."""
         total = int(_capi.lib.pds_count(handle))
         first = operator.index(first)
         if first < 0:
             raise ValueError("first must be >= 0, got %d" % first)
         avail = max(total - first, 0)
-        n = avail if count is None else max(min(operator.index(count), avail), 0)
+        return first, avail if count is None else max(min(operator.index(count), avail), 0)
+
+    def get_points(self, first: int = 0, count: Optional[int] = None) -> Points:
+        """Points first .. first+count-1 (to the end by default), clipped to
+        the points that exist; same types as `points`."""
+        handle = self._h()
+        first, n = self._slice(handle, first, count)
         if _np is not None:
             out = _np.empty((n, 2), dtype=_np.float64)
             if n:
@@ -451,12 +456,7 @@ class Sampler:
         and every later point is at least r_i from it."""
         handle = self._h()
         copy = _capi.need("pds_radii")
-        total = int(_capi.lib.pds_count(handle))
-        first = operator.index(first)
-        if first < 0:
-            raise ValueError("first must be >= 0, got %d" % first)
-        avail = max(total - first, 0)
-        n = avail if count is None else max(min(operator.index(count), avail), 0)
+        first, n = self._slice(handle, first, count)
         if _np is not None:
             out = _np.empty(n, dtype=_np.float64)
             if n:
