@@ -7,7 +7,8 @@
 
 namespace pds {
 
-Sampler::Sampler(double radius, std::uint64_t seed) : frame_(Box{0.0, 0.0, 1.0, 1.0}, radius), rng_(seed) {}
+Sampler::Sampler(double radius, std::uint64_t seed)
+    : frame_(Box{0.0, 0.0, 1.0, 1.0}, radius), seed_(seed), rng_(seed) {}
 
 bool Sampler::use_darts() const {
     // A varying field runs the Jones loop alone: a dart grid must be sized by
@@ -42,9 +43,12 @@ void Sampler::set_field(const RadiusField& field) {
 }
 
 void Sampler::forget_stages() {
-    // Without points the stages hold nothing but the old frame.
+    // Without points the stages hold nothing but the old frame, and a first
+    // point drawn but refused by a radius field: the generator goes back to
+    // the seed, so the points are a fresh sampler's with these settings.
     darts_.reset();
     jones_.reset();
+    rng_ = Rng(seed_);
 }
 
 void Sampler::set_domain(const Box& domain) {
@@ -174,10 +178,25 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
     // rounding), or the count asked for, or for max_new more if fewer.
     // prepare() refuses a total past the index space, so an unbounded run
     // whose maximal pattern might not fit fails before any point.
-    const std::size_t whole =
-        count_target_ != 0 ? std::max(count_target_, n) : std::max(smallest_frame().count_bound_points(), n) + 1;
-    const std::size_t target = max_new != 0 && max_new < whole - n ? n + max_new : whole;
-    prepare(target);
+    // A varying field: Oler's bound at the smallest radius may exceed the
+    // pattern by any factor (one small pixel in a map), so memory is reserved
+    // for the expected count and grows with the run; the index space is
+    // judged on that count, and a pattern that truly outgrows it stops there
+    // (PDS_ERANGE, the points kept).
+    const bool grows = varying_field();
+    std::size_t whole;
+    if (count_target_ != 0) {
+        whole = std::max(count_target_, n);
+    } else if (grows) {
+        const double expected = kFieldCountMargin * expected_count() + 64.0;
+        if (!(expected <= static_cast<double>(Frame::max_points())))
+            throw LimitError(Limit::too_many_points, smallest_frame().user_radius());
+        whole = std::max(static_cast<std::size_t>(expected), n) + 1;
+    } else {
+        whole = std::max(smallest_frame().count_bound_points(), n) + 1;
+    }
+    const std::size_t target = max_new != 0 && (grows || max_new < whole - n) ? n + max_new : whole;
+    prepare(grows ? std::min(target, n + (whole > n ? whole - n : 1)) : target);
     // A field's expected count: as for the radius whose 1/R^2 is the mean of
     // 1/r^2 over the domain.
     // The estimate is needed only for reports (a field's asks the field).
@@ -185,6 +204,7 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
         progress_.fn == nullptr ? 1.0 : count_target_ != 0 ? static_cast<double>(count_target_) : expected_count();
     ProgressMeter meter(progress_, expected, count_target_ != 0);
     while (max_new == 0 || *added < max_new) {
+        if (grows && !jones_->has_room_for(count() + 1)) prepare(count() + 1);
         if (!add_one()) {
             // The final report; a stop asked for here changes nothing.
             meter.finish(count());

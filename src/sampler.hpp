@@ -102,8 +102,10 @@ public:
 
 private:
     bool started() const { return jones_ != nullptr; }
-    // The expected size of a maximal pattern (for progress and the grid).
+    // The expected size of a maximal pattern (progress; a field's memory).
     double expected_count() const;
+    // A varying field reserves this many times its expected count at first.
+    static constexpr double kFieldCountMargin = 1.25;
     // The frame at the smallest radius in force: what the limits and the
     // bounds on the count are judged with.
     Frame smallest_frame() const;
@@ -128,7 +130,8 @@ private:
     void lower_radius_for_count();
 
     Frame frame_;
-    Rng rng_;
+    std::uint64_t seed_;
+    Rng rng_;  // at seed_'s state while count() == 0
     bool skip_darts_ = false;
     std::size_t count_target_ = 0;
     ProgressHook progress_;
