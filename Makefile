@@ -152,6 +152,24 @@ tile-picture: $(CLI)
 	    > docs/periodic_tile.svg.tmp || { rm -f docs/periodic_tile.svg.tmp; exit 1; }
 	mv docs/periodic_tile.svg.tmp docs/periodic_tile.svg
 
+# ---- stipple-picture: the README's stippling (section "Variable radius") --------------
+# docs/stipple.pgm is a 128 x 128 grey-scale face drawn by docs/stipple_image.py
+# (make stipple-image draws it again, the same bytes). --radius-map turns it into
+# radii from 0.004 (black) to 0.03 (white); the points are drawn as dots of one size,
+# 0.002, so their density shows the picture: docs/stipple.svg, about 4500 points
+# and 260 KB. tests/check-cli-field.sh checks that the committed picture is this
+# command's output. Written to a temporary file first, as the tile above.
+STIPPLE_ARGS := --radius-map docs/stipple.pgm --rmin 0.004 --rmax 0.03 --seed 1 \
+                --dot-radius 0.002
+.PHONY: stipple-picture stipple-image
+stipple-picture: $(CLI)
+	$(CLI) $(STIPPLE_ARGS) --verify --stats --svg docs/stipple.svg.tmp > /dev/null \
+	    || { rm -f docs/stipple.svg.tmp; exit 1; }
+	mv docs/stipple.svg.tmp docs/stipple.svg
+stipple-image:
+	$(PYTHON) docs/stipple_image.py > docs/stipple.pgm.tmp || { rm -f docs/stipple.pgm.tmp; exit 1; }
+	mv docs/stipple.pgm.tmp docs/stipple.pgm
+
 # ---- tests ---------------------------------------------------------------------------
 deps:
 	@sh tests/install-deps.sh
