@@ -109,6 +109,7 @@ $(LIB_A): $(LIB_OBJ)
 # ---- command-line program: public API only, linked against the static library --------
 # The pictures (PNG included: tools/png.c writes it) need nothing beyond libc and libm.
 CLI_SRC := tools/poissondisk.c tools/cli_options.c tools/cli_progress.c tools/cli_report.c \
+           tools/cli_field.c tools/pgm.c \
            tools/cli_sample.c tools/cli_outputs.c tools/cli_output_args.c tools/cli_spectrum.c \
            tools/out_formats.c tools/pattern_svg.c tools/pattern_png.c tools/pattern_stats.c \
            tools/png.c tools/points_in.c tools/spectrum.c tools/spectrum_out.c \
@@ -150,6 +151,24 @@ tile-picture: $(CLI)
 	$(CLI) --periodic --radius 0.05 --seed 3 | $(PYTHON) tools/tile_svg.py --radius 0.05 \
 	    > docs/periodic_tile.svg.tmp || { rm -f docs/periodic_tile.svg.tmp; exit 1; }
 	mv docs/periodic_tile.svg.tmp docs/periodic_tile.svg
+
+# ---- stipple-picture: the README's stippling (section "Variable radius") --------------
+# docs/stipple.pgm is a 128 x 128 grey-scale face drawn by docs/stipple_image.py
+# (make stipple-image draws it again, the same bytes). --radius-map turns it into
+# radii from 0.004 (black) to 0.03 (white); the points are drawn as dots of one size,
+# 0.002, so their density shows the picture: docs/stipple.svg, about 4500 points
+# and 260 KB. tests/check-cli-field.sh checks that the committed picture is this
+# command's output. Written to a temporary file first, as the tile above.
+STIPPLE_ARGS := --radius-map docs/stipple.pgm --rmin 0.004 --rmax 0.03 --seed 1 \
+                --dot-radius 0.002
+.PHONY: stipple-picture stipple-image
+stipple-picture: $(CLI)
+	$(CLI) $(STIPPLE_ARGS) --verify --stats --svg docs/stipple.svg.tmp > /dev/null \
+	    || { rm -f docs/stipple.svg.tmp; exit 1; }
+	mv docs/stipple.svg.tmp docs/stipple.svg
+stipple-image:
+	$(PYTHON) docs/stipple_image.py > docs/stipple.pgm.tmp || { rm -f docs/stipple.pgm.tmp; exit 1; }
+	mv docs/stipple.pgm.tmp docs/stipple.pgm
 
 # ---- tests ---------------------------------------------------------------------------
 deps:
@@ -204,6 +223,7 @@ check-cli: $(CLI)
 	sh tests/check-cli.sh $(CLI)
 	sh tests/check-cli-features.sh $(CLI)
 	sh tests/check-cli-output.sh $(CLI)
+	sh tests/check-cli-field.sh $(CLI)
 
 # check-python: tests/python/run_venv.py pip-installs a copy of bindings/python offline
 # into a scratch venv of SYSTEM_PYTHON (--system-site-packages: Debian's numpy and scipy

@@ -12,7 +12,9 @@
 # behaviour of 1.1.1 (see the section "tiny radii"). The run options --count,
 # --periodic, --progress and --partial (Ctrl-C) are checked in
 # check-cli-features.sh, their argument errors here; the output options
-# (--format, --svg, --png, --spectrum...) in check-cli-output.sh. Ends with
+# (--format, --svg, --png, --spectrum...) in check-cli-output.sh, the radius
+# map (--radius-map, --rmin, --rmax, --radii, --dot-radius) in
+# check-cli-field.sh. Ends with
 # "check-cli: N passed, M failed" and a non-zero status if anything failed.
 
 set -u
@@ -100,7 +102,7 @@ expect "--bogus --version: exit 2 (got $rc)" [ "$rc" -eq 2 ]
 # The help and the parser come from one table: every option the help lists is
 # known to the parser, and each has an entry in the manual.
 grep -Eo '^  --[a-z-]+' "$tmp/help.out" | tr -d ' ' > "$tmp/help-options"
-expect "--help lists the 25 options" [ "$(lines "$tmp/help-options")" -eq 25 ]
+expect "--help lists the 30 options" [ "$(lines "$tmp/help-options")" -eq 30 ]
 sed -n '/^$/q;p' "$tmp/help.out" > "$tmp/help-usage"    # up to the first blank line
 while read -r opt; do
     run optknown "$opt"
@@ -239,7 +241,7 @@ expect "--stats without --verify does not say verified" \
 # ---- bad arguments: exit 2, a message naming the option and the text, no output -----
 # usage_case (cli_cases.sh): exit 2, stderr matches the pattern, nothing on stdout.
 usage_case "no --radius" '--radius' --seed 3
-usage_case "neither --radius nor --count" 'one of --radius or --count is required' --seed 3
+usage_case "none of --radius, --count, --radius-map" 'one of --radius, --count or --radius-map is required' --seed 3
 usage_case "--radius and --count" '--count cannot be used with --radius' --radius 0.1 --count 5
 usage_case "--count and --radius" '--radius cannot be used with --count' --count 5 --radius 0.1
 usage_case "--count and --refine" '--refine cannot be used with --count' --count 5 --refine 0.1

@@ -8,14 +8,24 @@ Each check reads the files the program wrote, recomputes what it can from the
 plain "x y" output (the reference), and exits 0 when every assertion holds,
 1 after printing the first one that does not. The checks:
 
-    formats REF.txt DIR RADIUS X0 Y0 X1 Y1 PERIODIC  DIR/p.{csv,json,bin,npy}
-    svg FILE REF.txt RADIUS X0 Y0 X1 Y1 DISKS PERIODIC
+    formats REF.txt DIR RADIUS X0 Y0 X1 Y1 PERIODIC [RADII]  DIR/p.{csv,json,bin,npy}
+    svg FILE REF.txt RADIUS X0 Y0 X1 Y1 DISKS PERIODIC [RADII DOT]
     png FILE REF.txt X0 Y0 X1 Y1 WIDTH HEIGHT
     spectrum-png FILE SIZE BLUE   (BLUE 1: dark centre ring; 0: flat)
     spectrum-csv FILE KIND PATTERNS   (KIND blue or white)
     plot FILE
-    stats STATS-LINE-FILE REF.txt RADIUS X0 Y0 X1 Y1 PERIODIC
+    stats STATS-LINE-FILE REF.txt RADIUS X0 Y0 X1 Y1 PERIODIC   (RADIUS "map": REF.txt
+                                  has the radii as a third column, --radius-map)
     white OUT PATTERNS N SEED     writes uniform random patterns (white noise)
+    pgm OUT KIND ENCODING W H     writes a test image for --radius-map (see write_pgm)
+    field REF.txt RMIN RMAX X0 Y0 X1 Y1 STEP   a variable-radius pattern ("x y r"
+                                  lines): radii in [RMIN, RMAX], the rule, coverage
+    gradient REF.txt RMIN RMAX W  "x y r" lines of a map from the image hgrad W x H:
+                                  r is linear in x between the first and last pixel
+                                  centres, as the map's bilinear interpolation gives
+
+RADII 1: REF.txt holds "x y r" lines and the files the radius as a third value;
+the SVG's disks then have radius r/2 each, and its dots radius DOT.
 """
 import ast
 import csv
@@ -44,7 +54,7 @@ def read_txt(path):
 
 # ---- formats ----------------------------------------------------------------------
 
-def parse_npy(data):
+def parse_npy(data, cols=2):
     """The NumPy 1.0 format by hand: magic, version, header, '<f8' data."""
     check(data[:6] == b"\x93NUMPY", "npy: magic")
     check(data[6:8] == b"\x01\x00", "npy: version 1.0")
@@ -55,20 +65,22 @@ def parse_npy(data):
     meta = ast.literal_eval(header.strip())
     check(meta == {"descr": "<f8", "fortran_order": False, "shape": meta.get("shape")},
           "npy: header keys %r" % meta)
-    rows, cols = meta["shape"]
-    check(cols == 2, "npy: shape (N, 2)")
+    rows, got = meta["shape"]
+    check(got == cols, "npy: shape (N, %d), got (N, %d)" % (cols, got))
     body = data[10 + hlen:]
-    check(len(body) == 16 * rows, "npy: %d data bytes for %d rows" % (len(body), rows))
-    vals = struct.unpack("<%dd" % (2 * rows), body)
-    return list(zip(vals[0::2], vals[1::2]))
+    check(len(body) == 8 * cols * rows, "npy: %d data bytes for %d rows" % (len(body), rows))
+    vals = struct.unpack("<%dd" % (cols * rows), body)
+    return list(zip(*[vals[k::cols] for k in range(cols)]))
 
 
-def check_formats(ref_path, folder, radius, x0, y0, x1, y1, periodic):
+def check_formats(ref_path, folder, radius, x0, y0, x1, y1, periodic, radii="0"):
     ref = read_txt(ref_path)
     n = len(ref)
+    cols = 3 if radii == "1" else 2
+    check(all(len(p) == cols for p in ref), "reference: %d values per line" % cols)
     with open(folder + "/p.csv") as f:
         rows = list(csv.reader(f))
-    check(rows[0] == ["x", "y"], "csv: header x,y")
+    check(rows[0] == ["x", "y", "r"][:cols], "csv: header %s" % ",".join(rows[0]))
     check([tuple(float(v) for v in r) for r in rows[1:]] == ref, "csv: the same points")
     with open(folder + "/p.json") as f:
         doc = json.load(f)
@@ -81,18 +93,18 @@ def check_formats(ref_path, folder, radius, x0, y0, x1, y1, periodic):
     check([tuple(p) for p in doc["points"]] == ref, "json: the same points")
     with open(folder + "/p.bin", "rb") as f:
         raw = f.read()
-    check(len(raw) == 16 * n, "bin: 16 bytes per point")
-    vals = struct.unpack("<%dd" % (2 * n), raw)
-    check(list(zip(vals[0::2], vals[1::2])) == ref, "bin: the same points")
+    check(len(raw) == 8 * cols * n, "bin: %d bytes per point" % (8 * cols))
+    vals = struct.unpack("<%dd" % (cols * n), raw)
+    check(list(zip(*[vals[k::cols] for k in range(cols)])) == ref, "bin: the same points")
     with open(folder + "/p.npy", "rb") as f:
-        check(parse_npy(f.read()) == ref, "npy: the same points")
+        check(parse_npy(f.read(), cols) == ref, "npy: the same points")
     try:
         import numpy
     except ImportError:
         numpy = None
     if numpy is not None:
         arr = numpy.load(folder + "/p.npy")
-        check(arr.dtype == numpy.float64 and arr.shape == (n, 2), "numpy.load: shape")
+        check(arr.dtype == numpy.float64 and arr.shape == (n, cols), "numpy.load: shape")
         check([tuple(r) for r in arr.tolist()] == ref, "numpy.load: the same points")
 
 
@@ -101,7 +113,7 @@ def check_formats(ref_path, folder, radius, x0, y0, x1, y1, periodic):
 NS = "{http://www.w3.org/2000/svg}"
 
 
-def check_svg(path, ref_path, radius, x0, y0, x1, y1, disks, periodic):
+def check_svg(path, ref_path, radius, x0, y0, x1, y1, disks, periodic, radii="0", dot=None):
     ref = read_txt(ref_path)
     r, box = float(radius), [float(v) for v in (x0, y0, x1, y1)]
     root = ET.parse(path).getroot()
@@ -118,7 +130,10 @@ def check_svg(path, ref_path, radius, x0, y0, x1, y1, disks, periodic):
           == [box[0], box[1], box[2] - box[0], box[3] - box[1]], "svg: the domain's box")
     dots = groups["points"].findall(NS + "circle")
     check(len(dots) == len(ref), "svg: %d point circles for %d points" % (len(dots), len(ref)))
-    for (x, y), c in zip(ref, dots):
+    if dot is not None:
+        check(all(abs(float(c.get("r")) - float(dot)) <= 1e-9 * float(dot) for c in dots),
+              "svg: every dot of radius %s" % dot)
+    for (x, y, *_), c in zip(ref, dots):
         # y upwards: the point (x, y) is drawn at (x, y0 + y1 - y).
         check(abs(float(c.get("cx")) - x) <= 1e-9 * (1 + abs(x))
               and abs(float(c.get("cy")) - (box[1] + box[3] - y)) <= 1e-9 * (1 + abs(y)),
@@ -126,7 +141,15 @@ def check_svg(path, ref_path, radius, x0, y0, x1, y1, disks, periodic):
     check(("disks" in groups) == (disks == "1"), "svg: a disks group exactly with --disks")
     check(("disk-copies" in groups) == (disks == "1" and periodic == "1"),
           "svg: a disk-copies group exactly with --disks on a torus")
-    if disks == "1":
+    if disks == "1" and radii == "1":
+        # Each point's own radius r: a disk of radius r/2, in point order.
+        circ = groups["disks"].findall(NS + "circle")
+        check(len(circ) == len(ref), "svg: %d disks for %d points" % (len(circ), len(ref)))
+        for (x, y, rk), c in zip(ref, circ):
+            check(abs(float(c.get("r")) - rk / 2) <= 1e-9 * rk
+                  and abs(float(c.get("cx")) - x) <= 1e-9 * (1 + abs(x)),
+                  "svg: the disk of (%r, %r) has r=%s, not r/2 = %r" % (x, y, c.get("r"), rk / 2))
+    elif disks == "1":
         circ = groups["disks"].findall(NS + "circle")
         check(len(circ) == len(ref), "svg: %d disks for %d points" % (len(circ), len(ref)))
         check(all(abs(float(c.get("r")) - r / 2) <= 1e-9 * r for c in circ), "svg: r = R/2")
@@ -215,7 +238,7 @@ def check_png(path, ref_path, x0, y0, x1, y1, width, height):
     check((w, h) == (int(width), int(height)), "png: %dx%d, expected %sx%s" % (w, h, width, height))
     white = sum(row.count(255) for row in rows)
     check(white > 0.5 * w * h, "png: a white background (%d of %d pixels white)" % (white, w * h))
-    for x, y in ref:
+    for x, y, *_ in ref:
         # Row 0 is the top (y1): y grows upwards.
         px = min(int((x - x0) / (x1 - x0) * w), w - 1)
         py = min(int((y1 - y) / (y1 - y0) * h), h - 1)
@@ -290,12 +313,43 @@ def check_plot(path):
 
 # ---- --stats --------------------------------------------------------------------------------
 
+def check_field_stats(fields, ref, box):
+    """--stats with --radius-map: in units of the points' own radii (suffix r)."""
+    area = (box[2] - box[0]) * (box[3] - box[1])
+    packing = sum(math.pi * p[2] * p[2] for p in ref) / (4 * area)
+    check(abs(float(fields["packing"]) - packing) < 1e-6, "stats: packing %s, expected %.6f"
+          % (fields["packing"], packing))
+    rule, nn = math.inf, []
+    for i, (x, y, ri) in enumerate(ref):
+        best = math.inf
+        for j, (u, v, rj) in enumerate(ref):
+            if i != j:
+                d = math.hypot(x - u, y - v)
+                best = min(best, d)
+                rule = min(rule, d / (ri if i < j else rj))
+        nn.append(best / ri)
+    check(fields["min_dist"].endswith("r") and fields["mean_nn"].endswith("r"),
+          "stats: the distances in units of the radii (suffix r)")
+    got_min, got_mean = float(fields["min_dist"][:-1]), float(fields["mean_nn"][:-1])
+    check(abs(got_min - rule) < 1e-8, "stats: min_dist %r, brute force %.9f" % (got_min, rule))
+    want_mean = sum(nn) / len(nn)
+    check(abs(got_mean - want_mean) < 1e-5, "stats: mean_nn %r, brute force %.6f"
+          % (got_mean, want_mean))
+    check(got_min >= 1 - 1e-9, "stats: a later point inside an earlier point's disk")
+    lo, hi = (float(v) for v in fields["R"].split(".."))
+    check(all(lo - 1e-12 <= p[2] <= hi + 1e-12 for p in ref),
+          "stats: R=%s does not hold every radius" % fields["R"])
+
+
 def check_stats(stats_path, ref_path, radius, x0, y0, x1, y1, periodic):
     ref = read_txt(ref_path)
-    r, box = float(radius), [float(v) for v in (x0, y0, x1, y1)]
+    box = [float(v) for v in (x0, y0, x1, y1)]
     with open(stats_path) as f:
         line = f.read().strip()
     fields = dict(tok.split("=", 1) for tok in line.split() if "=" in tok)
+    if radius == "map":
+        return check_field_stats(fields, ref, box)
+    r = float(radius)
     area = (box[2] - box[0]) * (box[3] - box[1])
     packing = math.pi * r * r * len(ref) / (4 * area)
     check(abs(float(fields["packing"]) - packing) < 1e-6, "stats: packing %s, expected %.6f"
@@ -332,10 +386,106 @@ def write_white(out, patterns, n, seed):
                 f.write("%r %r\n" % (rng.random(), rng.random()))
 
 
+# ---- --radius-map ------------------------------------------------------------------------
+
+def pgm_levels(kind, w, h):
+    """The grey levels (0..255) of a test image, rows top first."""
+    if kind == "hgrad":      # grey = column * 255 / (w - 1): black on the left
+        return [[round(255 * i / (w - 1)) for i in range(w)] for _ in range(h)]
+    if kind == "topdark":    # the upper half black, the lower half white
+        return [[0 if j < h // 2 else 255 for _ in range(w)] for j in range(h)]
+    if kind == "bottomdark":
+        return [[255 if j < h // 2 else 0 for _ in range(w)] for j in range(h)]
+    if kind == "blob":       # a dark disk off centre on a soft gradient
+        return [[min(255, round(255 * (0.3 + 0.7 * i / (w - 1))
+                                * min(1.0, math.hypot(i - 0.3 * w, j - 0.6 * h) / (0.25 * w))))
+                 for i in range(w)] for j in range(h)]
+    if kind.startswith("const"):
+        return [[int(kind[5:])] * w for _ in range(h)]
+    raise Failed("unknown image kind %s" % kind)
+
+
+def write_pgm(out, kind, encoding, w, h):
+    """A test image for --radius-map: KIND (pgm_levels) as ENCODING: p2, p5, p5-16
+    (maxval 65535, two bytes per pixel: level * 257, the same greys), or p2-comments and
+    p5-comments (comments in the header, and between the P2 pixels)."""
+    w, h = int(w), int(h)
+    rows = pgm_levels(kind, w, h)
+    with open(out, "wb") as f:
+        if encoding == "p2":
+            f.write(b"P2\n%d %d\n255\n" % (w, h))
+            for row in rows:
+                f.write((" ".join(str(v) for v in row) + "\n").encode())
+        elif encoding == "p2-comments":
+            f.write(b"P2 # plain\n# a comment line\n%d# width\n%d\n# maxval next\n255\n" % (w, h))
+            for row in rows:
+                f.write((" ".join(str(v) for v in row) + " # end of a row\n").encode())
+        elif encoding == "p5":
+            f.write(b"P5\n%d %d\n255\n" % (w, h) + bytes(v for row in rows for v in row))
+        elif encoding == "p5-comments":
+            # A comment right after maxval ends with the line break that delimits
+            # the raster (as Netpbm reads it); a blank there would be the delimiter.
+            f.write(b"P5\n# made by output_checks.py\n%d #w\n%d\n255# maxval\n" % (w, h)
+                    + bytes(v for row in rows for v in row))
+        elif encoding == "p5-16":
+            f.write(b"P5\n%d %d\n65535\n" % (w, h)
+                    + b"".join(struct.pack(">H", 257 * v) for row in rows for v in row))
+        else:
+            raise Failed("unknown encoding %s" % encoding)
+
+
+def check_field(ref_path, rmin, rmax, x0, y0, x1, y1, step):
+    """Radii within [rmin, rmax]; the rule |p_j - p_i| >= r_i for i < j; every probe of
+    a grid within r_i of some point i (the disks cover the domain: maximal)."""
+    ref = read_txt(ref_path)
+    rmin, rmax, step = float(rmin), float(rmax), float(step)
+    x0, y0, x1, y1 = (float(v) for v in (x0, y0, x1, y1))
+    check(len(ref) > 1 and all(len(p) == 3 for p in ref), "field: \"x y r\" lines")
+    for x, y, r in ref:
+        check(rmin <= r <= rmax, "field: radius %r outside [%r, %r]" % (r, rmin, rmax))
+        check(x0 <= x <= x1 and y0 <= y <= y1, "field: (%r, %r) outside the domain" % (x, y))
+    cells = {}
+    for i, (x, y, r) in enumerate(ref):
+        cells.setdefault((int((x - x0) // rmax), int((y - y0) // rmax)), []).append(i)
+
+    def near(x, y):
+        cx, cy = int((x - x0) // rmax), int((y - y0) // rmax)
+        for a in (-1, 0, 1):
+            for b in (-1, 0, 1):
+                yield from cells.get((cx + a, cy + b), ())
+
+    for j, (x, y, r) in enumerate(ref):
+        for i in near(x, y):
+            if i < j:
+                d = math.hypot(x - ref[i][0], y - ref[i][1])
+                check(d >= ref[i][2], "field: point %d at %r from point %d, inside its "
+                      "radius %r" % (j, d, i, ref[i][2]))
+    ny, nx = int((y1 - y0) / step) + 1, int((x1 - x0) / step) + 1
+    for a in range(nx):
+        for b in range(ny):
+            px, py = min(x1, x0 + a * step), min(y1, y0 + b * step)
+            check(any(math.hypot(px - ref[i][0], py - ref[i][1]) <= ref[i][2] for i in near(px, py)),
+                  "field: the probe (%r, %r) is outside every disk: not maximal" % (px, py))
+
+
+def check_gradient(ref_path, rmin, rmax, w):
+    """The radius of an hgrad map (black at the left) on the unit square, w = 256 columns so
+    that each column's grey is its index: linear in x from the first pixel centre (rmin) to
+    the last (rmax), clamped beyond."""
+    ref = read_txt(ref_path)
+    rmin, rmax, w = float(rmin), float(rmax), int(w)
+    for x, y, r in ref:
+        t = min(1.0, max(0.0, (x * w - 0.5) / (w - 1)))
+        want = rmin + (rmax - rmin) * t
+        check(abs(r - want) <= 1e-9 * rmax, "gradient: radius %r at x = %r, expected %r"
+              % (r, x, want))
+
+
 CHECKS = {
     "formats": check_formats, "svg": check_svg, "png": check_png,
     "spectrum-png": check_spectrum_png, "spectrum-csv": check_spectrum_csv,
     "plot": check_plot, "stats": check_stats, "white": write_white,
+    "pgm": write_pgm, "field": check_field, "gradient": check_gradient,
 }
 
 if __name__ == "__main__":

@@ -77,16 +77,21 @@ static int group_synopsis(char *buf, size_t size, const struct cli_table *t, siz
     return (int)strlen(buf);
 }
 
-/* The CLI_ONE_OF names joined with sep: "--a or --b". */
-static void group_names(char *buf, size_t size, const struct cli_table *t, const char *sep)
+/* The CLI_ONE_OF names joined with sep, the last with last: "--a, --b or --c". */
+static void group_names(char *buf, size_t size, const struct cli_table *t, const char *sep,
+                        const char *last)
 {
-    size_t k, len = 0;
+    size_t k, len = 0, left = 0;
 
     buf[0] = '\0';
     for (k = 0; k < t->count; k++)
-        if ((t->options[k].flags & CLI_ONE_OF) && len < size)
-            len += (size_t)snprintf(buf + len, size - len, "%s%s", len > 0 ? sep : "",
-                                    t->options[k].name);
+        left += (t->options[k].flags & CLI_ONE_OF) != 0;
+    for (k = 0; k < t->count; k++)
+        if ((t->options[k].flags & CLI_ONE_OF) && len < size) {
+            left--;
+            len += (size_t)snprintf(buf + len, size - len, "%s%s",
+                                    len == 0 ? "" : left == 0 ? last : sep, t->options[k].name);
+        }
 }
 
 void cli_print_usage(const struct cli_table *t, FILE *f)
@@ -140,7 +145,7 @@ void cli_print_help(const struct cli_table *t, FILE *f)
             wrap_words(&w, "(required)");
         if (opt->flags & CLI_ONE_OF) {
             char names[80], text[120];
-            group_names(names, sizeof names, t, ", ");
+            group_names(names, sizeof names, t, ", ", ", ");
             snprintf(text, sizeof text, "(required: exactly one of %s)", names);
             wrap_words(&w, text);
         }
@@ -307,7 +312,7 @@ int cli_parse(const struct cli_table *t, int argc, char **argv, void *ctx)
     }
     if (has_group && chosen == NULL) {
         char names[80];
-        group_names(names, sizeof names, t, " or ");
+        group_names(names, sizeof names, t, ", ", " or ");
         return cli_usage_error(t, "one of %s is required", names);
     }
     return CLI_OK;

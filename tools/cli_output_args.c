@@ -39,6 +39,12 @@ int cli_outputs_option(struct cli_outputs *o, const char *name, const char *valu
         o->disks = 1;
         return CLI_OK;
     }
+    if (strcmp(name, "--radii") == 0) {
+        o->radii = 1;
+        return CLI_OK;
+    }
+    if (strcmp(name, "--dot-radius") == 0)
+        return cli_parse_double(value, &o->dot) == 0 && o->dot > 0 ? CLI_OK : CLI_BAD(0);
     if (strcmp(name, "--format") == 0)
         return cli_format_parse(value, &o->format) == 0 ? CLI_OK : CLI_BAD(0);
     if (strcmp(name, "--size") == 0)
@@ -79,8 +85,10 @@ const char *cli_outputs_check(const struct cli_outputs *o, const struct cli_stag
                           : o->patterns > 1 ? "--patterns"
                           : o->format != CLI_FORMAT_TXT ? "--format"
                           : o->output != NULL ? "--output"
+                          : o->radii ? "--radii"
                           : o->svg != NULL ? "--svg"
-                          : o->png != NULL ? "--png" : NULL;
+                          : o->png != NULL ? "--png"
+                          : o->dot > 0 ? "--dot-radius" : NULL;
         if (other != NULL)
             snprintf(msg, size, "%s cannot be used with --spectrum-from: the patterns are read, "
                                 "not made", other);
@@ -91,6 +99,10 @@ const char *cli_outputs_check(const struct cli_outputs *o, const struct cli_stag
     }
     if (o->disks && o->svg == NULL) {
         snprintf(msg, size, "--disks needs --svg");
+        return msg;
+    }
+    if (o->dot > 0 && o->svg == NULL && o->png == NULL) {
+        snprintf(msg, size, "--dot-radius needs --svg or --png");
         return msg;
     }
     if (o->patterns > 1 && !spectrum) {

@@ -32,7 +32,7 @@ int cli_write_points(const char *prog, const pds_sampler *s, const struct cli_ou
     if (o->output != NULL && (f = fopen(o->output, "wb")) == NULL)
         return write_failed(prog, o->output);
     errno = 0;
-    rc = cli_format_write(f, o->format, s, w->box, w->periodic);
+    rc = cli_format_write(f, o->format, s, w->box, w->periodic, o->radii);
     if (f != stdout && fclose(f) != 0)
         rc = -1;
     if (rc != 0) {
@@ -49,13 +49,18 @@ int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_
                        const struct cli_where *w)
 {
     struct pattern p;
-    double *xy;
+    double *xy, *radii = NULL;
     int status = 0;
 
     if (o->svg == NULL && o->png == NULL)
         return 0;
     p.n = pds_count(s);
-    if ((xy = malloc((p.n > 0 ? p.n : 1) * 2 * sizeof *xy)) == NULL) {
+    xy = malloc((p.n > 0 ? p.n : 1) * 2 * sizeof *xy);
+    if (w->field != NULL)
+        radii = malloc((p.n > 0 ? p.n : 1) * sizeof *radii);
+    if (xy == NULL || (w->field != NULL && radii == NULL)) {
+        free(xy);
+        free(radii);
         fprintf(stderr, "%s: out of memory for the pictures\n", prog);
         return CLI_EXIT_LIBRARY;
     }
@@ -63,11 +68,19 @@ int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_
     p.xy = xy;
     p.box = w->box;
     p.radius = pds_radius(s);
+    p.radii = radii;
+    p.rmin = p.radius;
+    if (radii != NULL) {
+        pds_radii(s, 0, p.n, radii);
+        p.rmin = cli_field_smallest(w->field, p.radius);
+    }
+    p.dot = o->dot;
     p.periodic = w->periodic;
     if (o->svg != NULL && pattern_write_svg(&p, o->disks, o->svg) != 0)
         status = write_failed(prog, o->svg);
     if (status == 0 && o->png != NULL && pattern_write_png(&p, o->size, o->png) != 0)
         status = write_failed(prog, o->png);
     free(xy);
+    free(radii);
     return status;
 }

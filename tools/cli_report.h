@@ -11,11 +11,14 @@
 
 #include "poissondisk.h"
 
+#include "cli_field.h"
+
 /* Where the points go, as the command line gave it. */
 struct cli_where {
     double box[4]; /* --domain: x0 y0 x1 y1 */
     int periodic;  /* --periodic: a torus, the points in [x0,x1)x[y0,y1) */
-    size_t count;  /* --count N, or 0 when --radius gives the radius */
+    size_t count;  /* --count N, or 0 when --radius or --radius-map gives the radius */
+    const struct cli_field *field; /* --radius-map, once loaded; NULL: one radius */
 };
 
 /*
@@ -29,6 +32,12 @@ struct cli_where {
  * and the seconds spent sampling. In count mode maximality is asked of the
  * library, as a run that reached N points does not tell it. The distances
  * need a copy of the points (16 bytes each) while they are computed.
+ * With a radius map (w->field) the radius is "R=RMIN..RMAX (radius map)",
+ * the smallest and largest radius of the field, and the spacing is in units
+ * of the points' own radii r_i (the suffix "r"): packing sum(pi r_i^2)/(4A),
+ * min_dist the least |p_j - p_i| / r_i over the pairs i < j (at least 1 by
+ * the rule), mean_nn the mean nearest-neighbour distance over the point's
+ * own radius (pattern_field_stats); with equal radii, the values above.
  */
 void cli_print_stats(const char *prog, const pds_sampler *s, const struct cli_where *w,
                      int maximal, int verified, double seconds);

@@ -38,6 +38,12 @@ int cli_configure(const char *prog, pds_sampler *s, const struct cli_where *w, d
         fprintf(stderr, "%s: cannot make the domain periodic: %s\n", prog, pds_errmsg(s));
         return CLI_EXIT_LIBRARY;
     }
+    if (w->field != NULL
+        && (rc = pds_set_radius_map(s, w->field->w, w->field->h, w->field->r)) < 0) {
+        fprintf(stderr, "%s: cannot use --radius-map %s: %s\n", prog, w->field->path,
+                pds_errmsg(s));
+        return rc == PDS_EINVAL ? CLI_EXIT_USAGE : CLI_EXIT_LIBRARY;
+    }
     if (w->count > 0 && (rc = pds_set_count(s, w->count)) < 0) {
         fprintf(stderr, "%s: cannot ask for --count %zu: %s\n", prog, w->count, pds_errmsg(s));
         return rc == PDS_EINVAL ? CLI_EXIT_USAGE : CLI_EXIT_LIBRARY;

@@ -29,7 +29,8 @@ enum { CLI_EXIT_LIBRARY = 1, CLI_EXIT_INTERRUPTED = 130 };
 
 /* The stages the command line asks for. */
 struct cli_stages {
-    double radius;     /* --radius; the library ignores it in count mode */
+    double radius;     /* --radius; the library ignores it in count mode and with a
+                          radius map */
     double *refine;    /* the --refine radii in command-line order */
     size_t nrefine;
     size_t max_points; /* 0: no cap (the option itself rejects 0) */
@@ -46,7 +47,10 @@ struct cli_stages {
 int cli_library_error(const char *prog, const struct cli_where *w, int rc, const char *what,
                       double value, const char *msg);
 
-/* Sets the domain, --periodic and --count on a new sampler. Returns 0 or an exit status. */
+/*
+ * Sets the domain, --periodic, the radius map and --count on a new sampler.
+ * Returns 0 or an exit status.
+ */
 int cli_configure(const char *prog, pds_sampler *s, const struct cli_where *w, double radius);
 
 /*

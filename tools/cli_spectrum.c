@@ -83,7 +83,9 @@ int cli_write_spectrum(const char *prog, const pds_sampler *s, const struct cli_
                        const struct cli_where *w, const struct cli_stages *st, uint64_t seed)
 {
     struct spectrum sp;
-    double radius = pds_radius(s);
+    /* With a radius map, the smallest radius: the grid then reaches past every ring. */
+    double radius = w->field != NULL ? cli_field_smallest(w->field, pds_radius(s))
+                                     : pds_radius(s);
     unsigned k;
     int status = 0;
 

@@ -45,12 +45,12 @@ static void put_le64(unsigned char *p, double v)
  * uint16), then a Python dict literal padded with blanks and ended by a
  * newline so that the data starts on a multiple of 64 bytes.
  */
-static int write_npy_header(FILE *f, size_t n)
+static int write_npy_header(FILE *f, size_t n, int columns)
 {
     char dict[128];
     unsigned char pre[10] = { 0x93, 'N', 'U', 'M', 'P', 'Y', 1, 0, 0, 0 };
     int len = snprintf(dict, sizeof dict, "{'descr': '<f8', 'fortran_order': False, "
-                                          "'shape': (%zu, 2), }", n);
+                                          "'shape': (%zu, %d), }", n, columns);
     size_t total = (10 + (size_t)len + 1 + 63) / 64 * 64; /* +1: the newline */
     size_t hlen = total - 10;
 
@@ -66,53 +66,66 @@ static int write_npy_header(FILE *f, size_t n)
 
 /* What comes before the first point. */
 static int write_head(FILE *f, enum cli_format fmt, const pds_sampler *s, const double *box,
-                      int periodic)
+                      int periodic, int radii)
 {
     switch (fmt) {
     case CLI_FORMAT_CSV:
-        return fputs("x,y\n", f) < 0 ? -1 : 0;
+        return fputs(radii ? "x,y,r\n" : "x,y\n", f) < 0 ? -1 : 0;
     case CLI_FORMAT_JSON:
         return fprintf(f, "{\"radius\": %.17g, \"domain\": [%.17g, %.17g, %.17g, %.17g], "
                           "\"periodic\": %s, \"count\": %zu, \"points\": [",
                        pds_radius(s), box[0], box[1], box[2], box[3],
                        periodic ? "true" : "false", pds_count(s)) < 0 ? -1 : 0;
     case CLI_FORMAT_NPY:
-        return write_npy_header(f, pds_count(s));
+        return write_npy_header(f, pds_count(s), radii ? 3 : 2);
     default:
         return 0;
     }
 }
 
-/* One point; index is its rank in the output (json puts commas between). */
-static int write_point(FILE *f, enum cli_format fmt, double x, double y, size_t index)
+/*
+ * One point; index is its rank in the output (json puts commas between);
+ * r its radius, written when radii is nonzero.
+ */
+static int write_point(FILE *f, enum cli_format fmt, double x, double y, double r, int radii,
+                       size_t index)
 {
-    unsigned char raw[16];
+    unsigned char raw[24];
+    size_t bytes = radii ? 24 : 16;
 
     switch (fmt) {
     case CLI_FORMAT_TXT:
-        return fprintf(f, "%.17g %.17g\n", x, y) < 0 ? -1 : 0;
+        return (radii ? fprintf(f, "%.17g %.17g %.17g\n", x, y, r)
+                      : fprintf(f, "%.17g %.17g\n", x, y)) < 0 ? -1 : 0;
     case CLI_FORMAT_CSV:
-        return fprintf(f, "%.17g,%.17g\n", x, y) < 0 ? -1 : 0;
+        return (radii ? fprintf(f, "%.17g,%.17g,%.17g\n", x, y, r)
+                      : fprintf(f, "%.17g,%.17g\n", x, y)) < 0 ? -1 : 0;
     case CLI_FORMAT_JSON:
-        return fprintf(f, "%s[%.17g, %.17g]", index > 0 ? ", " : "", x, y) < 0 ? -1 : 0;
+        return (radii ? fprintf(f, "%s[%.17g, %.17g, %.17g]", index > 0 ? ", " : "", x, y, r)
+                      : fprintf(f, "%s[%.17g, %.17g]", index > 0 ? ", " : "", x, y)) < 0 ? -1
+                                                                                      : 0;
     default: /* bin, npy */
         put_le64(raw, x);
         put_le64(raw + 8, y);
-        return fwrite(raw, 1, sizeof raw, f) == sizeof raw ? 0 : -1;
+        put_le64(raw + 16, r);
+        return fwrite(raw, 1, bytes, f) == bytes ? 0 : -1;
     }
 }
 
 int cli_format_write(FILE *f, enum cli_format fmt, const pds_sampler *s, const double box[4],
-                     int periodic)
+                     int periodic, int radii)
 {
-    static double xy[2 * CHUNK_POINTS];
+    static double xy[2 * CHUNK_POINTS], r[CHUNK_POINTS];
     size_t first = 0, got, k;
 
-    if (write_head(f, fmt, s, box, periodic) != 0)
+    if (write_head(f, fmt, s, box, periodic, radii) != 0)
         return -1;
     while ((got = pds_points(s, first, CHUNK_POINTS, xy)) > 0) {
+        if (radii && pds_radii(s, first, got, r) != got)
+            return -1;
         for (k = 0; k < got; k++)
-            if (write_point(f, fmt, xy[2 * k], xy[2 * k + 1], first + k) != 0)
+            if (write_point(f, fmt, xy[2 * k], xy[2 * k + 1], radii ? r[k] : 0.0, radii,
+                            first + k) != 0)
                 return -1;
         first += got;
     }

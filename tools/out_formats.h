@@ -10,6 +10,10 @@
  *   npy   NumPy format 1.0, dtype '<f8', C order, shape (N, 2):
  *         numpy.load() reads it as is
  *
+ * With radii (--radii) each point carries its radius (pds_radii) as a third
+ * value: "x y r" lines, csv header "x,y,r", json [x, y, r], bin x y r
+ * triples, npy shape (N, 3).
+ *
  * Points are always written in insertion order, fetched from the sampler a
  * bounded number at a time, so any N needs the same memory. Public API only;
  * plain C99.
@@ -30,11 +34,12 @@ int cli_format_parse(const char *name, enum cli_format *out);
 int cli_format_is_binary(enum cli_format fmt);
 
 /*
- * Writes every point of s to f in format fmt. box (x0 y0 x1 y1) and periodic
- * are only recorded (json). Returns 0, or -1 on a write error (errno tells
- * which); f is flushed but not closed.
+ * Writes every point of s to f in format fmt, each with its radius when
+ * radii is nonzero. box (x0 y0 x1 y1) and periodic are only recorded (json).
+ * Returns 0, or -1 on a write error (errno tells which); f is flushed but
+ * not closed.
  */
 int cli_format_write(FILE *f, enum cli_format fmt, const pds_sampler *s, const double box[4],
-                     int periodic);
+                     int periodic, int radii);
 
 #endif /* POISSONDISK_OUT_FORMATS_H */

@@ -8,12 +8,20 @@
 
 #include <stddef.h>
 
-/* A pattern to draw: n points (x,y interleaved) in box (x0 y0 x1 y1). */
+/*
+ * A pattern to draw: n points (x,y interleaved) in box (x0 y0 x1 y1), with
+ * the radius R, or with each point's own radius (a radius map: radii[k]
+ * for point k, R then the largest). The dots are drawn with radius dot, the
+ * same for every point (0: the picture's default, R/8 or R/5).
+ */
 struct pattern {
     const double *xy;
     size_t n;
     const double *box;
     double radius;
+    const double *radii; /* NULL: every point has the radius R */
+    double rmin;         /* with radii: the smallest radius of the field */
+    double dot;          /* the dots' radius in the domain's units; 0: default */
     int periodic;
 };
 
@@ -26,19 +34,23 @@ struct pattern {
  *   rect id="domain"        the domain's box;
  *   g id="disks"            with disks: one circle of radius R/2 per point,
  *                           in point order (no two overlap: the points are
- *                           at least R apart);
+ *                           at least R apart); with radii, of radius r_k/2
+ *                           (these may overlap where the radius grows: a
+ *                           later point keeps only out of the earlier
+ *                           point's disk);
  *   g id="disk-copies"      with disks on a torus: the copies, shifted by
  *                           whole periods, of the disks that cross a side,
  *                           clipped to the box so the picture tiles;
- *   g id="points"           one small circle (radius R/8) per point, in
- *                           point order.
+ *   g id="points"           one small circle per point, in point order, of
+ *                           radius dot (default R/8, with radii rmin/8).
  * Returns 0, or -1 with errno set.
  */
 int pattern_write_svg(const struct pattern *p, int disks, const char *path);
 
 /*
  * The PNG raster (pattern_png.c), 8-bit grey: white background, each point a
- * black dot of radius R/5 but at least 1 pixel, anti-aliased (4 x 4 samples
+ * black dot of radius dot (default R/5, with radii rmin/5) but at least 1
+ * pixel, anti-aliased (4 x 4 samples
  * per pixel); on a torus the dots crossing a side also show on the other
  * side. The longer side of the domain is size pixels, the other one keeps
  * the aspect ratio (at least 1 pixel). Returns 0, or -1 with errno set.

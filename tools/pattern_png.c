@@ -52,7 +52,8 @@ int pattern_write_png(const struct pattern *p, unsigned size, const char *path)
     double scale = size / (w > h ? w : h); /* pixels per unit length */
     unsigned pw = w >= h ? size : (unsigned)fmax(1.0, floor(w * scale + 0.5));
     unsigned ph = h >= w ? size : (unsigned)fmax(1.0, floor(h * scale + 0.5));
-    double r = fmax(p->radius / 5 * scale, 1.0);
+    double dot_r = p->dot > 0 ? p->dot : (p->radii != NULL ? p->rmin : p->radius) / 5;
+    double r = fmax(dot_r * scale, 1.0);
     unsigned char *pix = malloc((size_t)pw * ph);
     size_t k;
     int i, j, rc;

@@ -35,8 +35,13 @@ static double diff(double a, double b, double period, int periodic)
     return d;
 }
 
-/* Squared distance from point i to its nearest other point in cell (cx, cy). */
-static double nearest_in_cell(const struct grid *g, size_t i, long cx, long cy, double best)
+/*
+ * The least squared distance from point i to another point j in cell (cx,
+ * cy), below best; with radii (not NULL), in units of the radius of the
+ * earlier point of the pair: d^2 / radii[min(i, j)]^2.
+ */
+static double nearest_in_cell(const struct grid *g, const double *radii, size_t i, long cx,
+                              long cy, double best)
 {
     size_t c, k;
 
@@ -55,35 +60,45 @@ static double nearest_in_cell(const struct grid *g, size_t i, long cx, long cy, 
         dx = diff(g->xy[2 * i], g->xy[2 * j], g->w, g->periodic);
         dy = diff(g->xy[2 * i + 1], g->xy[2 * j + 1], g->h, g->periodic);
         d2 = dx * dx + dy * dy;
+        if (radii != NULL) {
+            double r = radii[i < j ? i : j];
+            d2 /= r * r;
+        }
         if (d2 < best)
             best = d2;
     }
     return best;
 }
 
-/* The nearest neighbour of point i, searched ring by ring around its cell. */
-static double nearest(const struct grid *g, size_t i)
+/*
+ * The nearest neighbour of point i, searched ring by ring around its cell:
+ * its distance; with radii, the least distance in units of the earlier
+ * point's radius (rmax the largest radius).
+ */
+static double nearest(const struct grid *g, size_t i, const double *radii, double rmax)
 {
     long cx = cell_of(g->xy[2 * i], g->x0, g->cw, g->nx);
     long cy = cell_of(g->xy[2 * i + 1], g->y0, g->ch, g->ny);
     long widest = g->nx > g->ny ? g->nx : g->ny, ring, a;
-    double best = HUGE_VAL, side = g->cw < g->ch ? g->cw : g->ch;
+    double best = HUGE_VAL, side = g->cw < g->ch ? g->cw : g->ch, reach;
 
     for (ring = 0;; ring++) {
         if (ring == 0) {
-            best = nearest_in_cell(g, i, cx, cy, best);
+            best = nearest_in_cell(g, radii, i, cx, cy, best);
         } else {
             for (a = -ring; a <= ring; a++) {
-                best = nearest_in_cell(g, i, cx + a, cy - ring, best);
-                best = nearest_in_cell(g, i, cx + a, cy + ring, best);
+                best = nearest_in_cell(g, radii, i, cx + a, cy - ring, best);
+                best = nearest_in_cell(g, radii, i, cx + a, cy + ring, best);
             }
             for (a = -ring + 1; a <= ring - 1; a++) {
-                best = nearest_in_cell(g, i, cx - ring, cy + a, best);
-                best = nearest_in_cell(g, i, cx + ring, cy + a, best);
+                best = nearest_in_cell(g, radii, i, cx - ring, cy + a, best);
+                best = nearest_in_cell(g, radii, i, cx + ring, cy + a, best);
             }
         }
-        /* Every cell of the next ring is at least ring cell sides away. */
-        if (best <= ((double)ring * side) * ((double)ring * side))
+        /* Every cell of the next ring is at least ring cell sides away (with
+           radii: at least that over rmax in units of a radius). */
+        reach = (double)ring * side / (radii != NULL ? rmax : 1.0);
+        if (best <= reach * reach)
             break;
         /* Every cell seen: on a torus once 2 ring + 1 spans the grid. */
         if (g->periodic ? 2 * ring + 1 >= widest : ring >= widest)
@@ -92,16 +107,14 @@ static double nearest(const struct grid *g, size_t i)
     return sqrt(best);
 }
 
-int pattern_nn_stats(const double *xy, size_t n, const double box[4], int periodic, double r,
-                     double *min_dist, double *mean_nn)
+/* Sorts the n points into a grid of about one point per cell, cells at least r wide. */
+static int grid_build(struct grid *g_out, const double *xy, size_t n, const double box[4],
+                      int periodic, double r)
 {
     struct grid g;
-    double cell, sum = 0.0, least = HUGE_VAL;
+    double cell;
     size_t k, ncells;
 
-    *min_dist = *mean_nn = NAN;
-    if (n < 2)
-        return 1;
     g.xy = xy;
     g.x0 = box[0];
     g.y0 = box[1];
@@ -137,14 +150,54 @@ int pattern_nn_stats(const double *xy, size_t n, const double box[4], int period
     for (k = ncells; k > 0; k--) /* the fill moved each start to the next one's */
         g.start[k] = g.start[k - 1];
     g.start[0] = 0;
+    *g_out = g;
+    return 0;
+}
+
+int pattern_nn_stats(const double *xy, size_t n, const double box[4], int periodic, double r,
+                     double *min_dist, double *mean_nn)
+{
+    struct grid g;
+    double sum = 0.0, least = HUGE_VAL;
+    size_t k;
+
+    *min_dist = *mean_nn = NAN;
+    if (n < 2)
+        return 1;
+    if (grid_build(&g, xy, n, box, periodic, r) != 0)
+        return -1;
     for (k = 0; k < n; k++) {
-        double d = nearest(&g, k);
+        double d = nearest(&g, k, NULL, 1.0);
         sum += d;
         least = d < least ? d : least;
     }
     free(g.start);
     free(g.order);
     *min_dist = least;
+    *mean_nn = sum / (double)n;
+    return 0;
+}
+
+int pattern_field_stats(const double *xy, const double *radii, size_t n, const double box[4],
+                        double rmin, double rmax, double *min_rule, double *mean_nn)
+{
+    struct grid g;
+    double sum = 0.0, least = HUGE_VAL;
+    size_t k;
+
+    *min_rule = *mean_nn = NAN;
+    if (n < 2)
+        return 1;
+    if (grid_build(&g, xy, n, box, 0, rmin) != 0)
+        return -1;
+    for (k = 0; k < n; k++) {
+        double rule = nearest(&g, k, radii, rmax);
+        sum += nearest(&g, k, NULL, 1.0) / radii[k];
+        least = rule < least ? rule : least;
+    }
+    free(g.start);
+    free(g.order);
+    *min_rule = least;
     *mean_nn = sum / (double)n;
     return 0;
 }

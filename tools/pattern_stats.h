@@ -23,4 +23,17 @@
 int pattern_nn_stats(const double *xy, size_t n, const double box[4], int periodic, double r,
                      double *min_dist, double *mean_nn);
 
+/*
+ * The same for a pattern with a radius per point (a radius map: radii[k]
+ * for point k, from rmin to rmax), in units of the radii, on a plain
+ * rectangle: *min_rule is the least |p_j - p_i| / r_i over the pairs i < j
+ * (the variable-radius rule asks at least 1: a later point keeps out of
+ * every earlier point's disk), *mean_nn the mean over the points of the
+ * nearest-neighbour distance divided by the point's own radius. With equal
+ * radii R both are pattern_nn_stats's values over R. Returns as
+ * pattern_nn_stats.
+ */
+int pattern_field_stats(const double *xy, const double *radii, size_t n, const double box[4],
+                        double rmin, double rmax, double *min_rule, double *mean_nn);
+
 #endif /* POISSONDISK_PATTERN_STATS_H */

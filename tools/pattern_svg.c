@@ -7,18 +7,23 @@
 
 #define LONG_SIDE_PX 800.0
 
-/* Circles at the points shifted by (dx, dy), those of radius r that reach the box. */
-static int circles(FILE *f, const struct pattern *p, double r, double dx, double dy)
+/*
+ * Circles at the points shifted by (dx, dy), those that reach the box: of
+ * radius r, or with radii (not NULL) of radius radii[k] * r for point k.
+ */
+static int circles(FILE *f, const struct pattern *p, double r, const double *radii, double dx,
+                   double dy)
 {
     const double *b = p->box;
     size_t k;
 
     for (k = 0; k < p->n; k++) {
         double x = p->xy[2 * k] + dx, y = p->xy[2 * k + 1] + dy;
-        if (x + r <= b[0] || x - r >= b[2] || y + r <= b[1] || y - r >= b[3])
+        double rk = radii != NULL ? radii[k] * r : r;
+        if (x + rk <= b[0] || x - rk >= b[2] || y + rk <= b[1] || y - rk >= b[3])
             continue;
         if (fprintf(f, "<circle cx=\"%.10g\" cy=\"%.10g\" r=\"%.10g\"/>\n", x,
-                    b[1] + b[3] - y, r) < 0)
+                    b[1] + b[3] - y, rk) < 0)
             return -1;
     }
     return 0;
@@ -31,6 +36,7 @@ int pattern_write_svg(const struct pattern *p, int disks, const char *path)
     double line = longer / 1000.0, margin = p->radius / 2 + line;
     double vw = w + 2 * margin, vh = h + 2 * margin;
     double scale = LONG_SIDE_PX / (vw > vh ? vw : vh);
+    double dot = p->dot > 0 ? p->dot : (p->radii != NULL ? p->rmin : p->radius) / 8;
     FILE *f = fopen(path, "w");
     int rc = 0, i, j;
 
@@ -40,9 +46,14 @@ int pattern_write_svg(const struct pattern *p, int disks, const char *path)
                "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
                "width=\"%.0f\" height=\"%.0f\" viewBox=\"%.10g %.10g %.10g %.10g\">\n",
             vw * scale, vh * scale, b[0] - margin, b[1] - margin, vw, vh);
-    fprintf(f, "<title>poissondisk: %zu points, R = %.10g, domain [%.10g,%.10g]x[%.10g,%.10g]"
-               "%s</title>\n", p->n, p->radius, b[0], b[2], b[1], b[3],
-            p->periodic ? ", periodic" : "");
+    if (p->radii != NULL)
+        fprintf(f, "<title>poissondisk: %zu points, radius map from %.10g to %.10g, domain "
+                   "[%.10g,%.10g]x[%.10g,%.10g]</title>\n", p->n, p->rmin, p->radius, b[0],
+                b[2], b[1], b[3]);
+    else
+        fprintf(f, "<title>poissondisk: %zu points, R = %.10g, domain "
+                   "[%.10g,%.10g]x[%.10g,%.10g]%s</title>\n", p->n, p->radius, b[0], b[2],
+                b[1], b[3], p->periodic ? ", periodic" : "");
     fprintf(f, "<desc>y grows upwards: the point (x, y) is drawn at (x, %.10g - y)</desc>\n",
             b[1] + b[3]);
     fprintf(f, "<defs><clipPath id=\"box\"><rect x=\"%.10g\" y=\"%.10g\" width=\"%.10g\" "
@@ -56,7 +67,7 @@ int pattern_write_svg(const struct pattern *p, int disks, const char *path)
         fprintf(f, "<g id=\"disks\" fill=\"#bcd3ee\" fill-opacity=\"0.8\" stroke=\"#2b5d9b\" "
                    "stroke-width=\"%.10g\"%s>\n", line / 2,
                 p->periodic ? " clip-path=\"url(#box)\"" : "");
-        rc |= circles(f, p, p->radius / 2, 0, 0);
+        rc |= circles(f, p, p->radii != NULL ? 0.5 : p->radius / 2, p->radii, 0, 0);
         fputs("</g>\n", f);
         if (p->periodic) {
             fprintf(f, "<g id=\"disk-copies\" fill=\"#bcd3ee\" fill-opacity=\"0.8\" "
@@ -65,12 +76,13 @@ int pattern_write_svg(const struct pattern *p, int disks, const char *path)
             for (i = -1; i <= 1; i++)
                 for (j = -1; j <= 1; j++)
                     if (i != 0 || j != 0)
-                        rc |= circles(f, p, p->radius / 2, i * w, j * h);
+                        rc |= circles(f, p, p->radii != NULL ? 0.5 : p->radius / 2,
+                                      p->radii, i * w, j * h);
             fputs("</g>\n", f);
         }
     }
     fputs("<g id=\"points\" fill=\"black\">\n", f);
-    rc |= circles(f, p, p->radius / 8, 0, 0);
+    rc |= circles(f, p, dot, NULL, 0, 0);
     fputs("</g>\n</svg>\n", f);
     if (ferror(f))
         rc = -1;

@@ -6,7 +6,9 @@
  * as exactly the same double. Optional refinement stages (--refine) continue
  * the same pattern at smaller radii; --max-points caps the total. --count
  * lets the library choose the radius for an exact number of points instead,
- * and --periodic makes the pattern tile the plane. --format and --output
+ * and --periodic makes the pattern tile the plane; --radius-map gives each
+ * point a radius of its own, from a grey-scale image (cli_field.c: black
+ * dense, white sparse, as a stippling). --format and --output
  * choose how and where the points go; --svg, --png and the --spectrum
  * options draw and analyse the pattern (cli_outputs.c, cli_spectrum.c).
  *
@@ -52,6 +54,7 @@ enum action { ACT_SAMPLE, ACT_HELP, ACT_VERSION };
 struct options {
     uint64_t seed;
     struct cli_where where;   /* --domain, --periodic, --count */
+    struct cli_field field;   /* --radius-map, --rmin, --rmax */
     struct cli_stages stages; /* --radius, --refine, --max-points, --progress */
     struct cli_outputs out;   /* --format, --output, --svg, --png, --spectrum... */
     int verify;
@@ -78,6 +81,22 @@ static int opt_refine(void *ctx, const struct cli_option *opt, const char *const
     struct cli_stages *st = &((struct options *)ctx)->stages;
     (void)opt;
     return parse_radius(v[0], &st->refine[st->nrefine++]);
+}
+
+static int opt_radius_map(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    (void)opt;
+    if (v[0][0] == '\0')
+        return CLI_BAD(0);
+    ((struct options *)ctx)->field.path = v[0];
+    return CLI_OK;
+}
+
+/* --rmin and --rmax: the radii of black and white in the map. */
+static int opt_field_radius(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    struct cli_field *f = &((struct options *)ctx)->field;
+    return parse_radius(v[0], strcmp(opt->name, "--rmin") == 0 ? &f->rmin : &f->rmax);
 }
 
 static int opt_seed(void *ctx, const struct cli_option *opt, const char *const *v)
@@ -164,6 +183,16 @@ static const struct cli_option option_list[] = {
       "spread: it lowers the radius by up to 1% whenever the pattern is maximal with "
       "fewer; every pair is at least the final radius apart (--stats shows it); "
       "not with --refine" },
+    { "--radius-map", 1, "FILE", CLI_ONE_OF, NULL, opt_radius_map, "a file name",
+      "a variable radius from a grey-scale PGM image (P2 or P5; - for standard input) "
+      "stretched over the domain, its top row along Y1: a point's radius is the map's "
+      "at the point, linear in the grey level from --rmin (black: the densest points) "
+      "to --rmax (white), bilinear between pixel centres, and each later point keeps "
+      "out of every earlier point's disk; needs --rmin and --rmax; not with --periodic" },
+    { "--rmin", 1, "R", 0, NULL, opt_field_radius, "a finite number > 0",
+      "with --radius-map, the radius of black (grey level 0), a finite number > 0" },
+    { "--rmax", 1, "R", 0, NULL, opt_field_radius, "a finite number > 0",
+      "with --radius-map, the radius of white (the image's maxval), at least --rmin" },
     { "--seed", 1, "S", 0, "1", opt_seed, "an unsigned 64-bit decimal integer",
       "random seed, an unsigned 64-bit decimal integer" },
     { "--domain", 4, "X0 Y0 X1 Y1", 0, "0 0 1 1", opt_domain, "a finite number",
@@ -174,7 +203,9 @@ static const struct cli_option option_list[] = {
       "shorter side" },
     { "--refine", 1, "R2", CLI_REPEAT, NULL, opt_refine, "a finite number > 0",
       "when the pattern is maximal, continue at the smaller radius R2 keeping every "
-      "point; may be repeated, each R2 no larger than the radius before it" },
+      "point; may be repeated, each R2 no larger than the radius before it; with "
+      "--radius-map, R2 is the new largest radius: every radius, the points' too, is "
+      "scaled by R2 over the largest" },
     { "--max-points", 1, "N", 0, NULL, opt_max_points, "a positive integer",
       "stop after N points in total (N > 0); the pattern may then not be maximal" },
     { "--verify", 0, NULL, 0, NULL, opt_flag, NULL,
@@ -195,12 +226,20 @@ static const struct cli_option option_list[] = {
       "(NumPy, float64, shape (N, 2)); bin and npy refuse a terminal" },
     { "--output", 1, "FILE", 0, NULL, opt_output, "a file name",
       "write the points to FILE instead of standard output" },
+    { "--radii", 0, NULL, 0, NULL, opt_output, NULL,
+      "add each point's radius as a third value: \"x y r\" lines, csv header x,y,r, "
+      "json [x, y, r], bin x,y,r triples, npy shape (N, 3); with --radius-map the "
+      "radius of the map at the point, else R" },
     { "--svg", 1, "FILE", 0, NULL, opt_output, "a file name",
       "also draw the pattern as SVG: the domain's box and a dot per point, y upwards" },
     { "--disks", 0, NULL, 0, NULL, opt_output, NULL,
       "with --svg, draw each point's disk of radius R/2 (no two overlap)" },
     { "--png", 1, "FILE", 0, NULL, opt_output, "a file name",
       "also draw the points as a grey-scale PNG, black dots on white" },
+    { "--dot-radius", 1, "D", 0, NULL, opt_output, "a finite number > 0",
+      "the radius of the dots drawn at the points by --svg and --png, in the domain's "
+      "units, the same for every point (default: R/8 in SVG, R/5 in PNG, with "
+      "--radius-map the smallest radius in place of R)" },
     { "--size", 1, "PX", 0, "512", opt_output, "an integer from 1 to 16384",
       "the side of the PNG pictures in pixels (for --png the longer side; the aspect "
       "ratio is kept)" },
@@ -244,6 +283,7 @@ static const struct cli_table cli = {
 static int parse_args(int argc, char **argv, struct options *o)
 {
     struct cli_stages *st = &o->stages;
+    const struct cli_field *f = &o->field;
     char why[160];
     size_t k;
     int rc;
@@ -256,6 +296,22 @@ static int parse_args(int argc, char **argv, struct options *o)
     }
     if ((rc = cli_parse(&cli, argc, argv, o)) != 0)
         return rc;
+    if (f->path == NULL && (f->rmin > 0 || f->rmax > 0))
+        return cli_usage_error(&cli, "%s needs --radius-map", f->rmin > 0 ? "--rmin" : "--rmax");
+    if (f->path != NULL) {
+        if (f->rmin == 0 || f->rmax == 0)
+            return cli_usage_error(&cli, "--radius-map needs --rmin and --rmax, the radii of "
+                                   "black and of white");
+        if (f->rmin > f->rmax)
+            return cli_usage_error(&cli, "--rmin %g is larger than --rmax %g", f->rmin,
+                                   f->rmax);
+        if (o->where.periodic)
+            return cli_usage_error(&cli, "--periodic cannot be used with --radius-map: a "
+                                   "radius field needs a plain rectangle");
+        if (o->out.spectrum_from != NULL)
+            return cli_usage_error(&cli, "--radius-map cannot be used with --spectrum-from: "
+                                   "the patterns are read, not made");
+    }
     if (o->where.count > 0 && st->nrefine > 0)
         return cli_usage_error(&cli, "--refine cannot be used with --count: the library "
                                "chooses the radius");
@@ -264,7 +320,7 @@ static int parse_args(int argc, char **argv, struct options *o)
         return cli_usage_error(&cli, "%s", why);
     /* Checked now rather than by pds_refine once the earlier stages ran. */
     for (k = 0; k < st->nrefine; k++) {
-        double before = k == 0 ? st->radius : st->refine[k - 1];
+        double before = k > 0 ? st->refine[k - 1] : f->path != NULL ? f->rmax : st->radius;
         if (st->refine[k] > before)
             return cli_usage_error(&cli, "--refine %g is larger than the radius before it, %g",
                                    st->refine[k], before);
@@ -309,6 +365,19 @@ int main(int argc, char **argv)
     if (o.out.spectrum_from != NULL) { /* nothing to sample */
         status = cli_spectrum_from_file(PROG, &o.out, &o.where, o.stages.radius);
         goto done;
+    }
+    if (o.field.path != NULL) {
+        if ((status = cli_field_load(PROG, &o.field)) != 0)
+            goto done;
+        o.where.field = &o.field;
+        /* The radius of the sampler, and what each stage refines from: the largest. */
+        o.stages.radius = o.field.hi;
+        if (o.stages.nrefine > 0 && o.stages.refine[0] > o.field.hi) {
+            status = cli_usage_error(&cli, "--refine %g is larger than the largest radius of "
+                                     "--radius-map %s, %g", o.stages.refine[0], o.field.path,
+                                     o.field.hi);
+            goto done;
+        }
     }
 
     t0 = now_seconds();
@@ -358,6 +427,7 @@ int main(int argc, char **argv)
 
 done:
     pds_destroy(s);
+    cli_field_free(&o.field);
     free(o.stages.refine);
     return status;
 }
