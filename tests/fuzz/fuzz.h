@@ -6,7 +6,9 @@
  * libFuzzer reports the input, and fuzz_torus.c the model of the torus and
  * of count mode; fuzz_ops.c, fuzz_ops12.c and fuzz_misc.c make the calls and
  * fuzz_api.c, the entry point, chooses them from the input; fuzz_progress.c
- * is the progress callback, fuzz_replay.c the determinism check.
+ * is the progress callback, fuzz_replay.c the determinism check; fuzz_field.c
+ * the radius fields of 1.3 (the maps, the harness's radius function, pds_radii
+ * and the model of a point's radius).
  */
 #ifndef PDS_FUZZ_H
 #define PDS_FUZZ_H
@@ -71,6 +73,27 @@ typedef struct {
     time_t started;
 } fz_progress;
 
+/* The harness's radius function (pds_set_radius_fn, fuzz_field.c): its user
+ * data. The values follow `shape` over the domain between lo and hi (within
+ * the declared [rmin, rmax]); a bad value (`bad`: out of bounds or not finite,
+ * as the input chose) comes back inside a band of the domain, and everywhere
+ * while `toggled` (set and cleared by an operation between calls). */
+typedef struct fz_state fz_state;
+typedef struct {
+    double rmin, rmax;  /* the declared bounds */
+    double lo, hi;      /* the values span [lo, hi] */
+    double dom[4];      /* the sampler's domain (followed by pds_set_domain) */
+    unsigned shape;     /* constant, gradient, diagonal, step, smooth, checker, radial, spike */
+    unsigned param;     /* frequency, cells, centre of the shape */
+    int band;           /* a bad value for u = (x - x0) / (x1 - x0) in [band0, band1) */
+    double band0, band1;
+    double bad;         /* the value returned where it is bad */
+    int toggled;        /* bad everywhere */
+    unsigned change;    /* which changing call to try from inside (0: none) */
+    fz_state *st;       /* NULL in the replay: no calls from inside */
+    size_t calls, bad_calls; /* calls so far, and those that returned a bad value */
+} fz_field_fn;
+
 /* A successful pds_refine at `count` points: replayed by fz_replay_check. */
 typedef struct {
     size_t count;
@@ -78,7 +101,7 @@ typedef struct {
 } fz_event;
 #define FZ_MAX_EVENTS 64
 
-typedef struct {
+struct fz_state {
     pds_sampler *s;
     double dom[4];  /* x0 y0 x1 y1 of s, as last set successfully */
     double radius;  /* what pds_radius(s) must return */
@@ -102,12 +125,32 @@ typedef struct {
     fz_event ev[FZ_MAX_EVENTS];
     size_t n_ev;     /* FZ_MAX_EVENTS + 1: too many to replay */
     int run_failed;  /* a step or run failed after the first point (ENOMEM, ERANGE) */
-} fz_state;
+    /* 1.3: the radius field in force (set successfully and not replaced) */
+    int field;       /* FZ_FIELD_NONE, _MAP or _FN */
+    double f_rmin, f_rmax; /* the map's smallest and largest values, or the declared bounds */
+    double *map;     /* a copy of the map (row-major, row 0 along y0) */
+    size_t map_w, map_h;
+    fz_field_fn fns[2]; /* the function's user data: a failed pds_set_radius_fn */
+    int fn_active;   /* must not change the one in force, so the next is set in the other */
+    double *rad;     /* the radii read with the points (pds_radii), like pts */
+    double *rad_tmp;
+    double rad_at;   /* pds_radius when rad was read (a refine scales them) */
+    /* Open bug field_first_point_rng (found/NOTES): a bad value refused the first
+     * point, and a change before it (domain, kind, field, refine) followed: the
+     * points then differ from a fresh sampler's, so the replay is skipped unless
+     * PDS_FUZZ_STRICT is set in the environment. */
+    int refused_first, known_rng;
+};
+enum { FZ_FIELD_NONE, FZ_FIELD_MAP, FZ_FIELD_FN };
 
 /* Bit of a return code in an "allowed codes" mask (codes -6 .. 1). */
 #define FZ_BIT(code) (1u << ((code) + 6))
 #define FZ_OK (FZ_BIT(0))
 #define FZ_MORE (FZ_BIT(1))
+
+/* PDS_FUZZ_STRICT is set in the environment: no tolerance for the open bugs
+ * of found/NOTES (field_first_point_rng, field_run_maximal_range). */
+int fz_strict(void);
 
 /* Prints where and why, then abort(): libFuzzer saves the input. */
 void fz_fail(const char *file, int line, const char *fmt, ...)
@@ -136,6 +179,10 @@ void fz_check_maximal(fz_state *st);
 /* pds_free_area(s): never negative or NaN, 0 when maximal, the domain's area
  * before the first point, at most that area later. */
 void fz_check_free_area(fz_state *st);
+/* A maximal pattern (not count mode): probes over the domain, its corners and
+ * sides among them, each lie in some point's closed disk (wrapped on the torus).
+ * O(64 n). */
+void fz_check_coverage(const fz_state *st);
 /* Forget the sampler's model (after pds_destroy or a new pds_create). */
 void fz_reset(fz_state *st, pds_sampler *s, double radius);
 /* Oler's bound on the number of points of any pattern at this radius. */
@@ -156,6 +203,34 @@ void fz_set_torus(fz_state *st);
 /* Count mode: pds_radius(s) read again after a change; before the first point
  * it must be the documented start radius. */
 void fz_count_radius(fz_state *st);
+
+/* ---- radius fields (fuzz_field.c) ------------------------------------------------ */
+
+/* The smallest radius a new point may get: pds_radius scaled from the field's
+ * rmax to its rmin; pds_radius without a field. */
+double fz_smallest_radius(const fz_state *st);
+/* A field whose values are not all equal: the weighted path (no dart grid). */
+int fz_varying_field(const fz_state *st);
+/* The function in force may return a bad value now (band or toggle). */
+int fz_field_may_fail(const fz_state *st);
+/* ... and does, everywhere, now (toggled with a bad value, varying). */
+int fz_field_fails_everywhere(const fz_state *st);
+/* The harness's radius function (user: an fz_field_fn). */
+double fz_field_cb(void *user, double x, double y);
+/* Its value at (x, y) without the toggle and without side effects. */
+double fz_field_value(const fz_field_fn *f, double x, double y);
+/* fz_sync's part: the radii of points 0..n-1 (pds_radii) against the model. */
+void fz_sync_radii(fz_state *st, size_t n, const double *xy);
+/* The radius in force of point i (read by fz_sync). */
+double fz_radius_of(const fz_state *st, size_t i);
+/* Open bug field_run_maximal_range (found/NOTES): with a varying field whose
+ * smallest radius bounds the pattern beyond the index space, an unbounded
+ * pds_run returns PDS_ERANGE on a maximal pattern instead of PDS_DONE. */
+int fz_known_maximal_range(const fz_state *st, size_t max_new);
+/* A change before the first point succeeded (see known_rng). */
+void fz_changed_before_first(fz_state *st);
+/* Free what the field's model holds. */
+void fz_field_reset(fz_state *st);
 
 /* ---- progress and determinism (fuzz_progress.c) ---------------------------------- */
 
@@ -192,5 +267,10 @@ void fz_op_create_bad(fz_state *st, fz_reader *r);
 void fz_op_periodic(fz_state *st, fz_reader *r);
 void fz_op_count(fz_state *st, fz_reader *r);
 void fz_op_progress(fz_state *st, fz_reader *r);
+/* 1.3 (fuzz_field.c) */
+void fz_op_radius_map(fz_state *st, fz_reader *r);
+void fz_op_radius_fn(fz_state *st, fz_reader *r);
+void fz_op_radii(fz_state *st, fz_reader *r, unsigned arg);
+void fz_op_field_bad(fz_state *st, fz_reader *r);
 
 #endif /* PDS_FUZZ_H */

@@ -13,6 +13,9 @@
  * (high 4 bits), and the operation reads its own arguments (fuzz_decode.c).
  * Operation 14 with parameter 0 is the version check; with 1-4 it is
  * pds_set_periodic, 5-9 pds_set_count, 10-15 pds_set_progress (1.2).
+ * Operation 15 with parameter 0-7 is the pattern check; with 8-10 it is
+ * pds_set_radius_map, 11-13 pds_set_radius_fn, 14 pds_radii, 15 makes the
+ * radius function return bad values everywhere, or stop doing so (1.3).
  * Past the end every read gives zeros; at most 64 operations.
  *
  * Checked after every call (fuzz_check.c): the code is one the header allows
@@ -23,9 +26,13 @@
  * On the torus: points in [x0,x1)x[y0,y1) on the quantum grid, distances
  * wrapped (fuzz_torus.c). In count mode: PDS_DONE exactly at n points, the
  * documented start radius, pairs at least the (lowered) radius apart. The
- * progress callback's reports and cancels: fuzz_progress.c. Before a sampler
+ * progress callback's reports and cancels: fuzz_progress.c. Radius fields:
+ * pds_radii, each radius the field's value, later points outside earlier
+ * disks, a maximal pattern's disks covering the domain, bad values from the
+ * function stopping runs (fuzz_field.c). Before a sampler
  * is dropped, a second one replays its calls without the splits and the
- * callback and must give the same bytes (fuzz_replay.c).
+ * callback and must give the same bytes (fuzz_replay.c); with a constant field,
+ * so must a plain sampler at that radius.
  * Any violation calls abort(), which libFuzzer reports with the input.
  *
  * Bounded work (an input must run in milliseconds): calls that add points
@@ -86,7 +93,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         static const char *const names[16] = {
             "create", "set_domain", "step", "run", "refine", "points", "verify", "free_area",
             "nulls", "strerror", "destroy", "run_to_end", "run_chunks", "create_bad",
-            "version/1.2", "check"};
+            "version/1.2", "check/1.3"};
         trace(&st, names[b & 15]);
         switch (b & 15) {
             case 0: fz_op_create(&st, &r, arg); break;
@@ -120,8 +127,18 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                     fz_op_progress(&st, &r);
                 break;
             default:
-                fz_sync(&st);
-                if (afford_read(&st, &reads)) fz_check_pattern(&st);
+                if (arg >= 8 && arg <= 10)
+                    fz_op_radius_map(&st, &r);
+                else if (arg >= 11 && arg <= 13)
+                    fz_op_radius_fn(&st, &r);
+                else if (arg == 14)
+                    fz_op_radii(&st, &r, fz_u8(&r));
+                else if (arg == 15)
+                    fz_op_field_bad(&st, &r);
+                else {
+                    fz_sync(&st);
+                    if (afford_read(&st, &reads)) fz_check_pattern(&st);
+                }
                 break;
         }
     }
@@ -131,7 +148,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_check_pattern(&st);
     fz_replay_check(&st);
     pds_destroy(st.s);
+    fz_field_reset(&st);
     free(st.pts);
     free(st.tmp);
+    free(st.rad);
+    free(st.rad_tmp);
     return 0;
 }

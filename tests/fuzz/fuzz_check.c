@@ -8,6 +8,8 @@
  * On the torus a difference d is wrapped to min(|d|, |p - |d||) with the
  * period p of the model (fuzz_torus.c): both are multiples of the quantum
  * there, so the wrapped difference is exact before the division.
+ * With a radius field (1.3) a pair i < j is checked against r_i, point i's
+ * radius read with pds_radii (fuzz_field.c); pds_radius bounds them all.
  */
 #include "fuzz.h"
 
@@ -26,6 +28,13 @@ void fz_fail(const char *file, int line, const char *fmt, ...)
     va_end(args);
     fputc('\n', stderr);
     abort();
+}
+
+int fz_strict(void)
+{
+    static int strict = -1;
+    if (strict < 0) strict = getenv("PDS_FUZZ_STRICT") != NULL;
+    return strict;
 }
 
 void fz_codes(fz_state *st, const char *fn, int rc, unsigned allowed)
@@ -60,7 +69,10 @@ static void grow(fz_state *st, size_t n)
     if (cap == st->cap) return;
     st->pts = realloc(st->pts, 2 * cap * sizeof(double));
     st->tmp = realloc(st->tmp, 2 * cap * sizeof(double));
-    FZ_CHECK(st->pts != NULL && st->tmp != NULL, "harness out of memory (%zu points)", n);
+    st->rad = realloc(st->rad, cap * sizeof(double));
+    st->rad_tmp = realloc(st->rad_tmp, cap * sizeof(double));
+    FZ_CHECK(st->pts != NULL && st->tmp != NULL && st->rad != NULL && st->rad_tmp != NULL,
+             "harness out of memory (%zu points)", n);
     st->cap = cap;
 }
 
@@ -91,6 +103,7 @@ void fz_sync(fz_state *st)
                  "[%.17g,%.17g%s", i, x, y, st->dom[0], st->dom[2], st->periodic ? ")" : "]",
                  st->dom[1], st->dom[3], st->periodic ? ") or off the quantum grid" : "]");
     }
+    fz_sync_radii(st, n, st->tmp);
     t = st->pts;
     st->pts = st->tmp;
     st->tmp = t;
@@ -146,11 +159,22 @@ void fz_check_pattern(const fz_state *st)
             if (p[i].id == p[j].id) continue; /* a point and its own copy: a period apart */
             if (p_across > 0.0 && fabs(p_across - d) < d) d = fabs(p_across - d);
             v = d / r;
-            FZ_CHECK(u * u + v * v >= 1.0 - 1e-12, "points %zu (%.17g, %.17g) and %zu (%.17g, "
-                     "%.17g) are %.17g R apart%s (R = %.17g, %zu points)", p[i].id,
-                     st->pts[2 * p[i].id], st->pts[2 * p[i].id + 1], p[j].id,
-                     st->pts[2 * p[j].id], st->pts[2 * p[j].id + 1], sqrt(u * u + v * v),
-                     st->periodic ? " on the torus" : "", r, n);
+            /* A field: the earlier point's disk (r bounds every radius). */
+            {
+                const size_t e = p[i].id < p[j].id ? p[i].id : p[j].id;
+                const double re = fz_radius_of(st, e);
+                double ue = u, ve = v;
+                if (re != r) {
+                    ue = (p[j].key - p[i].key) / re;
+                    ve = d / re;
+                }
+                FZ_CHECK(ue * ue + ve * ve >= 1.0 - 1e-12, "points %zu (%.17g, %.17g) and %zu "
+                         "(%.17g, %.17g) are %.17g r apart%s (r = %.17g, the radius of point "
+                         "%zu; R = %.17g, %zu points)", p[i].id, st->pts[2 * p[i].id],
+                         st->pts[2 * p[i].id + 1], p[j].id, st->pts[2 * p[j].id],
+                         st->pts[2 * p[j].id + 1], sqrt(ue * ue + ve * ve),
+                         st->periodic ? " on the torus" : "", re, e, r, n);
+            }
         }
     }
     free(p);
@@ -201,7 +225,8 @@ void fz_check_maximal(fz_state *st)
     rc = pds_step(st->s);
     fz_codes(st, "pds_step", rc, FZ_OK | FZ_BIT(PDS_ENOMEM));
     rc = fz_run(st, (size_t)st->count % 3, &added); /* 0 (no limit), 1 or 2 */
-    fz_codes(st, "pds_run", rc, FZ_OK | FZ_BIT(PDS_ENOMEM));
+    fz_codes(st, "pds_run", rc, FZ_OK | FZ_BIT(PDS_ENOMEM) |
+             (fz_known_maximal_range(st, (size_t)st->count % 3) ? FZ_BIT(PDS_ERANGE) : 0u));
     FZ_CHECK(added == 0, "pds_run added %zu points to a %s pattern", added,
              st->target ? "complete" : "maximal");
     if (st->target != 0) {
@@ -210,7 +235,63 @@ void fz_check_maximal(fz_state *st)
     }
     fz_sync(st);
     fz_check_pattern(st);
+    if (st->target == 0) fz_check_coverage(st);
     st->checked = 1;
+}
+
+/* The squared distance in units of r from (x, y) to point i, wrapped on the torus. */
+static double dist2(const fz_state *st, double x, double y, size_t i, double r)
+{
+    double dx = fabs(x - st->pts[2 * i]), dy = fabs(y - st->pts[2 * i + 1]);
+    if (st->periodic) {
+        if (fabs(st->per[0] - dx) < dx) dx = fabs(st->per[0] - dx);
+        if (fabs(st->per[1] - dy) < dy) dy = fabs(st->per[1] - dy);
+    }
+    dx /= r;
+    dy /= r;
+    return dx * dx + dy * dy;
+}
+
+void fz_check_coverage(const fz_state *st)
+{
+    /* Corners, sides and the centre, then pseudo-random probes. */
+    static const double kFixed[3] = {0.0, 0.5, 1.0};
+    const double x0 = st->dom[0], y0 = st->dom[1];
+    double w = st->dom[2] - x0, h = st->dom[3] - y0;
+    uint64_t rng = 0x9e3779b97f4a7c15u ^ (uint64_t)st->seen;
+    size_t k, i;
+
+    if (st->periodic) { /* the torus's periods; the far sides are the near ones */
+        w = st->per[0];
+        h = st->per[1];
+    }
+    if (st->seen == 0 || !(w > 0.0 && h > 0.0 && isfinite(w) && isfinite(h))) return;
+    for (k = 0; k < 64; k++) {
+        double tx, ty, x, y;
+        int covered = 0;
+        if (k < 9) {
+            tx = kFixed[k % 3];
+            ty = kFixed[k / 3];
+        } else {
+            rng ^= rng << 13;
+            rng ^= rng >> 7;
+            rng ^= rng << 17;
+            tx = (double)(rng >> 11) * 0x1p-53;
+            ty = (double)(rng & 0xfffff) / 1048575.0;
+        }
+        x = x0 + w * tx;
+        y = y0 + h * ty;
+        if (x > st->dom[2]) x = st->dom[2];
+        if (y > st->dom[3]) y = st->dom[3];
+        for (i = 0; i < st->seen && !covered; i++) {
+            const double r = fz_radius_of(st, i);
+            covered = dist2(st, x, y, i, r) <= 1.0 + 1e-9;
+        }
+        FZ_CHECK(covered, "the maximal pattern leaves the probe (%.17g, %.17g) in no disk%s "
+                 "(%zu points, R %.17g, domain [%.17g,%.17g]x[%.17g,%.17g])", x, y,
+                 st->periodic ? " on the torus" : "", st->seen, st->radius, st->dom[0],
+                 st->dom[2], st->dom[1], st->dom[3]);
+    }
 }
 
 void fz_reset(fz_state *st, pds_sampler *s, double radius)
@@ -230,6 +311,7 @@ void fz_reset(fz_state *st, pds_sampler *s, double radius)
     st->c_seed = 0;
     st->n_ev = 0;
     st->run_failed = 0;
+    fz_field_reset(st);
     msg = s ? pds_errmsg(s) : "";
     FZ_CHECK(s == NULL || strcmp(msg, "no error") == 0, "a new sampler's pds_errmsg is \"%s\"",
              msg);
@@ -239,9 +321,11 @@ void fz_reset(fz_state *st, pds_sampler *s, double radius)
 
 double fz_count_bound(const fz_state *st)
 {
-    /* Overflow gives inf (a huge bound), never NaN: the domain is non-empty. */
-    const double w = (st->dom[2] - st->dom[0]) / st->radius;
-    const double h = (st->dom[3] - st->dom[1]) / st->radius;
+    /* Overflow gives inf (a huge bound), never NaN: the domain is non-empty.
+     * A field: at its smallest radius, as the library bounds it. */
+    const double r = fz_smallest_radius(st);
+    const double w = (st->dom[2] - st->dom[0]) / r;
+    const double h = (st->dom[3] - st->dom[1]) / r;
     return 1.1547005383792515 * w * h + (w + h) + 1.0;
 }
 

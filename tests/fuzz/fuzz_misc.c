@@ -1,6 +1,6 @@
 /*
  * fuzz_misc.c - the operations of the fuzz harness that need no model of the
- * sampler (see fuzz_ops.c): every function on NULL, the error texts, the
+ * sampler (see fuzz_ops.c): every function on NULL (1.3's too), the error texts, the
  * version, and pds_create with hostile radii on a second handle.
  */
 #include <math.h>
@@ -26,6 +26,11 @@ void fz_op_nulls(fz_state *st)
     FZ_CHECK(pds_set_count(NULL, 5) == PDS_EINVAL, "pds_set_count(NULL)");
     FZ_CHECK(pds_set_progress(NULL, fz_progress_cb, NULL) == PDS_EINVAL, "pds_set_progress(NULL)");
     FZ_CHECK(pds_set_progress(NULL, NULL, NULL) == PDS_EINVAL, "pds_set_progress(NULL)");
+    xy[0] = 0.1;
+    FZ_CHECK(pds_set_radius_map(NULL, 1, 1, xy) == PDS_EINVAL, "pds_set_radius_map(NULL)");
+    FZ_CHECK(pds_set_radius_fn(NULL, fz_field_cb, NULL, 0.1, 0.2) == PDS_EINVAL,
+             "pds_set_radius_fn(NULL)");
+    FZ_CHECK(pds_radii(NULL, 0, 2, xy) == 0, "pds_radii(NULL)");
     FZ_CHECK(pds_errmsg(NULL) != NULL && pds_errmsg(NULL)[0] != '\0', "pds_errmsg(NULL)");
     pds_destroy(NULL);
     fz_check_free_area(st);

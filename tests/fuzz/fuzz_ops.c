@@ -18,6 +18,11 @@
  *     run bounded calls there without such a grid, and refuse unbounded ones
  *     with PDS_ERANGE. So make fuzz's -rss_limit_mb=4096 -malloc_limit_mb=4096
  *     only catch a library that allocates by area where it should not.
+ * With a radius field (1.3) n is the bound at the field's smallest radius,
+ * which is what the library reserves by, so a field with a tiny rmin is held
+ * to bounded calls as a tiny radius is. A varying field has no dart stage (it
+ * runs the Jones loop from the first point), so it gets bounded calls between
+ * FZ_GRID_MAX and FZ_NO_GRID too: there nothing may be allocated by area.
  */
 #include <math.h>
 #include <stdio.h>
@@ -42,7 +47,7 @@ static int work_allowed(const fz_state *st)
         st->target - st->count <= st->budget)
         return WORK_TO_END;
     if (st->target == 0 && n <= FZ_TO_END_MAX && n <= (double)st->budget) return WORK_TO_END;
-    if (n <= FZ_GRID_MAX || n >= FZ_NO_GRID) return WORK_BOUNDED;
+    if (n <= FZ_GRID_MAX || n >= FZ_NO_GRID || fz_varying_field(st)) return WORK_BOUNDED;
     return WORK_NONE;
 }
 
@@ -65,16 +70,29 @@ static void account(fz_state *st, size_t added)
 static double lowest_radius(const fz_state *st)
 {
     double area, low;
-    if (st->target == 0) return st->radius;
+    if (st->target == 0) return fz_smallest_radius(st); /* a field's rmin, scaled */
     area = (st->dom[2] - st->dom[0]) * (st->dom[3] - st->dom[1]);
     low = 0.98 * sqrt(area / (3.14159265358979323846 * (double)st->target));
     return low < st->radius ? low : st->radius;
 }
 
+/* The radius is below 2^-27 of the domain's largest |coordinate|: below the
+ * precision limit 2^-26 of it whatever the binade (the library's limit is
+ * 2^-26 times the power of two below that coordinate). */
+static int below_precision(const fz_state *st, double radius)
+{
+    double m = 0.0;
+    int i;
+    for (i = 0; i < 4; i++)
+        if (fabs(st->dom[i]) > m) m = fabs(st->dom[i]);
+    return radius < 0x1p-27 * m * (1.0 - 1e-9);
+}
+
 /* PDS_ERANGE from pds_step or pds_run (nothing added): allowed when the precision
  * limit is near the lowest radius of the run, when `want` points might not fit
  * the index space, or on the torus above half the shorter period or with a
- * longer side above 1024 times the shorter; required there at the first point. */
+ * longer side above 1024 times the shorter; required there at the first point,
+ * and when the lowest radius (a field's rmin) is well below the precision limit. */
 static void check_range(fz_state *st, const char *fn, int rc, double want, size_t before)
 {
     const int may = !fz_precision_ok(st, lowest_radius(st)) || want >= 3e8 ||
@@ -86,6 +104,11 @@ static void check_range(fz_state *st, const char *fn, int rc, double want, size_
     if (before == 0 && fz_above_half_period(st, st->radius, 1e-9))
         FZ_CHECK(rc == PDS_ERANGE, "%s returned %d at R %.17g, above half the shorter period "
                  "of the torus [%.17g,%.17g)x[%.17g,%.17g)", fn, rc, st->radius, st->dom[0],
+                 st->dom[2], st->dom[1], st->dom[3]);
+    if (before == 0 && below_precision(st, lowest_radius(st)))
+        FZ_CHECK(rc == PDS_ERANGE, "%s returned %d at the first point with the lowest radius "
+                 "%.17g (R %.17g%s) below 2^-27 of the domain [%.17g,%.17g]x[%.17g,%.17g]", fn,
+                 rc, lowest_radius(st), st->radius, st->field ? ", a field" : "", st->dom[0],
                  st->dom[2], st->dom[1], st->dom[3]);
     if (before == 0 && fz_periods_too_unequal(st, 1e-9))
         FZ_CHECK(rc == PDS_ERANGE, "%s returned %d on the torus [%.17g,%.17g)x[%.17g,%.17g), "
@@ -102,11 +125,36 @@ static void reread_radius(fz_state *st, const char *fn)
     st->radius = r;
 }
 
+/* After pds_run or pds_step with a radius function: PDS_EINVAL only after it
+ * returned a bad value, with the library's message saying so; while it returns
+ * one everywhere, nothing is added (the first point's limits and running out of
+ * memory may still come first, and a maximal pattern needs no value). */
+static void check_field_failure(fz_state *st, const char *fn, int rc, int fails,
+                                size_t bad_before, size_t added)
+{
+    if (rc == PDS_EINVAL) {
+        if (st->count == 0) st->refused_first = 1; /* st->count: before the call */
+        FZ_CHECK(st->fns[st->fn_active].bad_calls > bad_before, "%s returned PDS_EINVAL, but "
+                 "the radius function returned no bad value: %s", fn, pds_errmsg(st->s));
+        FZ_CHECK(strstr(pds_errmsg(st->s), "radius function") != NULL, "%s: PDS_EINVAL for a "
+                 "bad radius value says \"%s\"", fn, pds_errmsg(st->s));
+    }
+    if (fails)
+        FZ_CHECK(added == 0 && (rc == PDS_EINVAL || rc == PDS_ERANGE || rc == PDS_ENOMEM ||
+                                (rc == PDS_DONE && st->count > 0)),
+                 "%s returned %d and added %zu while the radius function returns %.17g "
+                 "everywhere (bounds [%.17g, %.17g]): %s", fn, rc, added,
+                 st->fns[st->fn_active].bad, st->f_rmin, st->f_rmax, pds_errmsg(st->s));
+}
+
 /* pds_run; sync_now reads the points back (O(n): not after every small chunk). */
 static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
 {
     size_t added = (size_t)-7, now;
     const size_t before = st->count;
+    /* A radius function that may return a bad value: PDS_EINVAL (fuzz_field.c). */
+    const int may_fail = fz_field_may_fail(st), fails = fz_field_fails_everywhere(st);
+    const size_t bad_before = st->fns[st->fn_active].bad_calls;
     const int rc = fz_run(st, max_new, want_added ? &added : NULL);
     const unsigned cancel = st->prog.on ? FZ_BIT(PDS_ECANCELED) : 0u;
     double want;
@@ -116,23 +164,25 @@ static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
         FZ_CHECK(!want_added || added == 0, "pds_run(NULL) set added to %zu", added);
         return rc;
     }
-    fz_codes(st, "pds_run", rc,
-             FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM) | fz_range_if_111() | cancel);
+    fz_codes(st, "pds_run", rc, FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM) | fz_range_if_111() |
+             cancel | (may_fail ? FZ_BIT(PDS_EINVAL) : 0u));
     now = pds_count(st->s);
+    check_field_failure(st, "pds_run", rc, fails, bad_before, now - before);
     FZ_CHECK(now >= before, "pds_run: the count fell from %zu to %zu", before, now);
     if (want_added)
         FZ_CHECK(added == now - before, "pds_run returned %d, added %zu, count grew by %zu", rc,
                  added, now - before);
     added = now - before;
     /* Only PDS_ENOMEM in the exact fallback and a cancel keep the points added before. */
-    FZ_CHECK(rc >= 0 || rc == PDS_ENOMEM || rc == PDS_ECANCELED || added == 0,
-             "pds_run failed (%d: %s) and added %zu", rc, pds_errmsg(st->s), added);
+    FZ_CHECK(rc >= 0 || rc == PDS_ENOMEM || rc == PDS_ECANCELED || rc == PDS_EINVAL ||
+             added == 0, "pds_run failed (%d: %s) and added %zu", rc, pds_errmsg(st->s), added);
     FZ_CHECK(rc != 1 || (max_new != 0 && added == max_new),
              "pds_run(max_new %zu) returned 1 after adding %zu", max_new, added);
     FZ_CHECK(rc > 0 || max_new == 0 || added <= max_new, "pds_run(max_new %zu) added %zu",
              max_new, added);
-    FZ_CHECK(!st->maximal || rc == 0, "pds_run returned %d on a %s pattern", rc,
-             st->target ? "complete" : "maximal");
+    FZ_CHECK(!st->maximal || rc == 0 || (rc == PDS_ERANGE && fz_known_maximal_range(st, max_new)),
+             "pds_run(max_new %zu) returned %d on a %s pattern: %s", max_new, rc,
+             st->target ? "complete" : "maximal", pds_errmsg(st->s));
     /* Count mode: PDS_DONE exactly when the n-th point exists. */
     if (st->target != 0 && (rc == 0 || rc == 1))
         FZ_CHECK((rc == 0) == (now == st->target), "count mode: pds_run returned %d at %zu of "
@@ -144,9 +194,11 @@ static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
     if (max_new != 0 && (double)before + (double)max_new < want)
         want = (double)before + (double)max_new;
     check_range(st, "pds_run", rc, want, before);
-    if (FZ_SPEC_111 && want >= 1e9)
-        FZ_CHECK(rc == PDS_ERANGE, "pds_run(max_new %zu) returned %d for %.3g points", max_new,
-                 rc, want);
+    /* (A field may make the pattern maximal far below its bound: PDS_DONE, checked
+     * by fz_check_maximal.) */
+    if (FZ_SPEC_111 && want >= 1e9 && !st->maximal)
+        FZ_CHECK(rc == PDS_ERANGE || (rc == PDS_DONE && added == 0 && fz_varying_field(st)),
+                 "pds_run(max_new %zu) returned %d for %.3g points", max_new, rc, want);
     if (before + added > 0 && (rc == PDS_ENOMEM || rc == PDS_ERANGE)) st->run_failed = 1;
     reread_radius(st, "pds_run");
     account(st, added);
@@ -158,12 +210,16 @@ static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
 
 static int call_step(fz_state *st, int sync_now)
 {
+    const int may_fail = fz_field_may_fail(st), fails = fz_field_fails_everywhere(st);
+    const size_t bad_before = st->fns[st->fn_active].bad_calls;
     const int rc = pds_step(st->s);
     if (st->s == NULL) {
         fz_codes(st, "pds_step", rc, FZ_BIT(PDS_EINVAL));
         return rc;
     }
-    fz_codes(st, "pds_step", rc, FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM) | fz_range_if_111());
+    fz_codes(st, "pds_step", rc, FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM) | fz_range_if_111() |
+             (may_fail ? FZ_BIT(PDS_EINVAL) : 0u));
+    check_field_failure(st, "pds_step", rc, fails, bad_before, rc == 1 ? 1 : 0);
     check_range(st, "pds_step", rc, (double)st->count + 1.0, st->count);
     FZ_CHECK(rc != 0 || st->count > 0, "pds_step: maximal without a point");
     if (st->target != 0 && (rc == 0 || rc == 1))
@@ -224,6 +280,10 @@ void fz_op_domain(fz_state *st, fz_reader *r)
     fz_codes(st, "pds_set_domain", rc, allowed);
     if (rc == 0) {
         memcpy(st->dom, d, sizeof d);
+        /* The radius function sees the domain in force (fuzz_field.c). */
+        memcpy(st->fns[0].dom, d, sizeof d);
+        memcpy(st->fns[1].dom, d, sizeof d);
+        fz_changed_before_first(st);
         fz_set_torus(st);
         fz_count_radius(st); /* count mode: the start radius follows the domain */
     }
@@ -250,10 +310,14 @@ void fz_op_refine(fz_state *st, fz_reader *r)
     fz_codes(st, "pds_refine", rc, allowed);
     if (st->s == NULL) return;
     /* 1.1.1: judged only once points exist, and then only for precision. */
-    if (FZ_SPEC_111 && rc == PDS_ERANGE)
-        FZ_CHECK(st->count > 0 && !fz_precision_ok(st, nr), "pds_refine(%.17g) with %zu "
-                 "points: PDS_ERANGE: %s", nr, st->count, pds_errmsg(st->s));
+    if (FZ_SPEC_111 && rc == PDS_ERANGE) { /* a field: its smallest radius, scaled */
+        const double low = fz_varying_field(st) ? st->f_rmin / st->f_rmax * nr : nr;
+        FZ_CHECK(st->count > 0 && !fz_precision_ok(st, low * (1.0 - 1e-9)), "pds_refine(%.17g) "
+                 "with %zu points (lowest radius %.17g): PDS_ERANGE: %s", nr, st->count, low,
+                 pds_errmsg(st->s));
+    }
     if (rc == 0 && nr < old) {
+        fz_changed_before_first(st);
         st->radius = nr;
         st->maximal = st->checked = 0;
         if (st->n_ev < FZ_MAX_EVENTS) {

@@ -38,6 +38,16 @@ static void try_change(fz_state *st, size_t count)
         case 6: fn = "pds_set_count"; rc = pds_set_count(s, 10); break;
         case 7: fn = "pds_set_progress"; rc = pds_set_progress(s, NULL, NULL); break;
         case 8: fn = "pds_set_progress"; rc = pds_set_progress(s, fz_progress_cb, st); break;
+        case 9: { /* 1.3 */
+            const double one = 1.0;
+            fn = "pds_set_radius_map";
+            rc = pds_set_radius_map(s, 1, 1, &one);
+            break;
+        }
+        case 10:
+            fn = "pds_set_radius_fn";
+            rc = pds_set_radius_fn(s, fz_field_cb, &st->fns[st->fn_active], 1.0, 2.0);
+            break;
         default: return;
     }
     fz_codes(st, fn, rc, FZ_BIT(PDS_ESTATE));

@@ -81,6 +81,55 @@ def progress(mode, every=0, change=0):
     return op(EXT, 10) + [mode | every << 2, change]
 
 
+# ---- 1.3: operation 15 (CHECK) with parameter 8-10, 11-13, 14, 15 ----
+# kRatio (fuzz_field.c) indices: rmax / rmin (a map: hi / lo)
+R_EQUAL, R_ULP, R_1_5, R_2, R_2_5, R_4, R_10, R_1E4, R_1E300, R_HALF = 0, 2, 4, 5, 6, 7, 8, 10, 12, 13
+# map value patterns (vsel % 8); vsel >= 64 means no hostile value is put in
+M_UNIFORM, M_GRAD_X, M_GRAD_Y, M_CHECKER, M_NOISE, M_SPIKE, M_HI, M_DIAG = range(8)
+# function shapes
+F_CONST, F_GRAD, F_DIAG, F_STEP, F_SMOOTH, F_CHECKER, F_RADIAL, F_SPIKE = range(8)
+
+
+# pds_set_radius_map: dims % 8 is 0 1x1, 1 small (w, h bytes % 8 + 1), 2 (% 64 + 1),
+# 3 64 << (byte % 4) each, 4 empty, 5 overflowing (table index, order), 6 NULL map,
+# 7 a line; dims >= 0xf0: s NULL. base: radius bytes (fz_radius); the values run
+# from base to base * kRatio[ratio]; hostile=(where, hostile bytes) puts one in
+# (where % 3: 0 first, 1 last, 2 another cell).
+def radius_map(dims, dim_bytes, pattern, base, ratio, hostile=None, spike=0):
+    vsel = pattern | spike << 3 | (0 if hostile else 64)
+    out = op(CHECK, 8) + [dims, vsel] + dim_bytes + base + [ratio]
+    if hostile:
+        out += [hostile[0]] + hostile[1]
+    return out
+
+
+# pds_set_radius_fn: rmin from radius bytes, rmax = rmin * kRatio[ratio] (or hostile
+# bytes when rmax_hostile); rng 1: constant rmax inside the bounds, 2: inside, touching
+# neither; band=(start/256, kBand index): bad values there, of kind `bad` (0 NaN, 1 inf,
+# 3 0, 5 just above rmax, 6 just below rmin, ...); change: a call tried from inside
+# (1 pds_run ... 9 pds_set_progress); null: 1 s NULL, 2 fn NULL.
+def radius_fn(rmin, ratio, shape, param=0, rng=0, band=None, bad=0, change=0, rmax_hostile=None,
+              null=0):
+    sel = (7 if rmax_hostile is not None else 0) | ({0: 0, 1: 31, 2: 30}[null] << 3)
+    out = op(CHECK, 11) + [sel] + rmin
+    out += rmax_hostile if rmax_hostile is not None else [ratio]
+    b = bad << 2 | (3 if band else 0)
+    out += [shape, param, rng, b] + (list(band) if band else []) + [change]
+    return out
+
+
+def radii(arg=0, first=[0], count=[4]):  # pds_radii(fz_size, fz_size)
+    return op(CHECK, 14) + [arg] + first + count
+
+
+def field_bad(kind=0):  # the radius function returns bad value `kind` everywhere
+    return op(CHECK, 15) + [1 | kind << 2]
+
+
+def field_good():
+    return op(CHECK, 15) + [0]
+
+
 MAX_NEW_0, MAX_NEW_64, MAX_NEW_1000, MAX_NEW_SIZE_MAX = [0], [4], [5], [6]
 SIZE_0, SIZE_N_MINUS_1, SIZE_N, SIZE_N_PLUS_1, SIZE_MAX = [0], [3], [4], [5], [7]
 
@@ -180,15 +229,147 @@ SEEDS = {
     # Count mode on the torus with a cancel at every third report and changes refused.
     "progress_count": radius_factor(0, 8) + [23] + periodic() + count(9)
     + progress(2, 3, 6) + op(RUN_TO_END, RESUME) + op(RUN_TO_END, RESUME) + op(VERIFY),
+    # ---- 1.3 ----
+    # A gradient function 0.02 .. 0.04 in the unit square to the end, then every read.
+    "field_fn_gradient": radius_factor(0, 8) + [30] + radius_fn(radius_factor(0, 9), R_2, F_GRAD)
+    + op(RUN_TO_END) + op(VERIFY) + op(FREE_AREA) + radii(0, SIZE_0, SIZE_MAX)
+    + radii(0, SIZE_N_MINUS_1, SIZE_N_PLUS_1) + radii(2) + radii(1) + op(CHECK),
+    # A step 0.02 | 0.05 (beyond sqrt 2) on the unit torus, in chunks; refined to 0.7.
+    "field_fn_step_torus": radius_factor(0, 8) + [31] + periodic()
+    + radius_fn(radius_factor(0, 9), R_2_5, F_STEP) + op(RUN_CHUNKS, 3) + op(REFINE)
+    + refine_by(6) + op(RUN_TO_END) + op(CHECK) + radii(0, SIZE_0, SIZE_N),
+    # Smooth 0.02 .. 0.08 over [1e15, 1e15 + 1] (2^-26 of 1e15 is 1.5e7: PDS_ERANGE),
+    # then over [-0.5, 0.5]^2 after the domain changes.
+    "field_fn_smooth_offset": radius_factor(0, 8) + [32]
+    + radius_fn(radius_factor(0, 9), R_4, F_SMOOTH, 3) + op(DOMAIN) + domain_absolute(1, 1, 0, 0)
+    + op(STEP) + op(DOMAIN) + domain_absolute(4, 4, 0, 0) + op(RUN_TO_END) + op(VERIFY),
+    # Bad values in a band x in [0.5, 0.6): a run stops with PDS_EINVAL when a point
+    # would go there, the points stay; each later call stops there too.
+    "field_fn_bad_band": radius_factor(0, 8) + [33]
+    + radius_fn(radius_factor(0, 9), R_2, F_RADIAL, band=(128, 1), bad=5) + op(RUN_TO_END)
+    + op(STEP, 3) + op(RUN_CHUNKS, 1) + op(VERIFY) + op(FREE_AREA) + op(CHECK),
+    # Bad values everywhere for a while (NaN, then 0, then just below rmin): runs and
+    # steps stop with nothing added; then good again, to the end: the replay agrees.
+    "field_fn_toggle": radius_factor(0, 8) + [34] + radius_fn(radius_factor(0, 9), R_2, F_DIAG)
+    + op(RUN) + MAX_NEW_64 + field_bad(0) + op(RUN) + MAX_NEW_64 + op(STEP, 1) + field_bad(3)
+    + op(RUN_TO_END) + field_bad(6) + op(RUN_CHUNKS, 0) + field_good() + op(RUN_CHUNKS, 4)
+    + op(RUN_TO_END),
+    # The very first point refused, then the domain changes (no points yet) and it runs
+    # (open bug field_first_point_rng: the replay is skipped unless PDS_FUZZ_STRICT).
+    "field_fn_first_refused": radius_factor(0, 8) + [35]
+    + radius_fn(radius_factor(0, 9), R_2, F_GRAD) + field_bad(1) + op(STEP) + op(RUN) + [1]
+    + field_good() + op(DOMAIN) + domain_absolute(4, 4, 0, 0) + op(RUN_TO_END),
+    # Changing calls from inside the function: PDS_ESTATE (pds_run ... pds_set_progress).
+    "field_fn_change_inside": sum(((op(CREATE) if k > 1 else []) + radius_factor(0, 8) + [36 + k]
+                                   + radius_fn(radius_factor(0, 9), R_2, F_CHECKER, 2, change=k)
+                                   + op(RUN) + MAX_NEW_64 for k in range(1, 10)), []),
+    # rmin == rmax (0.03 x 2^-k): the plain sampler's points, refine included; then
+    # a constant value inside wider bounds (the weighted path).
+    "field_fn_constant": radius_factor(0, 8) + [37] + radius_fn(radius_smooth(0, 5), R_EQUAL, F_GRAD)
+    + op(RUN) + MAX_NEW_64 + op(REFINE) + refine_by(5) + op(RUN_TO_END) + radii()
+    + op(CREATE) + radius_factor(0, 8) + [37] + radius_fn(radius_factor(0, 9), R_2, F_GRAD, rng=1)
+    + op(RUN_TO_END),
+    # Bad bounds: rmax NaN, inf, inverted, rmin 0 and negative; fn NULL, s NULL; then a
+    # count (EINVAL either way round), then points (ESTATE).
+    "field_fn_bad_bounds": radius_factor(0, 8) + [38]
+    + radius_fn(radius_factor(0, 9), 0, F_GRAD, rmax_hostile=hostile(0))
+    + radius_fn(radius_factor(0, 9), 0, F_GRAD, rmax_hostile=hostile(1))
+    + radius_fn(radius_factor(0, 9), R_HALF, F_GRAD) + radius_fn(radius_hostile(3), R_2, F_GRAD)
+    + radius_fn(radius_hostile(15), R_2, F_GRAD) + radius_fn(radius_factor(0, 9), R_2, F_GRAD, null=2)
+    + radius_fn(radius_factor(0, 9), R_2, F_GRAD, null=1) + count(7)
+    + radius_fn(radius_factor(0, 9), R_2, F_GRAD) + op(CREATE) + radius_factor(0, 8) + [38]
+    + radius_fn(radius_factor(0, 9), R_2, F_GRAD) + count(7) + op(STEP)
+    + radius_fn(radius_factor(0, 9), R_2, F_GRAD) + radius_map(0, [], M_UNIFORM, radius_factor(0, 9), 0)
+    + op(NULLS),
+    # In [1e15, 2e15]^2 (the limit: 2^-26 x 2^50): rmin at 2^-27 of 2e15 (PDS_ERANGE at
+    # the first point), at 2^-26 (x 1 - 2^-53) of it (allowed); then 2^-20 of it
+    # (bounded work), refined to 1/100 (PDS_ERANGE).
+    "field_fn_precision": radius_hostile(10) + [39] + op(DOMAIN) + domain_absolute(1, 1, 9, 0)
+    + radius_fn(radius_precision(6), R_4, F_GRAD) + op(STEP) + radius_fn(radius_precision(0), R_1E4, F_GRAD)
+    + op(RUN) + [1] + op(CREATE) + radius_hostile(10) + [39] + op(DOMAIN) + domain_absolute(1, 1, 9, 0)
+    + radius_fn(radius_precision(8), R_4, F_SMOOTH) + op(RUN) + MAX_NEW_1000
+    + op(REFINE) + refine_by(10) + op(STEP, 3),
+    # rmin 1e-5 .. rmax 0.1: the bound at rmin is 1.2e10 points; bounded work, and an
+    # unbounded run must fail with PDS_ERANGE.
+    "field_fn_tiny_rmin": radius_factor(0, 8) + [40] + radius_fn(radius_hostile(24), R_1E4, F_SPIKE, 0x77)
+    + op(RUN) + MAX_NEW_64 + op(RUN) + MAX_NEW_0 + op(STEP, 7) + op(VERIFY) + op(CHECK),
+    # A function on a torus whose rmax is above half the period (PDS_ERANGE), then not.
+    "field_fn_torus_half": radius_factor(0, 8) + [41] + periodic()
+    + radius_fn(radius_factor(0, 6), R_2, F_GRAD) + op(STEP)
+    + radius_fn(radius_factor(0, 7), R_4, F_STEP) + op(RUN_TO_END) + op(VERIFY),
+    # A 1 x 1 map: the plain sampler's points; refined; pds_radii all equal.
+    "field_map_1x1": radius_factor(0, 8) + [42] + radius_map(0, [], M_UNIFORM, radius_factor(0, 9), 0)
+    + op(RUN_CHUNKS, 2) + op(REFINE) + refine_by(6) + op(RUN_TO_END) + radii(0, SIZE_0, SIZE_N),
+    # A 4 x 3 gradient map 0.02 .. 0.04 and a 5 x 5 checker 0.02 | 0.05.
+    "field_map_gradient": radius_factor(0, 8) + [43]
+    + radius_map(1, [3, 2], M_GRAD_X, radius_factor(0, 9), R_2) + op(RUN_TO_END) + op(VERIFY)
+    + op(CREATE) + radius_factor(0, 8) + [44] + radius_map(1, [4, 4], M_CHECKER, radius_factor(0, 9), R_2_5)
+    + op(STEP, 15) + radii(0, SIZE_N_MINUS_1, SIZE_MAX),
+    # A 512 x 512 noise map 0.02 .. 0.08, bounded and to the end on a torus.
+    "field_map_large": radius_factor(0, 8) + [45] + periodic()
+    + radius_map(3, [3, 3], M_NOISE, radius_factor(0, 9), R_4) + op(RUN) + MAX_NEW_1000
+    + op(RUN_TO_END) + op(FREE_AREA),
+    # Lines 1 x 200 and 200 x 1 (gradients), the y one over a tall domain.
+    "field_map_line": radius_factor(0, 8) + [46] + radius_map(7, [199, 1], M_GRAD_X, radius_factor(0, 9), R_2)
+    + op(RUN_TO_END) + op(CREATE) + radius_factor(0, 8) + [47] + op(DOMAIN) + domain_absolute(0, 0, 0, 3)
+    + radius_map(7, [199, 0], M_GRAD_Y, radius_factor(1, 9), R_2) + op(RUN_TO_END),
+    # Hostile maps: NULL, empty, overflowing sizes, NaN / -1 / 0 / inf put in, s NULL;
+    # then valid denormal and 1e300 values (PDS_ERANGE at the first point, one point).
+    "field_map_hostile": radius_factor(0, 8) + [48]
+    + radius_map(6, [1, 1], M_UNIFORM, radius_factor(0, 9), 0) + radius_map(4, [1, 2], M_UNIFORM, radius_factor(0, 9), 0)
+    + radius_map(4, [0, 2], M_UNIFORM, radius_factor(0, 9), 0)
+    + sum((radius_map(5, [k, 0], M_UNIFORM, radius_factor(0, 9), 0) for k in range(10)), [])
+    + radius_map(5, [2, 1], M_UNIFORM, radius_factor(0, 9), 0)
+    + radius_map(1, [3, 3], M_GRAD_X, radius_factor(0, 9), R_2, hostile=(0, hostile(0)))
+    + radius_map(1, [3, 3], M_GRAD_X, radius_factor(0, 9), R_2, hostile=(1, hostile(15)))
+    + radius_map(1, [3, 3], M_GRAD_X, radius_factor(0, 9), R_2, hostile=(2, hostile(3)))
+    + radius_map(1, [3, 3], M_GRAD_X, radius_factor(0, 9), R_2, hostile=(5, hostile(1)))
+    + radius_map(0xf1, [3, 3], M_GRAD_X, radius_factor(0, 9), R_2)
+    + radius_map(1, [1, 1], M_GRAD_X, radius_factor(0, 9), R_1E300) + op(STEP) + op(CHECK)
+    + op(CREATE) + radius_factor(0, 8) + [48]
+    + radius_map(1, [1, 1], M_GRAD_X, radius_hostile(5), R_2) + op(RUN) + MAX_NEW_0
+    + radius_map(0, [], M_UNIFORM, radius_hostile(10), 0) + op(RUN_TO_END) + op(VERIFY),
+    # A map on a torus: a map 0.3 .. 0.6 exceeds half the period (PDS_ERANGE at the
+    # first point); a count then map and map then count (EINVAL both).
+    "field_map_torus_count": radius_factor(0, 8) + [49] + periodic()
+    + radius_map(1, [1, 1], M_DIAG, radius_factor(0, 6), R_2) + op(STEP)
+    + radius_map(1, [1, 1], M_DIAG, radius_factor(0, 8), R_2) + count(7) + op(RUN_TO_END)
+    + op(CREATE) + radius_factor(0, 8) + [49] + count(7) + radius_map(0, [], M_UNIFORM, radius_factor(0, 9), 0)
+    + op(RUN_TO_END),
+    # A field with the progress callback: a cancel every third report, resumed, a change
+    # tried from inside; and pds_set_radius_* from inside the progress callback.
+    "field_progress": radius_factor(0, 8) + [50] + radius_fn(radius_factor(0, 9), R_2, F_SMOOTH)
+    + progress(2, 3, 9) + op(RUN_TO_END, RESUME) + op(CREATE) + radius_factor(0, 8) + [51]
+    + radius_map(1, [2, 2], M_GRAD_Y, radius_factor(0, 9), R_2) + progress(2, 0, 10) + op(RUN_TO_END),
+}
+
+# Reproducers of open library bugs (found/NOTES), written into found/: the harness
+# tolerates them unless PDS_FUZZ_STRICT is set, so replay them with
+#   PDS_FUZZ_STRICT=1 $(B)/fuzz/fuzz_api tests/fuzz/found/NAME
+# Once fixed, each moves into SEEDS as regress_NAME.
+FOUND = {
+    # A function field 0.02 .. 0.04; bad values everywhere: pds_step refuses the first
+    # point (PDS_EINVAL); good values again; pds_set_domain([-0.5, 0.5]^2); to the end:
+    # 905 points, a fresh sampler with the same seed, domain and field gives 898.
+    "field_first_point_rng": radius_factor(0, 8) + [35] + radius_fn(radius_factor(0, 9), R_2, F_GRAD)
+    + field_bad(1) + op(STEP) + field_good() + op(DOMAIN) + domain_absolute(4, 4, 0, 0)
+    + op(RUN_TO_END),
+    # A function 0.1 everywhere declared in [1e-5, 0.1]: maximal after a bounded run of
+    # 1000 (PDS_DONE, 74 points); then pds_run(s, 0) returns PDS_ERANGE (Oler's bound at
+    # rmin, 1.2e10 points) instead of PDS_DONE.
+    "field_run_maximal_range": radius_factor(0, 8) + [40] + radius_fn(radius_hostile(24), R_1E4, F_CONST)
+    + op(RUN) + MAX_NEW_1000 + op(RUN) + MAX_NEW_0,
 }
 
 
 def main():
-    out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus")
-    os.makedirs(out, exist_ok=True)
-    for name, data in SEEDS.items():
-        with open(os.path.join(out, name), "wb") as f:
-            f.write(bytes(data))
+    here = os.path.dirname(os.path.abspath(__file__))
+    for sub, table in (("corpus", SEEDS), ("found", FOUND)):
+        out = os.path.join(here, sub)
+        os.makedirs(out, exist_ok=True)
+        for name, data in table.items():
+            with open(os.path.join(out, name), "wb") as f:
+                f.write(bytes(data))
 
 
 if __name__ == "__main__":
