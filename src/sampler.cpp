@@ -189,9 +189,10 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
         whole = std::max(count_target_, n);
     } else if (grows) {
         const double expected = kFieldCountMargin * expected_count() + 64.0;
-        if (!(expected <= static_cast<double>(Frame::max_points())))
+        if (max_new == 0 && !(expected <= static_cast<double>(Frame::max_points())))
             throw LimitError(Limit::too_many_points, smallest_frame().user_radius());
-        whole = std::max(static_cast<std::size_t>(expected), n) + 1;
+        whole = expected <= static_cast<double>(Frame::max_points()) ? std::max(static_cast<std::size_t>(expected), n) + 1
+                                                                   : Frame::max_points();
     } else {
         whole = std::max(smallest_frame().count_bound_points(), n) + 1;
     }

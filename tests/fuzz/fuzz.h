@@ -135,10 +135,8 @@ struct fz_state {
     double *rad;     /* the radii read with the points (pds_radii), like pts */
     double *rad_tmp;
     double rad_at;   /* pds_radius when rad was read (a refine scales them) */
-    /* Open bug field_first_point_rng (found/NOTES): a bad value refused the first
-     * point, and a change before it (domain, kind, field, refine) followed: the
-     * points then differ from a fresh sampler's, so the replay is skipped unless
-     * PDS_FUZZ_STRICT is set in the environment. */
+    /* A bad value refused the first point (field_first_point_rng, fixed in 1.3:
+     * a change before the first point then gives a fresh sampler's points). */
     int refused_first, known_rng;
 };
 enum { FZ_FIELD_NONE, FZ_FIELD_MAP, FZ_FIELD_FN };
@@ -148,8 +146,8 @@ enum { FZ_FIELD_NONE, FZ_FIELD_MAP, FZ_FIELD_FN };
 #define FZ_OK (FZ_BIT(0))
 #define FZ_MORE (FZ_BIT(1))
 
-/* PDS_FUZZ_STRICT is set in the environment: no tolerance for the open bugs
- * of found/NOTES (field_first_point_rng, field_run_maximal_range). */
+/* PDS_FUZZ_STRICT is set in the environment: no tolerance for open bugs of
+ * found/NOTES (none open now). */
 int fz_strict(void);
 
 /* Prints where and why, then abort(): libFuzzer saves the input. */
@@ -223,10 +221,6 @@ double fz_field_value(const fz_field_fn *f, double x, double y);
 void fz_sync_radii(fz_state *st, size_t n, const double *xy);
 /* The radius in force of point i (read by fz_sync). */
 double fz_radius_of(const fz_state *st, size_t i);
-/* Open bug field_run_maximal_range (found/NOTES): with a varying field whose
- * smallest radius bounds the pattern beyond the index space, an unbounded
- * pds_run returns PDS_ERANGE on a maximal pattern instead of PDS_DONE. */
-int fz_known_maximal_range(const fz_state *st, size_t max_new);
 /* A change before the first point succeeded (see known_rng). */
 void fz_changed_before_first(fz_state *st);
 /* Free what the field's model holds. */

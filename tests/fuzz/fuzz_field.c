@@ -32,10 +32,15 @@
  *     field branch), so it cannot fail;
  *   - the function gets points of the domain, and a changing call from inside
  *     it returns PDS_ESTATE and changes nothing;
- *   - the torus takes a field (the library since 609b44f, and the header on the
- *     field branch, 944ac54; this branch's header still says PDS_EINVAL).
- * Two open bugs are tolerated unless PDS_FUZZ_STRICT is set (found/NOTES):
- * field_first_point_rng and field_run_maximal_range.
+ *   - the torus takes a field (PDS_ERANGE at the first point when rmax is
+ *     above half the shorter period);
+ *   - a varying field judges an unbounded run on its expected count, not on
+ *     Oler's bound at rmin (which may exceed the pattern by any factor): the
+ *     harness does not make such runs unless the pattern is maximal or the
+ *     bound is within the budget, and PDS_ERANGE is allowed where the bound
+ *     at rmin exceeds the index space.
+ * The two bugs this harness found in 1.3 are fixed (found/NOTES; their
+ * reproducers are corpus/regress_field_*).
  */
 #include <float.h>
 #include <math.h>
@@ -274,15 +279,9 @@ void fz_sync_radii(fz_state *st, size_t n, const double *xy)
     st->rad_at = R;
 }
 
-int fz_known_maximal_range(const fz_state *st, size_t max_new)
-{
-    return !fz_strict() && fz_varying_field(st) && fz_count_bound(st) >= 3e8 &&
-           (max_new == 0 || (double)st->count + (double)max_new >= fz_count_bound(st));
-}
-
 void fz_changed_before_first(fz_state *st)
 {
-    if (st->count == 0 && st->refused_first) st->known_rng = 1;
+    (void)st; /* fixed in 1.3: the generator goes back to the seed (field_first_point_rng) */
 }
 
 void fz_field_reset(fz_state *st)

@@ -341,25 +341,26 @@ SEEDS = {
     "field_progress": radius_factor(0, 8) + [50] + radius_fn(radius_factor(0, 9), R_2, F_SMOOTH)
     + progress(2, 3, 9) + op(RUN_TO_END, RESUME) + op(CREATE) + radius_factor(0, 8) + [51]
     + radius_map(1, [2, 2], M_GRAD_Y, radius_factor(0, 9), R_2) + progress(2, 0, 10) + op(RUN_TO_END),
+    # Fixed in 1.3 (found/NOTES): a first point refused by the field, then a change;
+    # and pds_run(s, 0) on a maximal pattern of a field declared with a tiny rmin.
+    # A function field 0.02 .. 0.04; bad values everywhere: pds_step refuses the first
+    # point (PDS_EINVAL); good values again; pds_set_domain([-0.5, 0.5]^2); to the end:
+    # 905 points, a fresh sampler with the same seed, domain and field gives 898.
+    "regress_field_first_point_rng": radius_factor(0, 8) + [35] + radius_fn(radius_factor(0, 9), R_2, F_GRAD)
+    + field_bad(1) + op(STEP) + field_good() + op(DOMAIN) + domain_absolute(4, 4, 0, 0)
+    + op(RUN_TO_END),
+    # A function 0.1 everywhere declared in [1e-5, 0.1]: maximal after a bounded run of
+    # 1000 (PDS_DONE, 74 points); then pds_run(s, 0) returns PDS_ERANGE (Oler's bound at
+    # rmin, 1.2e10 points) instead of PDS_DONE.
+    "regress_field_run_maximal_range": radius_factor(0, 8) + [40] + radius_fn(radius_hostile(24), R_1E4, F_CONST)
+    + op(RUN) + MAX_NEW_1000 + op(RUN) + MAX_NEW_0,
 }
 
 # Reproducers of open library bugs (found/NOTES), written into found/: the harness
 # tolerates them unless PDS_FUZZ_STRICT is set, so replay them with
 #   PDS_FUZZ_STRICT=1 $(B)/fuzz/fuzz_api tests/fuzz/found/NAME
 # Once fixed, each moves into SEEDS as regress_NAME.
-FOUND = {
-    # A function field 0.02 .. 0.04; bad values everywhere: pds_step refuses the first
-    # point (PDS_EINVAL); good values again; pds_set_domain([-0.5, 0.5]^2); to the end:
-    # 905 points, a fresh sampler with the same seed, domain and field gives 898.
-    "field_first_point_rng": radius_factor(0, 8) + [35] + radius_fn(radius_factor(0, 9), R_2, F_GRAD)
-    + field_bad(1) + op(STEP) + field_good() + op(DOMAIN) + domain_absolute(4, 4, 0, 0)
-    + op(RUN_TO_END),
-    # A function 0.1 everywhere declared in [1e-5, 0.1]: maximal after a bounded run of
-    # 1000 (PDS_DONE, 74 points); then pds_run(s, 0) returns PDS_ERANGE (Oler's bound at
-    # rmin, 1.2e10 points) instead of PDS_DONE.
-    "field_run_maximal_range": radius_factor(0, 8) + [40] + radius_fn(radius_hostile(24), R_1E4, F_CONST)
-    + op(RUN) + MAX_NEW_1000 + op(RUN) + MAX_NEW_0,
-}
+FOUND = {}
 
 
 def main():
