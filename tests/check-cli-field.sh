@@ -122,6 +122,14 @@ expect "--radius-map with --domain: the rule, the radii and coverage of the rect
 expect "--radius-map with --domain: --stats in units of the radii" \
     py stats "$tmp/dom.err" "$tmp/dom.out" map -2 1 2 4 0
 
+# ---- a map on the torus ----------------------------------------------------------------
+run tor $MAP --periodic --radii --verify
+expect "--radius-map --periodic --verify exits 0 (got $rc)" [ "$rc" -eq 0 ]
+expect "--radius-map --periodic: points in [0,1)^2, radii within [rmin, rmax]" \
+    awk '$1 < 0 || $1 >= 1 || $2 < 0 || $2 >= 1 || $3 < 0.01 || $3 > 0.04 { bad = 1 } END { exit bad || NR < 100 }' "$tmp/tor.out"
+run torbig --radius-map "$img/grad-p5.pgm" --rmin 0.01 --rmax 0.6 --periodic
+expect "--radius-map --periodic: a largest radius above half the side is refused (got $rc)" [ "$rc" -ne 0 ]
+
 # ---- a constant map is the plain sampler ---------------------------------------------------
 run const --radius-map "$img/const.pgm" --rmin 0.05 --rmax 0.05
 run constplain --radius 0.05
@@ -246,10 +254,6 @@ done
 
 # ---- command lines refused: exit 2, a message, the usage, nothing on stdout -----------------
 G=$img/grad-p5.pgm
-usage_case "--radius-map with --periodic" '--periodic cannot be used with --radius-map' \
-    --radius-map "$G" --rmin 0.01 --rmax 0.04 --periodic
-usage_case "--periodic before --radius-map" '--periodic cannot be used with --radius-map' \
-    --periodic --radius-map "$G" --rmin 0.01 --rmax 0.04
 usage_case "--radius-map with --count" '--count cannot be used with --radius-map' \
     --radius-map "$G" --rmin 0.01 --rmax 0.04 --count 100
 usage_case "--count with --radius-map" '--radius-map cannot be used with --count' \

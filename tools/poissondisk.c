@@ -305,9 +305,6 @@ static int parse_args(int argc, char **argv, struct options *o)
         if (f->rmin > f->rmax)
             return cli_usage_error(&cli, "--rmin %g is larger than --rmax %g", f->rmin,
                                    f->rmax);
-        if (o->where.periodic)
-            return cli_usage_error(&cli, "--periodic cannot be used with --radius-map: a "
-                                   "radius field needs a plain rectangle");
         if (o->out.spectrum_from != NULL)
             return cli_usage_error(&cli, "--radius-map cannot be used with --spectrum-from: "
                                    "the patterns are read, not made");
