@@ -323,11 +323,13 @@ PDS_API int pds_set_progress(pds_sampler *s, pds_progress_fn fn, void *user) PDS
  * pds_set_count (PDS_EINVAL, either way round). A varying field runs the
  * Jones loop from the first point (no dart throwing): in our measurements
  * about 1.8 times the plain sampler's time at the same number of points.
- * An unbounded pds_run with a varying field is judged on the field's
- * expected count (1.25 times that of a radius whose 1/R^2 is the mean of
- * 1/r^2, plus 64), not on a bound at rmin; memory is reserved for it and
- * grows with the run, so PDS_ENOMEM (or PDS_ERANGE past the index space)
- * may come after some points were added: they stay, *added counts them.
+ * With a varying field the count limit is judged at the first point on
+ * Oler's bound at rmin (as for a constant radius rmin); once points exist
+ * an unbounded pds_run is not judged again (a maximal pattern returns
+ * PDS_DONE). Memory is not reserved for that bound, which one small value
+ * can make far larger than the pattern, but grows with the run: PDS_ENOMEM
+ * (or PDS_ERANGE past the index space) may then come after some points were
+ * added, which stay; *added counts them.
  * Allowed only before the first point; the last field set wins.
  */
 

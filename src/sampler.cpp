@@ -179,27 +179,21 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
     // prepare() refuses a total past the index space, so an unbounded run
     // whose maximal pattern might not fit fails before any point.
     // A varying field: Oler's bound at the smallest radius may exceed the
-    // pattern by any factor (one small pixel in a map), so memory is reserved
-    // for the expected count and grows with the run; the index space is
-    // judged on that count, and a pattern that truly outgrows it stops there
-    // (PDS_ERANGE, the points kept).
+    // pattern by any factor (one small pixel in a map). It is judged at the
+    // first point, as a constant radius is; afterwards the pattern itself
+    // says whether it is complete. Memory is not reserved for that bound but
+    // grows with the run (geometrically, O(1) amortized), and a pattern that
+    // truly outgrows the index space stops there (PDS_ERANGE, points kept).
     const bool grows = varying_field();
-    std::size_t whole;
-    if (count_target_ != 0) {
-        whole = std::max(count_target_, n);
-    } else if (grows) {
-        const double expected = kFieldCountMargin * expected_count() + 64.0;
-        if (max_new == 0 && !(expected <= static_cast<double>(Frame::max_points())))
-            throw LimitError(Limit::too_many_points, smallest_frame().user_radius());
-        whole = expected <= static_cast<double>(Frame::max_points()) ? std::max(static_cast<std::size_t>(expected), n) + 1
-                                                                   : Frame::max_points();
+    const std::size_t bound = smallest_frame().count_bound_points();
+    if (grows) {
+        const std::size_t asked = max_new == 0 ? (n == 0 ? bound : 0) : std::min(n + max_new, std::max(bound, n));
+        if (asked > Frame::max_points()) throw LimitError(Limit::too_many_points, smallest_frame().user_radius());
+        prepare(n + 1);
     } else {
-        whole = std::max(smallest_frame().count_bound_points(), n) + 1;
+        const std::size_t whole = count_target_ != 0 ? std::max(count_target_, n) : std::max(bound, n) + 1;
+        prepare(max_new != 0 && max_new < whole - n ? n + max_new : whole);
     }
-    const std::size_t target = max_new != 0 && (grows || max_new < whole - n) ? n + max_new : whole;
-    prepare(grows ? std::min(target, n + (whole > n ? whole - n : 1)) : target);
-    // A field's expected count: as for the radius whose 1/R^2 is the mean of
-    // 1/r^2 over the domain.
     // The estimate is needed only for reports (a field's asks the field).
     const double expected =
         progress_.fn == nullptr ? 1.0 : count_target_ != 0 ? static_cast<double>(count_target_) : expected_count();

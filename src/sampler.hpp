@@ -102,10 +102,8 @@ public:
 
 private:
     bool started() const { return jones_ != nullptr; }
-    // The expected size of a maximal pattern (progress; a field's memory).
+    // The expected size of a maximal pattern (for progress reports).
     double expected_count() const;
-    // A varying field reserves this many times its expected count at first.
-    static constexpr double kFieldCountMargin = 1.25;
     // The frame at the smallest radius in force: what the limits and the
     // bounds on the count are judged with.
     Frame smallest_frame() const;

@@ -34,11 +34,11 @@
  *     it returns PDS_ESTATE and changes nothing;
  *   - the torus takes a field (PDS_ERANGE at the first point when rmax is
  *     above half the shorter period);
- *   - a varying field judges an unbounded run on its expected count, not on
- *     Oler's bound at rmin (which may exceed the pattern by any factor): the
- *     harness does not make such runs unless the pattern is maximal or the
- *     bound is within the budget, and PDS_ERANGE is allowed where the bound
- *     at rmin exceeds the index space.
+ *   - a varying field judges Oler's bound at rmin (which may exceed the
+ *     pattern by any factor) at the first point only: the harness does not
+ *     make unbounded runs unless the pattern is maximal or the bound is
+ *     within the budget, and PDS_ERANGE is allowed where the bound at rmin
+ *     exceeds the index space.
  * The two bugs this harness found in 1.3 are fixed (found/NOTES; their
  * reproducers are corpus/regress_field_*).
  */

@@ -196,8 +196,7 @@ static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
     check_range(st, "pds_run", rc, want, before);
     /* (A field may make the pattern maximal far below its bound: PDS_DONE, checked
      * by fz_check_maximal.) */
-    /* (A varying field judges an unbounded run on its expected count: the
-     * bound at rmin obliges nothing.) */
+    /* (A varying field judges the bound at rmin at the first point only.) */
     if (FZ_SPEC_111 && want >= 1e9 && !st->maximal && !fz_varying_field(st))
         FZ_CHECK(rc == PDS_ERANGE, "pds_run(max_new %zu) returned %d for %.3g points", max_new, rc, want);
     if (before + added > 0 && (rc == PDS_ENOMEM || rc == PDS_ERANGE)) st->run_failed = 1;
@@ -347,7 +346,7 @@ void fz_op_step(fz_state *st, unsigned arg)
 }
 
 /* An unbounded run must fail at once (PDS_ERANGE): the pattern cannot fit.
- * (Not known for a varying field, judged on its expected count: bounded runs.) */
+ * (A varying field: bounded runs, which are judged alike at every point.) */
 static int unbounded_fails(const fz_state *st)
 {
     if (st->target == 0 && fz_varying_field(st)) return 0;
