@@ -113,18 +113,18 @@ START_TEST(reference_is_maximal) {
 END_TEST
 
 START_TEST(law_of_a_gradient_field) {
-    compare_field_laws(gradient, 0.05, 0.1, test_light() ? 60 : 2000);
+    compare_field_laws(gradient, 0.05, 0.1, test_light() ? 30 : 2000);
 }
 END_TEST
 
 START_TEST(law_of_a_step_field) {
-    compare_field_laws(step, 0.04, 0.1, test_light() ? 60 : 2000);
+    compare_field_laws(step, 0.04, 0.1, test_light() ? 30 : 2000);
 }
 END_TEST
 
 START_TEST(law_of_a_step_field_on_the_torus) {
     // The step wraps too: x = 0 == 1 is a second step.
-    compare_field_laws(step, 0.04, 0.1, test_light() ? 60 : 2000, true);
+    compare_field_laws(step, 0.04, 0.1, test_light() ? 30 : 2000, true);
 }
 END_TEST
 

@@ -87,7 +87,7 @@ START_TEST(insertion_order_does_not_matter) {
     // The sampler's rule under a step field (1:4): later heavy disks near the
     // step hide light ones. Inserted in time order and shuffled (disks then
     // hidden at insertion), the mesh is the same regular triangulation.
-    const std::vector<Disk> disks = rsa(test_light() ? 3000 : 20000, step_field, 7);
+    const std::vector<Disk> disks = rsa(test_light() ? 1500 : 20000, step_field, 7);
     const pds::Delaunay in_time = build(disks);
     std::vector<std::size_t> order(disks.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -121,10 +121,11 @@ START_TEST(equal_radii_give_the_unweighted_mesh) {
         std::mt19937_64 rng(13);
         if (pass == 0) {
             std::uniform_real_distribution<double> u(0.0, 1.0);
-            for (int i = 0; i < 2000; ++i) pts.push_back({u(rng), u(rng)});
+            for (int i = 0; i < (test_light() ? 400 : 2000); ++i) pts.push_back({u(rng), u(rng)});
         } else {
-            for (int i = 0; i < 20; ++i)
-                for (int j = 0; j < 20; ++j) pts.push_back({i / 19.0, j / 19.0});
+            const int k = test_light() ? 10 : 20;
+            for (int i = 0; i < k; ++i)
+                for (int j = 0; j < k; ++j) pts.push_back({i / double(k - 1), j / double(k - 1)});
             std::shuffle(pts.begin(), pts.end(), rng);
         }
         pds::Delaunay plain(pds::Box{0, 0, 1, 1});
@@ -158,8 +159,10 @@ START_TEST(weighted_grid_with_ties) {
     // A grid with two radii in a pattern: many exact ties in the power test
     // (lifted points on one plane) and points on edges.
     std::vector<Disk> disks;
-    for (int i = 0; i < 16; ++i)
-        for (int j = 0; j < 16; ++j) disks.push_back({{i / 15.0, j / 15.0}, (i + 2 * j) % 3 == 0 ? 0.05 : 0.025});
+    const int k = test_light() ? 8 : 16;
+    for (int i = 0; i < k; ++i)
+        for (int j = 0; j < k; ++j)
+            disks.push_back({{i / double(k - 1), j / double(k - 1)}, (i + 2 * j) % 3 == 0 ? 0.05 : 0.025});
     std::mt19937_64 rng(17);
     std::shuffle(disks.begin(), disks.end(), rng);
     check_regular_brute(build(disks));
