@@ -319,7 +319,8 @@ PDS_API int pds_set_progress(pds_sampler *s, pds_progress_fn fn, void *user) PDS
  * pds_step, pds_run in any batches (the same seed gives the same points),
  * pds_verify, pds_free_area, pds_set_progress and pds_set_periodic (the
  * field is evaluated at points of the fundamental domain; rmax must not
- * exceed half the shorter period, PDS_ERANGE at the first point); not with
+ * exceed half the shorter period, and a varying field needs the longer
+ * period at most 16 times the shorter, PDS_ERANGE at the first point); not with
  * pds_set_count (PDS_EINVAL, either way round). A varying field runs the
  * Jones loop from the first point (no dart throwing): in our measurements
  * about 1.8 times the plain sampler's time at the same number of points.

@@ -59,6 +59,9 @@ const char* limit_text(pds::Limit limit) {
                    "one below 2^-900 times the largest: use 0 there)";
         case pds::Limit::radius_exceeds_period:
             return "the radius is larger than half the shorter period of the periodic domain";
+        case pds::Limit::field_periods_too_unequal:
+            return "a radius field on a periodic domain needs the longer side at most 16 times the "
+                   "shorter";
         case pds::Limit::periods_too_unequal:
             return "the periodic domain's longer side is more than 1024 times its shorter side";
         case pds::Limit::ok:

@@ -86,6 +86,11 @@ void Frame::set_radius(double user_radius) {
     r_ = internal_radius(user_radius);
 }
 
+bool Frame::periods_beyond(double ratio) const {
+    const double w = user_domain_.x1 - user_domain_.x0, h = user_domain_.y1 - user_domain_.y0;
+    return periodic_ && std::max(w, h) > ratio * std::min(w, h);
+}
+
 double Frame::internal_radius(double user_radius) const {
     return effective_radius(box_, std::ldexp(user_radius, scale_exp_));
 }

@@ -35,6 +35,7 @@ enum class Limit {
     coordinates_too_small,   // |coordinates| all below 2^-900, or one nonzero below 2^-900 of the largest
     radius_exceeds_period,   // periodic domain: R above half the shorter period
     periods_too_unequal,     // periodic domain: the longer period above kMaxPeriodRatio times the shorter
+    field_periods_too_unequal,  // a varying radius field on a torus longer than kMaxFieldPeriodRatio
 };
 
 // Thrown before anything changes when a call asks what the limits forbid.
@@ -59,6 +60,12 @@ public:
     // a 10^4:1 torus took 6 s for a 10-point pds_free_area, 10^6:1 minutes.
     // Up to 1024:1 such a query stays under 0.05 s.
     static constexpr double kMaxPeriodRatio = 1024.0;
+    // A varying radius field runs the Jones loop from the first point, so its
+    // sparse start meets that cost on every thin torus (300 points of a
+    // 1000:1 torus: seconds): such a torus is held to 16:1.
+    static constexpr double kMaxFieldPeriodRatio = 16.0;
+    // Whether a torus is longer than kMaxFieldPeriodRatio (user periods).
+    bool periods_beyond(double ratio) const;
 
     // Requires x0 < x1, y0 < y1 finite and a finite radius > 0.
     Frame(const Box& user_domain, double user_radius);

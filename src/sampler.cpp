@@ -98,6 +98,8 @@ void Sampler::prepare(std::size_t points) {
         if (limit != Limit::ok) throw LimitError(limit, low.user_radius());
         const Limit high = frame_.precision_limit();
         if (high != Limit::ok) throw LimitError(high, frame_.user_radius());
+        if (varying_field() && frame_.periods_beyond(Frame::kMaxFieldPeriodRatio))
+            throw LimitError(Limit::field_periods_too_unequal, frame_.user_radius());
         // Count mode lowers the radius as it goes: the lowest it can reach is
         // judged now, so a run never meets the limit half way.
         if (count_target_ != 0) {

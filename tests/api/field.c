@@ -435,6 +435,22 @@ START_TEST(torus_field_limits)
     ck_assert_int_eq(pds_set_radius_fn(s, gradient, &r0, 0.2, 0.6), 0);
     assert_run_rejected(s, 0, "rmax above half a period");
     pds_destroy(s);
+    /* A varying field on a torus longer than 16:1: PDS_ERANGE; 16:1 runs. */
+    {
+        double r1 = 0.01;
+        s = sampler_new_in(1.0, 1, (test_domain){0, 0, 1.7, 0.1});
+        ck_assert_int_eq(pds_set_periodic(s, 1), 0);
+        ck_assert_int_eq(pds_set_radius_fn(s, gradient, &r1, 0.01, 0.02), 0);
+        assert_run_rejected(s, 0, "a 17:1 torus with a field");
+        ck_assert_ptr_nonnull(strstr(pds_errmsg(s), "16 times"));
+        pds_destroy(s);
+        s = sampler_new_in(1.0, 1, (test_domain){0, 0, 1.6, 0.1});
+        ck_assert_int_eq(pds_set_periodic(s, 1), 0);
+        ck_assert_int_eq(pds_set_radius_fn(s, gradient, &r1, 0.01, 0.04), 0);
+        run_to_end(s);
+        assert_maximal(s, "a 16:1 torus with a field");
+        pds_destroy(s);
+    }
 }
 END_TEST
 

@@ -88,7 +88,8 @@ int fz_periods_too_unequal(const fz_state *st, double slack)
 {
     const double hw = st->dom[2] * 0.5 - st->dom[0] * 0.5, hh = st->dom[3] * 0.5 - st->dom[1] * 0.5;
     const double shorter = hw < hh ? hw : hh, longer = hw < hh ? hh : hw;
-    return st->periodic && longer > 1024.0 * shorter * (1.0 + slack);
+    /* A varying radius field: 16 (1.3). */
+    return st->periodic && longer > (fz_varying_field(st) ? 16.0 : 1024.0) * shorter * (1.0 + slack);
 }
 
 void fz_count_radius(fz_state *st)
