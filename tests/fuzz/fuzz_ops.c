@@ -71,8 +71,10 @@ static double lowest_radius(const fz_state *st)
 {
     double area, low;
     if (st->target == 0) return fz_smallest_radius(st); /* a field's rmin, scaled */
-    area = (st->dom[2] - st->dom[0]) * (st->dom[3] - st->dom[1]);
-    low = 0.98 * sqrt(area / (3.14159265358979323846 * (double)st->target));
+    /* sqrt(w) sqrt(h), not sqrt(w h): the area of a domain 1e-204 wide
+     * underflows, the library's (in its scaled frame) does not. */
+    area = sqrt(st->dom[2] - st->dom[0]) * sqrt(st->dom[3] - st->dom[1]);
+    low = 0.98 * area / sqrt(3.14159265358979323846 * (double)st->target);
     return low < st->radius ? low : st->radius;
 }
 
