@@ -1,6 +1,6 @@
 // jones_field.cpp - the Jones stage with a variable radius (see
-// jones_stage.hpp and point_radii.hpp): the test of a site outside its own
-// power cell, and the mesh built anew when a refine changes every radius. The loop itself is in
+// jones_stage.hpp and point_radii.hpp): the exact test of a candidate in a
+// power cell, the test of a site outside its own power cell, and the mesh built anew when a refine changes every radius. The loop itself is in
 // jones_stage.cpp; these run only when the stage has a field.
 #include <algorithm>
 #include <stdexcept>
@@ -9,6 +9,18 @@
 #include "predicates.hpp"
 
 namespace pds {
+
+bool JonesStage::in_free_power_cell(const Point& p, VertexIndex v) const {
+    // In the site's power cell and outside its disk: outside every disk.
+    const Point& c = dt_.point(v);
+    const double rc = dt_.radius(v);
+    if (compare_distance(p, c, rc) < 0) return false;
+    bool ok = true;
+    dt_.for_each_neighbour(v, [&](VertexIndex n) {
+        if (ok && !Delaunay::is_ghost(n) && compare_power(p, c, rc, dt_.point(n), dt_.radius(n)) > 0) ok = false;
+    });
+    return ok;
+}
 
 bool JonesStage::site_in_own_cell(VertexIndex v) const {
     const Point& c = dt_.point(v);

@@ -323,16 +323,7 @@ bool JonesStage::acceptable(const Point& p, VertexIndex v) const {
     // into the fundamental domain when inserted.
     if (!copies_.on() && !box_.contains(p)) return false;
     const Point& c = dt_.point(v);
-    if (radii_) {
-        // In the site's power cell and outside its disk: outside every disk.
-        const double rc = dt_.radius(v);
-        if (compare_distance(p, c, rc) < 0) return false;
-        bool ok = true;
-        dt_.for_each_neighbour(v, [&](VertexIndex n) {
-            if (ok && !Delaunay::is_ghost(n) && compare_power(p, c, rc, dt_.point(n), dt_.radius(n)) > 0) ok = false;
-        });
-        return ok;
-    }
+    if (radii_) return in_free_power_cell(p, v);
     if (compare_distance(p, c, r_) < 0) return false;
     bool ok = true;
     dt_.for_each_neighbour(v, [&](VertexIndex n) {
@@ -352,18 +343,7 @@ void JonesStage::insert_point(const Point& p, VertexIndex near, double value) {
         return;
     }
     if (copies_.on()) {
-        make_room_for_copies(copies_.max_copies());  // may throw; nothing changed yet
-        const VertexIndex from = static_cast<VertexIndex>(dt_.vertex_count());
-        const Point w = copies_.torus().wrap(p);
-        const VertexIndex v = insert_with_copies(w, walk_start(p, w, near), radii_ ? radii_->radius_of(value) : 0.0);
-        if (radii_) values_.push_back(value);
-        order_.push(v);
-        since_batch_.push_back(v);
-        draw_failures_ = 0;
-        const CellMeasure m = cells().measure(v);
-        if (cell_valid(v, m) && new_rings_valid(from + 1)) tree_.set(site_of(v), m.area);
-        else widen_margin();  // if it fails, the next call finishes it (settle)
-        if (radii_) maybe_narrow_margin();
+        insert_point_on_torus(p, near, value);
         return;
     }
     const VertexIndex v = dt_.insert(p, near);

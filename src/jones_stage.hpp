@@ -163,6 +163,10 @@ private:
     // A variable radius: whether v's site lies in its own power cell (else
     // its fan's pieces reach outside the cell, see free_area.hpp).
     bool site_in_own_cell(VertexIndex v) const;
+    // A variable radius: p in v's power cell and outside its disk (exact).
+    bool in_free_power_cell(const Point& p, VertexIndex v) const;
+    // The torus: p (drawn in near's cell) wrapped, inserted with its copies.
+    void insert_point_on_torus(const Point& p, VertexIndex near, double value);
     // A variable radius: the mesh built anew from the points (refine).
     void rebuild_mesh();
     // The torus: room for one more point and all its copies (may allocate).

@@ -212,6 +212,21 @@ bool JonesStage::still_free_on_torus(const Point& p) const {
     return true;
 }
 
+void JonesStage::insert_point_on_torus(const Point& p, VertexIndex near, double value) {
+    make_room_for_copies(copies_.max_copies());  // may throw; nothing changed yet
+    const VertexIndex from = static_cast<VertexIndex>(dt_.vertex_count());
+    const Point w = copies_.torus().wrap(p);
+    const VertexIndex v = insert_with_copies(w, walk_start(p, w, near), radii_ ? radii_->radius_of(value) : 0.0);
+    if (radii_) values_.push_back(value);
+    order_.push(v);
+    since_batch_.push_back(v);
+    draw_failures_ = 0;
+    const CellMeasure m = cells().measure(v);
+    if (cell_valid(v, m) && new_rings_valid(from + 1)) tree_.set(site_of(v), m.area);
+    else widen_margin();  // if it fails, the next call finishes it (settle)
+    if (radii_) maybe_narrow_margin();
+}
+
 void JonesStage::settle() {
     if (widen_pending_) widen_margin();
 }
