@@ -6,6 +6,7 @@
 #include <cstring>
 #include <new>
 
+#include "huge_pages.hpp"
 #include "jones_stage.hpp"
 #include "mesh_cells.hpp"
 #include "predicates.hpp"
@@ -60,6 +61,7 @@ DartStage::DartStage(const Box& domain, double radius, const Torus& torus)
     if (total > static_cast<std::size_t>(-1) / sizeof(Cell)) throw std::bad_alloc();
     cells_.reset(static_cast<Cell*>(std::calloc(total, sizeof(Cell))));
     if (!cells_) throw std::bad_alloc();
+    advise_huge_pages(cells_.get(), total * sizeof(Cell));
     // A window long enough that its acceptance rate is a fair estimate, short
     // enough that the stage ends soon after the rate falls.
     window_ = std::max<std::size_t>(kMinWindow, cols_ * rows_ / 16);

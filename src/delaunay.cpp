@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "batch.hpp"
+#include "huge_pages.hpp"
 #include "predicates.hpp"
 
 namespace pds {
@@ -41,7 +42,10 @@ void Delaunay::reserve(std::size_t vertices) {
     if (weighted_) {
         radii_.reserve(vertices);
         hidden_by_.reserve(vertices);
+        advise_huge_pages(radii_);
     }
+    advise_huge_pages(points_);
+    advise_huge_pages(vertex_edge_);
 }
 
 bool Delaunay::has_room_for_one() const {

@@ -5,6 +5,7 @@
 #include <new>
 
 #include "batch.hpp"
+#include "huge_pages.hpp"
 
 namespace pds {
 
@@ -39,6 +40,7 @@ void FreeAreaTree::reserve(std::size_t leaves) {
     // used entry, so nothing uninitialized is ever read.
     void* raw = nullptr;
     if (posix_memalign(&raw, 64, total * sizeof(double)) != 0) throw std::bad_alloc();
+    advise_huge_pages(raw, total * sizeof(double));
     std::unique_ptr<double[], Free> fresh(static_cast<double*>(raw));
     if (size_ != 0) std::memcpy(fresh.get(), nodes_.get(), size_ * sizeof(double));
     nodes_ = std::move(fresh);

@@ -3,6 +3,8 @@
 
 #include <stdexcept>
 
+#include "huge_pages.hpp"
+
 namespace pds {
 
 void QuadEdgeMesh::reserve(std::size_t records) {
@@ -10,6 +12,7 @@ void QuadEdgeMesh::reserve(std::size_t records) {
     // vector::reserve either succeeds or changes nothing, so a failure here
     // leaves every edge as it was.
     rec_.reserve(records);
+    advise_huge_pages(rec_);
 }
 
 std::size_t QuadEdgeMesh::spare_records() const {

@@ -1,6 +1,7 @@
 // spatial_hash.cpp - see spatial_hash.hpp.
 #include "spatial_hash.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pds {
@@ -31,7 +32,7 @@ SpatialHash::SpatialHash(const std::vector<Point>& points, std::size_t first, co
     // which costs time, not correctness.
     const double span = domain.width() > domain.height() ? domain.width() : domain.height();
     if (span / cell_x_ > kMaxCellsPerAxis) cell_x_ = cell_y_ = span / kMaxCellsPerAxis;
-    index(points, first);
+    if (!index_dense(points, first, domain.width(), domain.height())) index(points, first);
 }
 
 SpatialHash::SpatialHash(const std::vector<Point>& points, std::size_t first, const Torus& t,
@@ -39,7 +40,36 @@ SpatialHash::SpatialHash(const std::vector<Point>& points, std::size_t first, co
     : x0_(t.x0), y0_(t.y0), cols_(cells_per_period(t.px, radius)), rows_(cells_per_period(t.py, radius)) {
     cell_x_ = t.px / static_cast<double>(cols_);
     cell_y_ = t.py / static_cast<double>(rows_);
-    index(points, first);
+    if (!index_dense(points, first, t.px, t.py)) index(points, first);
+}
+
+bool SpatialHash::index_dense(const std::vector<Point>& points, std::size_t first, double width, double height) {
+    // Two cells more than the extent needs: rounding never reaches past them,
+    // and a point's cell is clamped into the grid anyway (queries clamp the
+    // same way, so neighbours stay neighbours).
+    constexpr double kDenseCellsPerPoint = 4.0;
+    const double n = static_cast<double>(points.size() - first);
+    const double cols = cols_ > 0 ? static_cast<double>(cols_) : std::floor(width / cell_x_) + 2.0;
+    const double rows = rows_ > 0 ? static_cast<double>(rows_) : std::floor(height / cell_y_) + 2.0;
+    if (!(cols * rows <= kDenseCellsPerPoint * n + 1024.0)) return false;
+    dense_cols_ = static_cast<std::int64_t>(cols);
+    dense_rows_ = static_cast<std::int64_t>(rows);
+    const std::size_t cells = static_cast<std::size_t>(dense_cols_ * dense_rows_);
+    const auto cell_of = [&](const Point& p) {
+        const std::int64_t x = std::min(cell(p.x, x0_, cell_x_, cols_), dense_cols_ - 1);
+        const std::int64_t y = std::min(cell(p.y, y0_, cell_y_, rows_), dense_rows_ - 1);
+        return static_cast<std::size_t>(y * dense_cols_ + x);
+    };
+    // A counting sort: sizes, then each cell's end, then the points from the
+    // last back into their slots, which leaves each cell's start behind.
+    start_.assign(cells + 1, 0);
+    for (std::size_t i = first; i < points.size(); ++i) ++start_[cell_of(points[i])];
+    for (std::size_t c = 1; c <= cells; ++c) start_[c] += start_[c - 1];
+    sorted_.resize(points.size() - first);
+    for (std::size_t i = points.size(); i-- > first;)
+        sorted_[--start_[cell_of(points[i])]] = static_cast<std::uint32_t>(i);
+    dense_ = true;
+    return true;
 }
 
 void SpatialHash::index(const std::vector<Point>& points, std::size_t first) {

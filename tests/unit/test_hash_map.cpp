@@ -37,23 +37,28 @@ START_TEST(agrees_with_std_map) {
 END_TEST
 
 START_TEST(spatial_hash_finds_every_close_pair) {
-    std::mt19937_64 rng(13);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<pds::Point> pts(4);  // the first `first` entries are skipped
-    for (int i = 0; i < 3000; ++i) pts.push_back({u(rng), 0.5 * u(rng)});
-    const double r = 0.013;
-    const pds::SpatialHash grid(pts, 4, pds::Box{0, 0, 1, 0.5}, r);
-    for (std::size_t i = 4; i < pts.size(); ++i) {
-        std::vector<char> found(pts.size(), 0);
-        grid.for_each_near(pts[i], [&](std::uint32_t j, int sx, int sy) {
-            ck_assert(sx == 0 && sy == 0);
-            found[j] = 1;
-        });
-        for (std::size_t j = 4; j < pts.size(); ++j) {
-            const double dx = pts[i].x - pts[j].x, dy = pts[i].y - pts[j].y;
-            if (dx * dx + dy * dy < r * r) ck_assert(found[j]);
+    // A full pattern takes the layout sorted by cell; a sparse one (a grid of
+    // more than four cells a point) the hashed one: both are checked.
+    for (const int n : {3000, 300}) {
+        std::mt19937_64 rng(13);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        std::vector<pds::Point> pts(4);  // the first `first` entries are skipped
+        for (int i = 0; i < n; ++i) pts.push_back({u(rng), 0.5 * u(rng)});
+        const double r = 0.013;
+        const pds::SpatialHash grid(pts, 4, pds::Box{0, 0, 1, 0.5}, r);
+        ck_assert(grid.dense() == (n == 3000));
+        for (std::size_t i = 4; i < pts.size(); ++i) {
+            std::vector<char> found(pts.size(), 0);
+            grid.for_each_near(pts[i], [&](std::uint32_t j, int sx, int sy) {
+                ck_assert(sx == 0 && sy == 0);
+                found[j] = 1;
+            });
+            for (std::size_t j = 4; j < pts.size(); ++j) {
+                const double dx = pts[i].x - pts[j].x, dy = pts[i].y - pts[j].y;
+                if (dx * dx + dy * dy < r * r) ck_assert(found[j]);
+            }
+            for (std::size_t j = 0; j < 4; ++j) ck_assert(!found[j]);
         }
-        for (std::size_t j = 0; j < 4; ++j) ck_assert(!found[j]);
     }
 }
 END_TEST
@@ -64,12 +69,15 @@ START_TEST(spatial_hash_wraps_on_the_torus) {
     // query; on a period of two or three cells the shifts tell the copies apart.
     std::mt19937_64 rng(17);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    for (double r : {0.05, 0.2, 0.24}) {
+    // The last radius gives more than four cells a point: the hashed layout.
+    for (double r : {0.05, 0.2, 0.24, 0.0125}) {
         pds::Torus t;
         t.px = 3.0, t.py = 0.5, t.x0 = -1.0, t.y0 = 3.0;
+        const int n = r < 0.05 ? 2000 : 600;
         std::vector<pds::Point> pts(2);  // the first `first` entries are skipped
-        for (int i = 0; i < 600; ++i) pts.push_back({t.x0 + t.px * u(rng), t.y0 + t.py * u(rng)});
+        for (int i = 0; i < n; ++i) pts.push_back({t.x0 + t.px * u(rng), t.y0 + t.py * u(rng)});
         const pds::SpatialHash grid(pts, 2, t, r);
+        ck_assert(grid.dense() == (r >= 0.05));
         std::size_t pairs = 0;
         for (std::size_t i = 2; i < pts.size(); ++i) {
             std::vector<std::pair<std::uint32_t, std::pair<int, int>>> found;

@@ -1,0 +1,34 @@
+// huge_pages.hpp - ask the kernel for transparent huge pages under the large
+// arrays the sampler reads at random.
+//
+// Every dart, ring walk and tree descent lands somewhere new in arrays of
+// tens of bytes per point; past a few million points most of those accesses
+// also miss the TLB, and a page-table walk is one more dependent miss.
+// Backing the arrays with 2 MiB pages removes most of those walks. Linux
+// gives huge pages to anonymous memory only where asked when its setting is
+// "madvise" (Debian's default), so the large reservations ask. A hint only:
+// it never changes a result, and where it is unsupported it does nothing.
+//
+// Only arrays of 128 MiB and more ask: at 10^6 points (arrays of tens of
+// MiB) the hint cost more than it saved (the kernel compacts memory to find
+// huge pages: 1.40 s became 1.52 s), at 10^7 it saved 6% (22.0 s to 20.7 s).
+#ifndef PDS_HUGE_PAGES_HPP
+#define PDS_HUGE_PAGES_HPP
+
+#include <cstddef>
+#include <vector>
+
+namespace pds {
+
+// Advises huge pages for the 2 MiB-aligned part of [p, p + bytes), when
+// bytes is at least 128 MiB.
+void advise_huge_pages(const void* p, std::size_t bytes);
+
+template <class T>
+void advise_huge_pages(const std::vector<T>& v) {
+    advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+}
+
+}  // namespace pds
+
+#endif
