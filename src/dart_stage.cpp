@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <new>
 
 #include "huge_pages.hpp"
@@ -15,16 +14,12 @@ namespace pds {
 
 namespace {
 
-std::uint64_t bits_of(double v) {
-    std::uint64_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-}
-
-double from_bits(std::uint64_t b) {
-    double v;
-    std::memcpy(&v, &b, sizeof v);
-    return v;
+// An offset in [0, side) as a step count in [0, kOffsetSteps); rounding may
+// put a point a hair outside its cell, hence the clamp.
+std::uint64_t offset_steps(double offset, double step) {
+    const double s = std::floor(offset / step);
+    if (!(s > 0.0)) return 0;
+    return s < 65535.0 ? static_cast<std::uint64_t>(s) : 65535;
 }
 
 std::size_t cells_along(double length, double side) {
@@ -56,6 +51,13 @@ DartStage::DartStage(const Box& domain, double radius, const Torus& torus)
     }
     inv_side_x_ = 1.0 / side_x_;
     inv_side_y_ = 1.0 / side_y_;
+    step_x_ = side_x_ / kOffsetSteps;
+    step_y_ = side_y_ / kOffsetSteps;
+    // Slack far above the rounding of a cell coordinate: a block a column
+    // too wide costs a little time, one too narrow would be wrong.
+    constexpr double kReachSlack = 1e-6;
+    reach_x_ = radius * inv_side_x_ + kReachSlack;
+    reach_y_ = radius * inv_side_y_ + kReachSlack;
     stride_ = cols_ + 2 * kPad;
     const std::size_t total = stride_ * (rows_ + 2 * kPad);
     if (total > static_cast<std::size_t>(-1) / sizeof(Cell)) throw std::bad_alloc();
@@ -91,25 +93,31 @@ std::size_t DartStage::cell_of(const Point& p) const {
     return (c.y + kPad) * stride_ + c.x + kPad;
 }
 
-Point DartStage::read(const Cell& cell) const {
-    // Empty cells read as NaN: every comparison with such a point is false.
-    return Point{from_bits(~cell.x_bits), from_bits(~cell.y_bits)};
+void DartStage::write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index) {
+    const std::size_t cell = static_cast<std::size_t>(row + kPad) * stride_ + static_cast<std::size_t>(col + kPad);
+    const std::uint64_t sx = offset_steps(p.x - cell_x0(col), step_x_);
+    const std::uint64_t sy = offset_steps(p.y - cell_y0(row), step_y_);
+    cells_[cell] = (sy << 48) | (sx << 32) | (std::uint64_t{index} + 1);
 }
 
-void DartStage::write(std::size_t cell, const Point& p) {
-    cells_[cell].x_bits = ~bits_of(p.x);
-    cells_[cell].y_bits = ~bits_of(p.y);
+Point DartStage::exact(std::size_t cell, Cell word) const {
+    const Point& p = points_[static_cast<std::uint32_t>(word) - 1];
+    if (!torus_.on()) return p;
+    // A copy sits in the padding, shifted toward the side it pads.
+    const std::size_t col = cell % stride_, row = cell / stride_;
+    const int i = col < kPad ? -1 : col >= cols_ + kPad ? 1 : 0;
+    const int j = row < kPad ? -1 : row >= rows_ + kPad ? 1 : 0;
+    return torus_.shifted(p, i, j);
 }
 
-void DartStage::write_copies(std::size_t cx, std::size_t cy, const Point& p) {
+void DartStage::write_copies(std::size_t cx, std::size_t cy, const Point& p, std::uint32_t index) {
     const long cols = static_cast<long>(cols_), rows = static_cast<long>(rows_);
     for (int i = -1; i <= 1; ++i) {
         for (int j = -1; j <= 1; ++j) {
             if (i == 0 && j == 0) continue;
             const long x = static_cast<long>(cx) + i * cols, y = static_cast<long>(cy) + j * rows;
             if (x < -kPad || x >= cols + kPad || y < -kPad || y >= rows + kPad) continue;
-            const std::size_t cell = static_cast<std::size_t>(y + kPad) * stride_ + static_cast<std::size_t>(x + kPad);
-            write(cell, torus_.shifted(p, i, j));
+            write(x, y, torus_.shifted(p, i, j), index);
         }
     }
 }
@@ -126,29 +134,54 @@ void DartStage::draw_batch(Rng& rng) {
             d.p.x = box_.x0 + rng.next_double() * w;
             d.p.y = box_.y0 + rng.next_double() * h;
         }
-        d.cell = cell_of(d.p);
-        // The 5 x 5 block: five rows of 80 bytes, two cache lines each at most.
-        const Cell* row = cells_.get() + d.cell - kPad * stride_ - kPad;
-        for (int i = 0; i < 2 * kPad + 1; ++i, row += stride_) {
-            __builtin_prefetch(row);
-            __builtin_prefetch(row + 2 * kPad);
+        aim(d);
+        // The block: 3 or 4 rows of at most 32 bytes, a line or two each.
+        const Cell* row = cells_.get() + d.cell + d.y_lo * static_cast<std::ptrdiff_t>(stride_);
+        for (int i = d.y_lo; i <= d.y_hi; ++i, row += stride_) {
+            __builtin_prefetch(row + d.x_lo);
+            __builtin_prefetch(row + d.x_hi);
         }
     }
     batch_head_ = 0;
     batch_size_ = kMaxBatch;
 }
 
-bool DartStage::is_free(const Point& p, std::size_t cell) const {
+void DartStage::aim(Dart& d) const {
+    // As column_row(), and the columns and rows within R of the dart.
+    const double fx = (d.p.x - box_.x0) * inv_side_x_, fy = (d.p.y - box_.y0) * inv_side_y_;
+    const CellXY c = column_row(d.p);
+    d.col = static_cast<std::int64_t>(c.x);
+    d.row = static_cast<std::int64_t>(c.y);
+    d.cell = (c.y + kPad) * stride_ + c.x + kPad;
+    const auto offset = [](double f, std::int64_t own) {
+        const double k = std::floor(f) - static_cast<double>(own);
+        return k < -kPad ? -kPad : k > kPad ? kPad : static_cast<int>(k);
+    };
+    d.x_lo = offset(fx - reach_x_, d.col);
+    d.x_hi = offset(fx + reach_x_, d.col);
+    d.y_lo = offset(fy - reach_y_, d.row);
+    d.y_hi = offset(fy + reach_y_, d.row);
+}
+
+bool DartStage::is_free(const Dart& d) const {
     // An occupied cell is covered whole (its diagonal is under R).
-    if (cells_[cell].x_bits != 0) return false;
-    const Cell* row = cells_.get() + cell - kPad * stride_ - kPad;
-    for (int i = 0; i < 2 * kPad + 1; ++i, row += stride_) {
-        for (int j = 0; j < 2 * kPad + 1; ++j) {
-            const Point q = read(row[j]);
-            const double dx = q.x - p.x, dy = q.y - p.y;
+    if (cells_[d.cell] != 0) return false;
+    const Point& p = d.p;
+    for (int i = d.y_lo; i <= d.y_hi; ++i) {
+        const std::size_t row = d.cell + static_cast<std::size_t>(i * static_cast<std::ptrdiff_t>(stride_));
+        const double y0 = cell_y0(d.row + i);
+        for (int j = d.x_lo; j <= d.x_hi; ++j) {
+            const Cell word = cells_[row + j];
+            if (word == 0) continue;
+            const double qx = cell_x0(d.col + j) + (static_cast<double>((word >> 32) & 0xFFFF) + 0.5) * step_x_;
+            const double qy = y0 + (static_cast<double>(word >> 48) + 0.5) * step_y_;
+            const double dx = qx - p.x, dy = qy - p.y;
             const double d2 = dx * dx + dy * dy;
             if (d2 < r2_low_) return false;
-            if (d2 < r2_high_ && compare_distance(p, q, r_) < 0) return false;
+            if (d2 < r2_high_) {
+                ++exact_checks_;
+                if (compare_distance(p, exact(row + j, word), r_) < 0) return false;
+            }
         }
     }
     return true;
@@ -166,7 +199,7 @@ const Point* DartStage::next(Rng& rng) {
         if (batch_head_ == batch_size_) draw_batch(rng);
         const Dart& d = batch_[batch_head_++];
         ++window_darts_;
-        const bool hit = box_.contains(d.p) && is_free(d.p, d.cell);
+        const bool hit = box_.contains(d.p) && is_free(d);
         if (hit) ++window_hits_;
         if (window_darts_ == window_) end_of_window();
         if (hit) {
@@ -179,11 +212,9 @@ const Point* DartStage::next(Rng& rng) {
 
 void DartStage::add_next() {
     const Dart& d = batch_[batch_head_ - 1];
-    write(d.cell, d.p);
-    if (torus_.on()) {
-        const CellXY c = column_row(d.p);
-        write_copies(c.x, c.y, d.p);
-    }
+    const auto index = static_cast<std::uint32_t>(points_.size());
+    write(d.col, d.row, d.p, index);
+    if (torus_.on()) write_copies(static_cast<std::size_t>(d.col), static_cast<std::size_t>(d.row), d.p, index);
     points_.push_back(d.p);
     has_pending_ = false;
 }

@@ -14,10 +14,15 @@
 //
 // The grid: cells of side s = 0.99 R / sqrt 2, so a cell's diagonal is under
 // R and no two points can share one; a point closer than R to a dart lies at
-// most two cells away, so one dart reads a 5 x 5 block. A cell stores its
-// point's coordinates with every bit inverted: zeroed memory then reads as
-// NaN, which no comparison matches, so an empty cell needs no test and the
-// grid is allocated zeroed, its pages touched only where points land.
+// most two cells away, and only in the 3 or 4 columns and rows that the
+// dart's own disk reaches, so one dart reads at most a 4 x 4 block.
+// A cell is 8 bytes: its point's index (plus one: zeroed memory is an empty
+// grid, its pages touched only where points land) and the point's offset in
+// the cell rounded to 16 bits a side. Distances from the rounded offsets
+// decide all but the pairs within 2^-12 of R (rounding moves a point by under
+// 2^-17 of a cell, under 10^-5 R); those read the exact point and go to the
+// exact predicate. Half the bytes of whole coordinates: half the lines a
+// dart misses, half the pages the kernel zeroes.
 //
 // Memory-level parallelism: darts are drawn in batches and their blocks are
 // prefetched before any is tested, so the cache misses of a batch overlap.
@@ -77,6 +82,9 @@ public:
     VerifyReport verify() const override;
 
     const std::vector<Point>& points() const { return points_; }
+    // Distances the rounded offsets left undecided, sent to the exact
+    // predicate (for tests: the path must be taken).
+    std::size_t exact_checks() const { return exact_checks_; }
     // The points' indices in the order the hand-over inserts them (see the
     // .cpp); written into the reserved scratch: never allocates. Ends the
     // stage and releases its grid.
@@ -91,20 +99,26 @@ private:
     // Cells of side kCellShrink * R / sqrt 2: a diagonal under R even after
     // rounding, so a cell never holds two points.
     static constexpr double kCellShrink = 0.99;
-    // The float filter decides |p - q|^2 against R^2 (1 -+ kFilterSlack): far
-    // wider than the rounding of either (a few units of 2^-53), so only
+    // The filter decides |p - q|^2 against R^2 (1 -+ kFilterSlack), q read
+    // from its cell's rounded offsets: 16 times wider than that rounding can
+    // move a distance (under 2^-17 of a cell a side, a cell under 0.71 R: a
+    // distance by under 7.6e-6 R, a squared one by under 1.6e-5 R^2), so only
     // distances within the slack go to the exact predicate.
-    static constexpr double kFilterSlack = 0x1.0p-40;
+    static constexpr double kFilterSlack = 0x1.0p-12;
+    static constexpr double kOffsetSteps = 65536.0;  // 16 bits a side
     static constexpr int kPad = 2;  // empty cells around the grid: no bounds tests
 
     struct Dart {
         Point p;
         std::size_t cell;
+        std::int64_t col, row;  // its cell's column and row, without the padding
+        // The cells the dart's disk reaches, relative to its own: columns
+        // x_lo..x_hi and rows y_lo..y_hi, each within -kPad..kPad.
+        int x_lo, x_hi, y_lo, y_hi;
     };
-    struct Cell {
-        std::uint64_t x_bits;  // ~bits of x; 0 (NaN when read) if empty
-        std::uint64_t y_bits;
-    };
+    // Bits 0-31: point index + 1 (0: empty); 32-47 and 48-63: the offset in
+    // the cell along x and y, in steps of side / kOffsetSteps.
+    using Cell = std::uint64_t;
     struct Free {
         void operator()(Cell* p) const { std::free(p); }
     };
@@ -124,12 +138,20 @@ private:
     Delaunay triangulate(std::vector<std::uint32_t>& order) const;
     // The torus: the points with their copies, as the Jones stage keeps them.
     JonesStage torus_stage(std::vector<std::uint32_t>& order) const;
-    Point read(const Cell& cell) const;
-    void write(std::size_t cell, const Point& p);
+    // The lower left corner of the cell in column col, row row (the padding's
+    // columns and rows are negative or past the last): one formula, for
+    // writing and reading offsets alike.
+    double cell_x0(std::int64_t col) const { return box_.x0 + static_cast<double>(col) * side_x_; }
+    double cell_y0(std::int64_t row) const { return box_.y0 + static_cast<double>(row) * side_y_; }
+    // Point `index` (or its copy) p into the cell in column col, row row.
+    void write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index);
+    // The exact point of a nonempty cell (its copy, in the padding of a torus).
+    Point exact(std::size_t cell, Cell word) const;
     // The torus: the copies of p (in cell column cx, row cy) into the padding.
-    void write_copies(std::size_t cx, std::size_t cy, const Point& p);
+    void write_copies(std::size_t cx, std::size_t cy, const Point& p, std::uint32_t index);
+    void aim(Dart& d) const;  // fills d's cell, column, row and block from d.p
     void draw_batch(Rng& rng);
-    bool is_free(const Point& p, std::size_t cell) const;
+    bool is_free(const Dart& d) const;
     void end_of_window();
 
     Box box_;
@@ -137,6 +159,8 @@ private:
     double r2_low_, r2_high_;  // R^2 bracketing the rounding of a squared distance
     double side_x_, side_y_;   // s, or on the torus the periods divided evenly
     double inv_side_x_, inv_side_y_;
+    double step_x_, step_y_;    // an offset step: side / kOffsetSteps
+    double reach_x_, reach_y_;  // R in cells, with a little slack
     Torus torus_;
     std::size_t cols_ = 0, rows_ = 0;  // real cells; the padded row has cols_ + 2 kPad
     std::size_t stride_ = 0;
@@ -153,6 +177,7 @@ private:
     std::size_t window_darts_ = 0;   // thrown in the current window
     std::size_t window_hits_ = 0;    // of which kept
     bool over_ = false;
+    mutable std::size_t exact_checks_ = 0;
     bool has_pending_ = false;  // batch_[batch_head_ - 1] is the dart next() returned
 };
 

@@ -1,6 +1,7 @@
-// test_dart_stage.cpp - the dart stage on its own: its points are valid, and
-// the hand-over order is a permutation that follows the Hilbert curve, also
-// on grids wider than 2^16 cells (where 32-bit curve keys overflowed).
+// test_dart_stage.cpp - the dart stage on its own: its points are valid (every
+// pair checked exactly, on the plane and the torus), and the hand-over order
+// is a permutation that follows the Hilbert curve, also on grids wider than
+// 2^16 cells (where 32-bit curve keys overflowed).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -8,7 +9,62 @@
 
 #include "dart_stage.hpp"
 #include "predicates.hpp"
+#include "spatial_hash.hpp"
 #include "suites.hpp"
+
+namespace {
+
+// Fills a dart stage; checks exactly that every pair of its points, copies
+// included on the torus, is at least R apart. Returns the exact checks the
+// stage made; counts the pairs within 1.01 R into *near_pairs.
+std::size_t fill_and_check(const pds::Box& box, const pds::Torus& t, double r, std::uint64_t seed,
+                           std::size_t* near_pairs) {
+    pds::DartStage stage(box, r, t);
+    pds::Rng rng(seed);
+    stage.reserve(60000);
+    while (stage.next(rng) != nullptr) stage.add_next();
+    const std::vector<pds::Point>& pts = stage.points();
+    ck_assert_uint_gt(pts.size(), 100);
+    const pds::SpatialHash grid = t.on() ? pds::SpatialHash(pts, 0, t, r) : pds::SpatialHash(pts, 0, box, r);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        ck_assert(box.contains(pts[i]));
+        grid.for_each_near(pts[i], [&](std::uint32_t j, int sx, int sy) {
+            if (j == i && sx == 0 && sy == 0) return;
+            const pds::Point q = t.shifted(pts[j], sx, sy);
+            ck_assert_msg(pds::compare_distance(pts[i], q, r) >= 0, "seed %llu: points %zu and %u closer than R",
+                          static_cast<unsigned long long>(seed), i, static_cast<unsigned>(j));
+            if (pds::compare_distance(pts[i], q, 1.01 * r) < 0) ++*near_pairs;
+        });
+    }
+    return stage.exact_checks();
+}
+
+}  // namespace
+
+START_TEST(dart_points_keep_their_distance) {
+    // The grid keeps each point's offset in its cell to 16 bits, and darts
+    // within 2^-12 of R of a point go to the exact predicate (reading the
+    // exact point, or on the torus its copy). Every pair is checked exactly
+    // and the exact path must have been taken. A filter narrower than the
+    // rounding, a block of cells too small, or a copy read without its shift
+    // gives pairs closer than R (each measured to fail here).
+    const double r = 0.004;
+    const pds::Box box{1.0, -1.5, 2.0, -0.5};
+    std::size_t near_pairs = 0;
+    ck_assert_uint_gt(fill_and_check(box, pds::Torus{}, r, 21, &near_pairs), 20);
+    ck_assert_uint_gt(near_pairs, 100);
+    // Small tori, many seeds: a third of the cells border the padding, so
+    // many exact checks read copies.
+    const pds::Box small{1.0, -1.5, 1.2, -1.3};
+    pds::Torus t;
+    t.px = 0.2, t.py = 0.2, t.x0 = small.x0, t.y0 = small.y0;
+    std::size_t exact = 0;
+    near_pairs = 0;
+    for (std::uint64_t seed = 1; seed <= 60; ++seed) exact += fill_and_check(small, t, r, seed, &near_pairs);
+    ck_assert_uint_gt(exact, 60);
+    ck_assert_uint_gt(near_pairs, 100);
+}
+END_TEST
 
 START_TEST(handover_order_on_a_wide_grid) {
     // A strip 1 long and R high: about 142,000 cells along it, so the curve's
@@ -55,6 +111,7 @@ Suite* dart_stage_suite() {
     TCase* t = tcase_create("hand-over");
     tcase_set_timeout(t, 60);
     tcase_add_test(t, handover_order_on_a_wide_grid);
+    tcase_add_test(t, dart_points_keep_their_distance);
     suite_add_tcase(s, t);
     return s;
 }
