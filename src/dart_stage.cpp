@@ -226,16 +226,19 @@ std::uint64_t DartStage::hilbert_key(const Point& p) const {
     const CellXY c = column_row(p);
     std::uint64_t x = c.x, y = c.y;
     std::uint64_t key = 0;
+    // Without branches (they were most of the hand-over's sorting time, the
+    // quadrants being random): the rotation is a flip by masks (s - 1 - v is
+    // v ^ (s - 1) below s) and a masked swap. Only bits below s matter later.
     for (std::uint64_t s = hilbert_side_ / 2; s > 0; s /= 2) {
         const std::uint64_t rx = (x & s) != 0, ry = (y & s) != 0;
         key += s * s * ((3 * rx) ^ ry);
-        if (ry == 0) {
-            if (rx == 1) {
-                x = s - 1 - (x & (s - 1));
-                y = s - 1 - (y & (s - 1));
-            }
-            std::swap(x, y);
-        }
+        const std::uint64_t low = s - 1;
+        const std::uint64_t flip = (0 - (rx & (ry ^ 1))) & low;
+        x = (x & low) ^ flip;
+        y = (y & low) ^ flip;
+        const std::uint64_t swap = (x ^ y) & (0 - (ry ^ 1));
+        x ^= swap;
+        y ^= swap;
     }
     return key;
 }
