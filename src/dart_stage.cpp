@@ -22,6 +22,13 @@ std::uint64_t offset_steps(double offset, double step) {
     return s < 65535.0 ? static_cast<std::uint64_t>(s) : 65535;
 }
 
+// Cell f (a coordinate in cells) clamped into 0..n-1: rounding may put a
+// point on the far edge of the last cell.
+std::size_t clamped_cell(double f, std::size_t n) {
+    const std::size_t c = f > 0.0 ? static_cast<std::size_t>(f) : 0;
+    return std::min(c, n - 1);
+}
+
 std::size_t cells_along(double length, double side) {
     const double n = std::ceil(length / side);
     return n < 1.0 ? 1 : static_cast<std::size_t>(n);
@@ -81,16 +88,8 @@ void DartStage::reserve(std::size_t points) {
 }
 
 DartStage::CellXY DartStage::column_row(const Point& p) const {
-    // Clamped: rounding may put a point on the far edge of the last cell.
-    const double fx = (p.x - box_.x0) * inv_side_x_, fy = (p.y - box_.y0) * inv_side_y_;
-    const std::size_t cx = fx > 0.0 ? static_cast<std::size_t>(fx) : 0;
-    const std::size_t cy = fy > 0.0 ? static_cast<std::size_t>(fy) : 0;
-    return CellXY{std::min(cx, cols_ - 1), std::min(cy, rows_ - 1)};
-}
-
-std::size_t DartStage::cell_of(const Point& p) const {
-    const CellXY c = column_row(p);
-    return (c.y + kPad) * stride_ + c.x + kPad;
+    return CellXY{clamped_cell((p.x - box_.x0) * inv_side_x_, cols_),
+                  clamped_cell((p.y - box_.y0) * inv_side_y_, rows_)};
 }
 
 void DartStage::write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index) {
@@ -110,12 +109,12 @@ Point DartStage::exact(std::size_t cell, Cell word) const {
     return torus_.shifted(p, i, j);
 }
 
-void DartStage::write_copies(std::size_t cx, std::size_t cy, const Point& p, std::uint32_t index) {
-    const long cols = static_cast<long>(cols_), rows = static_cast<long>(rows_);
+void DartStage::write_copies(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index) {
+    const auto cols = static_cast<std::int64_t>(cols_), rows = static_cast<std::int64_t>(rows_);
     for (int i = -1; i <= 1; ++i) {
         for (int j = -1; j <= 1; ++j) {
             if (i == 0 && j == 0) continue;
-            const long x = static_cast<long>(cx) + i * cols, y = static_cast<long>(cy) + j * rows;
+            const std::int64_t x = col + i * cols, y = row + j * rows;
             if (x < -kPad || x >= cols + kPad || y < -kPad || y >= rows + kPad) continue;
             write(x, y, torus_.shifted(p, i, j), index);
         }
@@ -147,12 +146,12 @@ void DartStage::draw_batch(Rng& rng) {
 }
 
 void DartStage::aim(Dart& d) const {
-    // As column_row(), and the columns and rows within R of the dart.
+    // Its cell as column_row() finds it, and the columns and rows within R.
     const double fx = (d.p.x - box_.x0) * inv_side_x_, fy = (d.p.y - box_.y0) * inv_side_y_;
-    const CellXY c = column_row(d.p);
-    d.col = static_cast<std::int64_t>(c.x);
-    d.row = static_cast<std::int64_t>(c.y);
-    d.cell = (c.y + kPad) * stride_ + c.x + kPad;
+    const std::size_t cx = clamped_cell(fx, cols_), cy = clamped_cell(fy, rows_);
+    d.col = static_cast<std::int64_t>(cx);
+    d.row = static_cast<std::int64_t>(cy);
+    d.cell = (cy + kPad) * stride_ + cx + kPad;
     const auto offset = [](double f, std::int64_t own) {
         const double k = std::floor(f) - static_cast<double>(own);
         return k < -kPad ? -kPad : k > kPad ? kPad : static_cast<int>(k);
@@ -214,7 +213,7 @@ void DartStage::add_next() {
     const Dart& d = batch_[batch_head_ - 1];
     const auto index = static_cast<std::uint32_t>(points_.size());
     write(d.col, d.row, d.p, index);
-    if (torus_.on()) write_copies(static_cast<std::size_t>(d.col), static_cast<std::size_t>(d.row), d.p, index);
+    if (torus_.on()) write_copies(d.col, d.row, d.p, index);
     points_.push_back(d.p);
     has_pending_ = false;
 }

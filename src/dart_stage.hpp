@@ -127,7 +127,6 @@ private:
         std::size_t x, y;  // column and row, from 0, without the padding
     };
     CellXY column_row(const Point& p) const;
-    std::size_t cell_of(const Point& p) const;  // index into cells_
     std::uint64_t hilbert_key(const Point& p) const;
     // Writes the insertion order into order[0, n); the other three arrays
     // are scratch of n entries each.
@@ -147,8 +146,8 @@ private:
     void write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index);
     // The exact point of a nonempty cell (its copy, in the padding of a torus).
     Point exact(std::size_t cell, Cell word) const;
-    // The torus: the copies of p (in cell column cx, row cy) into the padding.
-    void write_copies(std::size_t cx, std::size_t cy, const Point& p, std::uint32_t index);
+    // The torus: the copies of p (in cell column col, row row) into the padding.
+    void write_copies(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index);
     void aim(Dart& d) const;  // fills d's cell, column, row and block from d.p
     void draw_batch(Rng& rng);
     bool is_free(const Dart& d) const;

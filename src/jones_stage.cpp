@@ -63,26 +63,7 @@ void JonesStage::adopt(const std::vector<Point>& points, const std::uint32_t* or
     const std::size_t n = points.size();
     order_.resize(n);
     if (copies_.on()) {
-        // The points along the curve, then their copies in the same order
-        // (so each offset's walks stay short); then the margin is settled.
-        // Room first, so a failure changes nothing; the margin is settled
-        // by the first next() (settle()), which may allocate.
-        std::size_t copies = 0;
-        for (std::size_t i = 0; i < n; ++i)
-            copies_.for_each_copy(points[order[i]], copies_.margin(), -1.0,
-                                  [&](const Point&, int, int) { ++copies; });
-        make_room_for_copies(n + copies);
-        VertexIndex previous = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            previous = insert_vertex(points[order[i]], previous);
-            order_.set(order[i], previous);
-        }
-        for (std::size_t i = 0; i < n; ++i)
-            copies_.for_each_copy(points[order[i]], copies_.margin(), -1.0, [&](const Point& c, int a, int b) {
-                VertexIndex& hint = copy_hint_[copies_.offset_slot(a, b)];
-                hint = insert_vertex(c, hint, order_.vertex(order[i]));
-            });
-        widen_pending_ = true;
+        adopt_on_torus(points, order);
         return;
     }
     dt_.insert_in_order(points, order, n, [&](std::uint32_t k, VertexIndex v) { order_.set(k, v); });

@@ -165,6 +165,8 @@ private:
     bool site_in_own_cell(VertexIndex v) const;
     // A variable radius: p in v's power cell and outside its disk (exact).
     bool in_free_power_cell(const Point& p, VertexIndex v) const;
+    // The torus: the hand-over (adopt) with the points' copies.
+    void adopt_on_torus(const std::vector<Point>& points, const std::uint32_t* order);
     // The torus: p (drawn in near's cell) wrapped, inserted with its copies.
     void insert_point_on_torus(const Point& p, VertexIndex near, double value);
     // A variable radius: the mesh built anew from the points (refine).

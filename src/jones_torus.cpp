@@ -212,6 +212,29 @@ bool JonesStage::still_free_on_torus(const Point& p) const {
     return true;
 }
 
+void JonesStage::adopt_on_torus(const std::vector<Point>& points, const std::uint32_t* order) {
+    // The points along the curve, then their copies in the same order (so
+    // each offset's walks stay short); then the margin is settled. Room
+    // first, so a failure changes nothing; the margin is settled by the first
+    // next() (settle()), which may allocate.
+    const std::size_t n = points.size();
+    std::size_t copies = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        copies_.for_each_copy(points[order[i]], copies_.margin(), -1.0, [&](const Point&, int, int) { ++copies; });
+    make_room_for_copies(n + copies);
+    VertexIndex previous = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        previous = insert_vertex(points[order[i]], previous);
+        order_.set(order[i], previous);
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        copies_.for_each_copy(points[order[i]], copies_.margin(), -1.0, [&](const Point& c, int a, int b) {
+            VertexIndex& hint = copy_hint_[copies_.offset_slot(a, b)];
+            hint = insert_vertex(c, hint, order_.vertex(order[i]));
+        });
+    widen_pending_ = true;
+}
+
 void JonesStage::insert_point_on_torus(const Point& p, VertexIndex near, double value) {
     make_room_for_copies(copies_.max_copies());  // may throw; nothing changed yet
     const VertexIndex from = static_cast<VertexIndex>(dt_.vertex_count());

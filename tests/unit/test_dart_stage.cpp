@@ -14,15 +14,20 @@
 
 namespace {
 
+// Runs the stage to its end (room for `room` points), seeded with `seed`.
+void fill(pds::DartStage& stage, std::uint64_t seed, std::size_t room) {
+    pds::Rng rng(seed);
+    stage.reserve(room);
+    while (stage.next(rng) != nullptr) stage.add_next();
+}
+
 // Fills a dart stage; checks exactly that every pair of its points, copies
 // included on the torus, is at least R apart. Returns the exact checks the
 // stage made; counts the pairs within 1.01 R into *near_pairs.
 std::size_t fill_and_check(const pds::Box& box, const pds::Torus& t, double r, std::uint64_t seed,
                            std::size_t* near_pairs) {
     pds::DartStage stage(box, r, t);
-    pds::Rng rng(seed);
-    stage.reserve(60000);
-    while (stage.next(rng) != nullptr) stage.add_next();
+    fill(stage, seed, 60000);
     const std::vector<pds::Point>& pts = stage.points();
     ck_assert_uint_gt(pts.size(), 100);
     const pds::SpatialHash grid = t.on() ? pds::SpatialHash(pts, 0, t, r) : pds::SpatialHash(pts, 0, box, r);
@@ -74,9 +79,7 @@ START_TEST(handover_order_on_a_wide_grid) {
     const double r = 1e-5;
     const pds::Box box{0, 0, 1, r};
     pds::DartStage stage(box, r);
-    pds::Rng rng(5);
-    stage.reserve(200000);
-    while (stage.next(rng) != nullptr) stage.add_next();
+    fill(stage, 5, 200000);
     const std::vector<pds::Point>& pts = stage.points();
     const std::size_t n = pts.size();
     ck_assert_uint_gt(n, 10000);
@@ -116,9 +119,7 @@ START_TEST(handover_order_follows_the_curve_on_a_square) {
     const double r = 0.004;
     const pds::Box box{0, 0, 1, 1};
     pds::DartStage stage(box, r);
-    pds::Rng rng(5);
-    stage.reserve(100000);
-    while (stage.next(rng) != nullptr) stage.add_next();
+    fill(stage, 5, 100000);
     const std::vector<pds::Point>& pts = stage.points();
     const std::size_t n = pts.size();
     const std::uint32_t* order = stage.handover_order();
