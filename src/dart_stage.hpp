@@ -42,16 +42,18 @@
 #include <vector>
 
 #include "batch.hpp"
+#include "curve_order.hpp"
+#include "dart_queue.hpp"
 #include "delaunay.hpp"
 #include "jones_stage.hpp"
+#include "opening_stage.hpp"
 #include "point.hpp"
 #include "rng.hpp"
-#include "stage.hpp"
 #include "torus.hpp"
 
 namespace pds {
 
-class DartStage final : public Stage {
+class DartStage final : public OpeningStage {
 public:
     // Allocates the grid (zeroed: address space until points land); throws
     // std::bad_alloc and changes nothing else.
@@ -62,17 +64,17 @@ public:
 
     // Room for `points` points in all, and the hand-over's scratch; strong
     // guarantee (std::bad_alloc).
-    void reserve(std::size_t points);
+    void reserve(std::size_t points) override;
     // Every vector reserve() grows: a reserve that failed half-way must not
     // pass for room, or the hand-over would allocate.
-    bool has_room_for(std::size_t points) const {
-        return points_.capacity() >= points && order_.capacity() >= points &&
-               tmp_order_.capacity() >= points && key_.capacity() >= points &&
-               tmp_key_.capacity() >= points;
+    bool has_room_for(std::size_t points) const override {
+        return points_.capacity() >= points && curve_.has_room_for(points);
     }
+    void hand_over_to(JonesStage& jones) override { jones.adopt(points_, handover_order()); }
 
     std::size_t count() const override { return points_.size(); }
     const Point& point(PointIndex k) const override { return points_[k]; }
+    double value(PointIndex) const override { return 0.0; }
     // Throws darts until one is at least R from every point and returns it.
     // Returns nullptr once the stage is over (the acceptance rate over a
     // window of darts fell below kMinAcceptance), and from then on.
@@ -127,11 +129,8 @@ private:
         std::size_t x, y;  // column and row, from 0, without the padding
     };
     CellXY column_row(const Point& p) const;
-    std::uint64_t hilbert_key(const Point& p) const;
-    // Writes the insertion order into order[0, n); the other three arrays
-    // are scratch of n entries each.
-    void insertion_order(std::uint32_t* order, std::uint64_t* key, std::uint32_t* tmp_order,
-                         std::uint64_t* tmp_key) const;
+    // The hand-over's order of the points, in fresh scratch (for queries).
+    std::vector<std::uint32_t> fresh_order() const;
     // A triangulation of the points, for queries; vertex v holds point
     // order[v - kGhosts].
     Delaunay triangulate(std::vector<std::uint32_t>& order) const;
@@ -149,9 +148,8 @@ private:
     // The torus: the copies of p (in cell column col, row row) into the padding.
     void write_copies(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index);
     void aim(Dart& d) const;  // fills d's cell, column, row and block from d.p
-    void draw_batch(Rng& rng);
+    void draw_batch(Dart* batch, std::size_t n, Rng& rng);
     bool is_free(const Dart& d) const;
-    void end_of_window();
 
     Box box_;
     double r_;
@@ -163,21 +161,12 @@ private:
     Torus torus_;
     std::size_t cols_ = 0, rows_ = 0;  // real cells; the padded row has cols_ + 2 kPad
     std::size_t stride_ = 0;
-    std::uint64_t hilbert_side_ = 1;   // a power of two at least cols_ and rows_
     std::unique_ptr<Cell[], Free> cells_;
     std::vector<Point> points_;
-    // The hand-over's scratch, reserved with the points.
-    std::vector<std::uint32_t> order_, tmp_order_;
-    std::vector<std::uint64_t> key_, tmp_key_;
+    CurveOrder curve_;  // the hand-over's order over the grid's cells, its scratch reserved with the points
 
-    Dart batch_[kMaxBatch];
-    std::size_t batch_head_ = 0, batch_size_ = 0;
-    std::size_t window_ = 0;         // darts per window
-    std::size_t window_darts_ = 0;   // thrown in the current window
-    std::size_t window_hits_ = 0;    // of which kept
-    bool over_ = false;
+    DartQueue<Dart> queue_;
     mutable std::size_t exact_checks_ = 0;
-    bool has_pending_ = false;  // batch_[batch_head_ - 1] is the dart next() returned
 };
 
 }  // namespace pds

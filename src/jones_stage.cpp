@@ -57,8 +57,10 @@ bool JonesStage::has_room_for(std::size_t points) const {
                               original_.capacity() >= vertices + Delaunay::kGhosts));
 }
 
-void JonesStage::adopt(const std::vector<Point>& points, const std::uint32_t* order) {
-    if (radii_) throw std::logic_error("hand-over without radii");
+void JonesStage::adopt(const std::vector<Point>& points, const std::uint32_t* order,
+                       const std::vector<double>* values) {
+    if (radii_.has_value() != (values != nullptr) || (values && copies_.on()))
+        throw std::logic_error("hand-over without the field's values");
     if (count() != 0 || (!copies_.on() && !has_room_for(points.size()))) throw std::logic_error("hand-over without room");
     const std::size_t n = points.size();
     order_.resize(n);
@@ -66,7 +68,10 @@ void JonesStage::adopt(const std::vector<Point>& points, const std::uint32_t* or
         adopt_on_torus(points, order);
         return;
     }
-    dt_.insert_in_order(points, order, n, [&](std::uint32_t k, VertexIndex v) { order_.set(k, v); });
+    if (values) values_.assign(values->begin(), values->end());  // within the reserved room
+    dt_.insert_in_order(
+        points, order, n, [&](std::uint32_t k) { return radii_->radius_of(values_[k]); },
+        [&](std::uint32_t k, VertexIndex v) { order_.set(k, v); });
     tree_.resize(n);
     measure_all_cells();
 }

@@ -90,8 +90,10 @@ public:
 
     // The hand-over: inserts the dart stage's points (point k of `points`
     // is the k-th added) in the order given, measures every cell and builds
-    // the tree. Requires count() == 0 and room; never allocates.
-    void adopt(const std::vector<Point>& points, const std::uint32_t* order);
+    // the tree. A varying radius: values[k] is point k's field value.
+    // Requires count() == 0 and room; never allocates.
+    void adopt(const std::vector<Point>& points, const std::uint32_t* order,
+               const std::vector<double>* values = nullptr);
     // The torus: finishes a widening of the margin that memory interrupted,
     // or that the hand-over left to do (may throw std::bad_alloc).
     void settle();
@@ -100,8 +102,7 @@ public:
     // radius, radii gives the new scale and the mesh is rebuilt (allocates;
     // on std::bad_alloc nothing has changed).
     void set_radius(double r, const PointRadii* radii = nullptr);
-    // Point k's field value (a variable radius only).
-    double value(PointIndex k) const { return values_[k]; }
+    double value(PointIndex k) const override { return radii_ ? values_[k] : 0.0; }
 
     std::size_t count() const override {
         return copies_.on() ? order_.handed_over() : dt_.vertex_count() - Delaunay::kGhosts;

@@ -11,11 +11,13 @@ Sampler::Sampler(double radius, std::uint64_t seed)
     : frame_(Box{0.0, 0.0, 1.0, 1.0}, radius), seed_(seed), rng_(seed) {}
 
 bool Sampler::use_darts() const {
-    // A varying field runs the Jones loop alone: a dart grid must be sized by
-    // the smallest radius and reach the largest, and for a 1:4 field at 10^6
-    // points that took twice the time of the loop alone, with three times
-    // the memory (measured while building 1.3).
-    return !skip_darts_ && !varying_field() && smallest_frame().count_bound() <= static_cast<double>(Frame::max_points());
+    if (skip_darts_ || smallest_frame().count_bound() > static_cast<double>(Frame::max_points())) return false;
+    if (!varying_field()) return true;
+    // A varying field: a grid per layer of radii (field_dart_stage.hpp), in
+    // the plane, while the layers stay few. On the torus the loop runs alone:
+    // the copies of a point would go into every layer's padding, and the
+    // torus's mesh widens its margin as the points come (jones_stage.hpp).
+    return !frame_.torus().on() && field_->rmax() <= FieldDartStage::kMaxRatio * field_->rmin();
 }
 
 double Sampler::expected_count() const {
@@ -112,8 +114,9 @@ void Sampler::prepare(std::size_t points) {
         // Built aside, kept only when both exist: std::bad_alloc changes nothing.
         const std::optional<PointRadii> radii = point_radii(frame_);
         auto jones = std::make_unique<JonesStage>(frame_.box(), frame_.r(), frame_.torus(), radii ? &*radii : nullptr);
-        std::unique_ptr<DartStage> darts;
-        if (use_darts()) darts = std::make_unique<DartStage>(frame_.box(), frame_.r(), frame_.torus());
+        std::unique_ptr<OpeningStage> darts;
+        if (use_darts() && radii) darts = std::make_unique<FieldDartStage>(frame_.box(), *radii);
+        else if (use_darts()) darts = std::make_unique<DartStage>(frame_.box(), frame_.r(), frame_.torus());
         jones_ = std::move(jones);
         darts_ = std::move(darts);
     }
@@ -163,7 +166,7 @@ void Sampler::lower_radius_for_count() {
 void Sampler::hand_over() {
     // Room for the points and the order was reserved with the dart stage's:
     // nothing here allocates.
-    jones_->adopt(darts_->points(), darts_->handover_order());
+    darts_->hand_over_to(*jones_);
     darts_.reset();
 }
 
@@ -201,7 +204,7 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
         progress_.fn == nullptr ? 1.0 : count_target_ != 0 ? static_cast<double>(count_target_) : expected_count();
     ProgressMeter meter(progress_, expected, count_target_ != 0);
     while (max_new == 0 || *added < max_new) {
-        if (grows && !jones_->has_room_for(count() + 1)) prepare(count() + 1);
+        if (grows) prepare(count() + 1);  // nothing to do while there is room
         if (!add_one()) {
             // The final report; a stop asked for here changes nothing.
             meter.finish(count());
@@ -262,7 +265,7 @@ std::size_t Sampler::copy_radii(std::size_t first, std::size_t n, double* r) con
     n = std::min(n, have - first);
     const std::optional<PointRadii> radii = point_radii(frame_);
     for (std::size_t i = 0; i < n; ++i)
-        r[i] = radii ? radii->user_radius_of(jones_->value(first + i)) : frame_.user_radius();
+        r[i] = radii ? radii->user_radius_of(stage().value(first + i)) : frame_.user_radius();
     return n;
 }
 

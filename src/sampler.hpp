@@ -35,6 +35,7 @@
 #include <optional>
 
 #include "dart_stage.hpp"
+#include "field_dart_stage.hpp"
 #include "frame.hpp"
 #include "jones_stage.hpp"
 #include "point.hpp"
@@ -135,7 +136,7 @@ private:
     ProgressHook progress_;
     std::optional<RadiusField> field_;
     mutable std::optional<double> mean_inverse_square_;  // of the field over the domain, once asked
-    std::unique_ptr<DartStage> darts_;   // while the dart stage runs
+    std::unique_ptr<OpeningStage> darts_;  // while a dart stage runs
     std::unique_ptr<JonesStage> jones_;  // from the first point on
 };
 

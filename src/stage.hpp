@@ -31,6 +31,8 @@ public:
     virtual std::size_t count() const = 0;
     // Point k in the order added.
     virtual const Point& point(PointIndex k) const = 0;
+    // Point k's field value (user units; a varying radius only, else 0).
+    virtual double value(PointIndex k) const = 0;
     // The next point, or nullptr when this stage has none: the dart stage
     // then hands over, the Jones stage has found the pattern maximal.
     virtual const Point* next(Rng& rng) = 0;

@@ -11,7 +11,8 @@
  * then gives other points (still with the same law).
  *
  * History: re-pinned for 1.1.0, whose dart stage (src/dart_grid.hpp) draws
- * the opening points from the generator in a different way.
+ * the opening points from the generator in a different way. Varying fields
+ * pinned from 1.3.2 on, whose field dart stage changed their points.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -90,12 +91,50 @@ START_TEST(pinned_outputs)
 }
 END_TEST
 
+/* A varying field in a rectangle: a 4 x 3 radius map (1:3, so it opens with
+ * the field's dart stage), whole and in calls of 37 points. */
+struct golden_field {
+    size_t chunk;
+    size_t count;
+    uint64_t hash;
+};
+
+static const struct golden_field field_cases[] = {
+    {0, 11486, 0xd923e04fabc74ff9ull},
+    {37, 11486, 0xd923e04fabc74ff9ull}, /* split: same bytes */
+};
+
+START_TEST(pinned_field_outputs)
+{
+    static const double map[12] = {0.01, 0.012, 0.015, 0.02, 0.013, 0.017, 0.022, 0.027, 0.016, 0.021, 0.026, 0.03};
+    const struct golden_field *g = &field_cases[_i];
+    pds_sampler *s = NULL;
+    double *xy;
+    size_t n;
+
+    ck_assert_int_eq(pds_create(&s, 0.03, 5), 0);
+    ck_assert_int_eq(pds_set_domain(s, -1.0, 3.0, 2.0, 4.5), 0);
+    ck_assert_int_eq(pds_set_radius_map(s, 4, 3, map), 0);
+    run_all(s, g->chunk);
+    n = pds_count(s);
+    xy = malloc(2 * n * sizeof *xy);
+    ck_assert_ptr_nonnull(xy);
+    ck_assert_uint_eq(pds_points(s, 0, n, xy), n);
+    ck_assert_msg(n == g->count && fingerprint(xy, 2 * n) == g->hash,
+                  "field case %d: %zu points, fingerprint 0x%016llx; pinned %zu, 0x%016llx", _i, n,
+                  (unsigned long long)fingerprint(xy, 2 * n), g->count, (unsigned long long)g->hash);
+    free(xy);
+    pds_destroy(s);
+}
+END_TEST
+
 Suite *golden_suite(void)
 {
     Suite *s = suite_create("golden");
     TCase *tc = tcase_create("pinned outputs");
     tcase_set_timeout(tc, 120);
     tcase_add_loop_test(tc, pinned_outputs, 0, (int)(sizeof cases / sizeof cases[0]));
+    tcase_add_loop_test(tc, pinned_field_outputs, 0, (int)(sizeof field_cases / sizeof field_cases[0]));
     suite_add_tcase(s, tc);
     return s;
 }

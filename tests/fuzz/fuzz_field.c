@@ -68,6 +68,11 @@ int fz_varying_field(const fz_state *st)
     return st->field != FZ_FIELD_NONE && st->f_rmin != st->f_rmax;
 }
 
+int fz_field_has_darts(const fz_state *st)
+{
+    return fz_varying_field(st) && !st->periodic && st->f_rmax <= 8.0 * st->f_rmin;
+}
+
 /* The field's smallest value scaled to the radius in force R (radius_field.hpp:
  * value / rmax * R, the value itself before a refine). */
 static double scaled(const fz_state *st, double value, double R)

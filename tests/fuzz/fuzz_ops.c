@@ -20,9 +20,12 @@
  *     only catch a library that allocates by area where it should not.
  * With a radius field (1.3) n is the bound at the field's smallest radius,
  * which is what the library reserves by, so a field with a tiny rmin is held
- * to bounded calls as a tiny radius is. A varying field has no dart stage (it
- * runs the Jones loop from the first point), so it gets bounded calls between
- * FZ_GRID_MAX and FZ_NO_GRID too: there nothing may be allocated by area.
+ * to bounded calls as a tiny radius is. Since 1.3.2 a varying field in the
+ * plane with rmax <= 8 rmin opens with a dart stage whose layered grids are
+ * sized by rmin (fz_field_has_darts), so it is held out of that band as a
+ * constant radius is; other varying fields (on a torus, or wider) run the
+ * Jones loop from the first point and get bounded calls between FZ_GRID_MAX
+ * and FZ_NO_GRID too: there nothing may be allocated by area.
  */
 #include <math.h>
 #include <stdio.h>
@@ -47,7 +50,8 @@ static int work_allowed(const fz_state *st)
         st->target - st->count <= st->budget)
         return WORK_TO_END;
     if (st->target == 0 && n <= FZ_TO_END_MAX && n <= (double)st->budget) return WORK_TO_END;
-    if (n <= FZ_GRID_MAX || n >= FZ_NO_GRID || fz_varying_field(st)) return WORK_BOUNDED;
+    if (n <= FZ_GRID_MAX || n >= FZ_NO_GRID || (fz_varying_field(st) && !fz_field_has_darts(st)))
+        return WORK_BOUNDED;
     return WORK_NONE;
 }
 

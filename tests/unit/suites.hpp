@@ -18,6 +18,7 @@ Suite* free_area_suite();
 Suite* power_cells_suite();
 Suite* verify_suite();
 Suite* dart_stage_suite();
+Suite* field_dart_stage_suite();
 Suite* sampler_suite();
 Suite* law_suite();
 Suite* law_torus_suite();

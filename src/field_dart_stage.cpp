@@ -1,0 +1,261 @@
+// field_dart_stage.cpp - darts on a grid per layer of radii (see
+// field_dart_stage.hpp).
+#include "field_dart_stage.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <new>
+
+#include "grid_cells.hpp"
+#include "huge_pages.hpp"
+#include "jones_stage.hpp"
+#include "predicates.hpp"
+
+namespace pds {
+
+FieldDartStage::FieldDartStage(const Box& domain, const PointRadii& radii)
+    : box_(domain), radii_(radii), curve_(domain, 1.0, 1.0, 1, 1) {
+    const double rmin = radii.rmin(), rmax = radii.rmax();
+    // Slack far above the rounding of a cell coordinate (as dart_stage.cpp).
+    constexpr double kReachSlack = 1e-6;
+    for (double low = rmin;; low *= kLayerRatio) {
+        if (layers_.size() == kMaxLayers) throw std::bad_alloc();  // the sampler keeps the ratio far below
+        Layer L;
+        L.low = low;
+        L.high = std::min(low * kLayerRatio, rmax);
+        L.side = kCellShrink * low / std::sqrt(2.0);
+        L.inv_side = 1.0 / L.side;
+        L.step = L.side / kOffsetSteps;
+        L.reach = L.high * L.inv_side + kReachSlack;
+        L.cols = cells_along(domain.width(), L.side);
+        L.rows = cells_along(domain.height(), L.side);
+        allocate_cells(L);
+        layers_.push_back(std::move(L));
+        if (low * kLayerRatio >= rmax) break;
+    }
+    tile_side_ = rmax;
+    tile_cols_ = cells_along(domain.width(), tile_side_);
+    tile_rows_ = cells_along(domain.height(), tile_side_);
+    tiles_.assign(tile_cols_ * tile_rows_, 0);
+    // The window as the one-radius stage's, counted in the coarsest layer's
+    // cells: a small fraction of the points.
+    const Layer& top = layers_.back();
+    queue_.set_rule(std::max<std::size_t>(kMinWindow, top.cols * top.rows / 16), kMinAcceptance);
+    const Layer& finest = layers_.front();
+    curve_ = CurveOrder(box_, finest.side, finest.side, finest.cols, finest.rows);
+    covered_ = CoveredCells(box_.x0, box_.y0, finest.side, finest.cols, finest.rows);
+}
+
+void FieldDartStage::allocate_cells(Layer& L) {
+    constexpr int kMaxShift = 9;  // 512 x 512 cells of 8 bytes: 2 MiB
+    constexpr std::size_t kHuge = std::size_t{1} << 21;
+    const std::size_t padded_cols = L.cols + 2 * kPad, padded_rows = L.rows + 2 * kPad;
+    L.shift = 0;
+    while (L.shift < kMaxShift && (std::size_t{1} << L.shift) < std::max(padded_cols, padded_rows)) ++L.shift;
+    const std::size_t brick = std::size_t{1} << L.shift;
+    L.bricks_x = (padded_cols + brick - 1) / brick;
+    const std::size_t bricks_y = (padded_rows + brick - 1) / brick;
+    if (L.bricks_x > static_cast<std::size_t>(-1) / kHuge / bricks_y) throw std::bad_alloc();
+    const std::size_t total = L.bricks_x * bricks_y * brick * brick;
+    L.cells = static_cast<Cell*>(zeroed_pages(total * sizeof(Cell), L.cells_memory));
+    // The index is read rarely: ordinary pages (huge ones cost 7% at 10^6).
+    L.index_memory.reset(std::calloc(total, sizeof(std::uint32_t)));
+    if (!L.index_memory) throw std::bad_alloc();
+    L.index = static_cast<std::uint32_t*>(L.index_memory.get());
+}
+
+void* FieldDartStage::zeroed_pages(std::size_t bytes, std::unique_ptr<void, Free>& memory) {
+    // Zeroed memory: address space until points land. From 4 MiB on, aligned
+    // huge pages, each holding whole bricks, so a page is touched only where
+    // points are.
+    constexpr std::size_t kHuge = std::size_t{1} << 21;
+    const bool huge = bytes >= 2 * kHuge;
+    memory.reset(std::calloc(bytes + (huge ? kHuge : 0), 1));
+    if (!memory) throw std::bad_alloc();
+    auto base = reinterpret_cast<std::uintptr_t>(memory.get());
+    if (huge) {
+        base = (base + kHuge - 1) & ~(std::uintptr_t{kHuge} - 1);
+        advise_huge_pages(reinterpret_cast<void*>(base), bytes, 2 * kHuge);
+    }
+    return reinterpret_cast<void*>(base);
+}
+
+void FieldDartStage::reserve(std::size_t points) {
+    // Each reserve either succeeds or leaves its vector as it was.
+    points_.reserve(points);
+    values_.reserve(points);
+    curve_.reserve(points);
+}
+
+std::size_t FieldDartStage::layer_of(double r) const {
+    std::size_t k = 0;
+    while (k + 1 < layers_.size() && r >= layers_[k + 1].low) ++k;
+    return k;
+}
+
+std::size_t FieldDartStage::tile_of(const Point& p) const {
+    const std::size_t x = clamped_cell((p.x - box_.x0) / tile_side_, tile_cols_);
+    const std::size_t y = clamped_cell((p.y - box_.y0) / tile_side_, tile_rows_);
+    return y * tile_cols_ + x;
+}
+
+void FieldDartStage::mark_layer_near(const Point& p, std::size_t layer) {
+    // A disk reaches at most the largest radius from its centre: into the
+    // tiles next to its own, never further.
+    const std::size_t t = tile_of(p), x = t % tile_cols_, y = t / tile_cols_;
+    for (std::size_t j = y > 0 ? y - 1 : 0; j <= y + 1 && j < tile_rows_; ++j)
+        for (std::size_t i = x > 0 ? x - 1 : 0; i <= x + 1 && i < tile_cols_; ++i)
+            tiles_[j * tile_cols_ + i] |= std::uint32_t{1} << layer;
+}
+
+FieldDartStage::Block FieldDartStage::block_of(const Layer& L, const Point& p) const {
+    const double fx = (p.x - box_.x0) * L.inv_side, fy = (p.y - box_.y0) * L.inv_side;
+    const auto col = static_cast<std::int64_t>(clamped_cell(fx, L.cols));
+    const auto row = static_cast<std::int64_t>(clamped_cell(fy, L.rows));
+    Block b;
+    b.x = static_cast<std::size_t>(col + kPad);
+    b.y = static_cast<std::size_t>(row + kPad);
+    b.x_lo = block_offset(fx - L.reach, col, kPad);
+    b.x_hi = block_offset(fx + L.reach, col, kPad);
+    b.y_lo = block_offset(fy - L.reach, row, kPad);
+    b.y_hi = block_offset(fy + L.reach, row, kPad);
+    return b;
+}
+
+bool FieldDartStage::free_in(const Layer& L, const Block& b, const Point& p) const {
+    // A taken cell is covered whole: its point's radius is over its diagonal.
+    if (L.cells[L.at(b.x, b.y)] != 0) return false;
+    const double x_origin = box_.x0 - static_cast<double>(kPad) * L.side;
+    const double y_origin = box_.y0 - static_cast<double>(kPad) * L.side;
+    for (int i = b.y_lo; i <= b.y_hi; ++i) {
+        const std::size_t y = b.y + static_cast<std::size_t>(i);
+        const double y0 = y_origin + static_cast<double>(y) * L.side;
+        for (int j = b.x_lo; j <= b.x_hi; ++j) {
+            const std::size_t x = b.x + static_cast<std::size_t>(j);
+            const std::size_t cell = L.at(x, y);
+            const Cell word = L.cells[cell];
+            if (word == 0) continue;
+            const auto bits = static_cast<std::uint32_t>(word >> 32);
+            float r;
+            std::memcpy(&r, &bits, sizeof r);
+            const double x0 = x_origin + static_cast<double>(x) * L.side;
+            const double qx = x0 + (static_cast<double>(word & 0xFFFF) + 0.5) * L.step;
+            const double qy = y0 + (static_cast<double>((word >> 16) & 0xFFFF) + 0.5) * L.step;
+            const double dx = qx - p.x, dy = qy - p.y;
+            const double d2 = dx * dx + dy * dy, r2 = static_cast<double>(r) * static_cast<double>(r);
+            if (d2 < r2 * (1.0 - kFilterSlack)) return false;
+            if (d2 < r2 * (1.0 + kFilterSlack)) {
+                // The float radius is within 2^-24 of the point's: far inside the slack.
+                ++exact_checks_;
+                const std::uint32_t k = L.index[cell];
+                if (compare_distance(p, points_[k], radii_.radius_of(values_[k])) < 0) return false;
+            }
+        }
+    }
+    return true;
+}
+
+bool FieldDartStage::is_free(const Dart& d) const {
+    if (covered_.covered(d.cover_cell)) return false;
+    // The layers near as they are now: points added since the dart was
+    // drawn may have brought new ones.
+    for (std::uint32_t m = tiles_[d.tile]; m != 0; m &= m - 1) {
+        const auto k = static_cast<std::size_t>(__builtin_ctz(m));
+        const Layer& L = layers_[k];
+        if (!free_in(L, k == d.block_layer ? d.block : block_of(L, d.p), d.p)) return false;
+    }
+    return true;
+}
+
+void FieldDartStage::draw_batch(Dart* batch, std::size_t n, Rng& rng) {
+    const Layer& finest = layers_.front();
+    const double w = static_cast<double>(finest.cols) * finest.side, h = static_cast<double>(finest.rows) * finest.side;
+    // First the darts, their tiles and bitmap words (megabytes at 10^7
+    // points: misses too); then the blocks of those still in doubt.
+    for (std::size_t at = 0; at < n; ++at) {
+        Dart& d = batch[at];
+        d.p.x = box_.x0 + rng.next_double() * w;
+        d.p.y = box_.y0 + rng.next_double() * h;
+        d.tile = tile_of(d.p);
+        d.cover_cell = covered_.cell_of(d.p);
+        __builtin_prefetch(&tiles_[d.tile]);
+        covered_.prefetch(d.cover_cell);
+    }
+    for (std::size_t at = 0; at < n; ++at) {
+        Dart& d = batch[at];
+        d.block_layer = kMaxLayers;
+        if (covered_.covered(d.cover_cell)) continue;  // no block to read
+        // Each near layer's block: 4 or 5 rows of at most 40 bytes. The first
+        // layer's is kept (most darts have one).
+        for (std::uint32_t m = tiles_[d.tile]; m != 0; m &= m - 1) {
+            const auto k = static_cast<std::size_t>(__builtin_ctz(m));
+            const Layer& L = layers_[k];
+            const Block b = block_of(L, d.p);
+            if (d.block_layer == kMaxLayers) {
+                d.block = b;
+                d.block_layer = k;
+            }
+            for (int i = b.y_lo; i <= b.y_hi; ++i) {
+                const std::size_t y = b.y + static_cast<std::size_t>(i);
+                __builtin_prefetch(L.cells + L.at(b.x + static_cast<std::size_t>(b.x_lo), y));
+                __builtin_prefetch(L.cells + L.at(b.x + static_cast<std::size_t>(b.x_hi), y));
+            }
+        }
+    }
+}
+
+const Point* FieldDartStage::next(Rng& rng) {
+    const Dart* d = queue_.next([&](const Dart& x) { return box_.contains(x.p); },
+                                [&](Dart* batch, std::size_t n) { draw_batch(batch, n, rng); },
+                                [&](const Dart& x) { return is_free(x); });
+    return d ? &d->p : nullptr;
+}
+
+void FieldDartStage::add_next() {
+    const Point p = queue_.pending().p;
+    const double value = radii_.value_at(p);  // may throw FieldError: nothing changed yet
+    const double r = radii_.radius_of(value);
+    const std::size_t k = layer_of(r);
+    const Layer& L = layers_[k];
+    const std::size_t col = clamped_cell((p.x - box_.x0) * L.inv_side, L.cols);
+    const std::size_t row = clamped_cell((p.y - box_.y0) * L.inv_side, L.rows);
+    // The cell's corner by the reading's formula (free_in), padded coordinates.
+    const double x0 = box_.x0 - static_cast<double>(kPad) * L.side + static_cast<double>(col + kPad) * L.side;
+    const double y0 = box_.y0 - static_cast<double>(kPad) * L.side + static_cast<double>(row + kPad) * L.side;
+    const std::uint64_t sx = offset_steps(p.x - x0, L.step), sy = offset_steps(p.y - y0, L.step);
+    const auto index = static_cast<std::uint32_t>(points_.size());
+    const auto r_float = static_cast<float>(r);
+    std::uint32_t r_bits;
+    std::memcpy(&r_bits, &r_float, sizeof r_bits);
+    const std::size_t cell = L.at(col + kPad, row + kPad);
+    L.cells[cell] = (std::uint64_t{r_bits} << 32) | (sy << 16) | sx;
+    L.index[cell] = index;
+    mark_layer_near(p, k);
+    covered_.cover_disk(p, r);
+    points_.push_back(p);
+    values_.push_back(value);
+    queue_.take();
+}
+
+void FieldDartStage::hand_over_to(JonesStage& jones) {
+    // The grids go before the mesh is filled, so the two never peak together.
+    layers_.clear();
+    queue_.end();
+    jones.adopt(points_, curve_.order(points_), &values_);
+}
+
+std::unique_ptr<JonesStage> FieldDartStage::jones_of_points() const {
+    CurveOrder curve = curve_;
+    curve.reserve(points_.size());
+    auto stage = std::make_unique<JonesStage>(box_, radii_.rmax(), Torus{}, &radii_);
+    stage->reserve(points_.size());
+    stage->adopt(points_, curve.order(points_), &values_);
+    return stage;
+}
+
+double FieldDartStage::free_area() const { return jones_of_points()->free_area(); }
+
+VerifyReport FieldDartStage::verify() const { return jones_of_points()->verify(); }
+
+}  // namespace pds

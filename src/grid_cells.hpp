@@ -1,0 +1,43 @@
+// grid_cells.hpp - arithmetic shared by the dart stages' background grids
+// (dart_stage.hpp, field_dart_stage.hpp).
+#ifndef PDS_GRID_CELLS_HPP
+#define PDS_GRID_CELLS_HPP
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+namespace pds {
+
+// Cells of `side` needed to cover `length`, at least one.
+inline std::size_t cells_along(double length, double side) {
+    const double n = std::ceil(length / side);
+    return n < 1.0 ? 1 : static_cast<std::size_t>(n);
+}
+
+// Cell f (a coordinate in cells) clamped into 0..n-1: rounding may put a
+// point on the far edge of the last cell.
+inline std::size_t clamped_cell(double f, std::size_t n) {
+    const std::size_t c = f > 0.0 ? static_cast<std::size_t>(f) : 0;
+    return std::min(c, n - 1);
+}
+
+// An offset in [0, side) as a step count in [0, 65536); rounding may put a
+// point a hair outside its cell, hence the clamp.
+inline std::uint64_t offset_steps(double offset, double step) {
+    const double s = std::floor(offset / step);
+    if (!(s > 0.0)) return 0;
+    return s < 65535.0 ? static_cast<std::uint64_t>(s) : 65535;
+}
+
+// The offset (in cells, from the cell of f's own column `own`) of the cell
+// holding coordinate f, clamped into -pad..pad.
+inline int block_offset(double f, std::int64_t own, int pad) {
+    const double k = std::floor(f) - static_cast<double>(own);
+    return k < -pad ? -pad : k > pad ? pad : static_cast<int>(k);
+}
+
+}  // namespace pds
+
+#endif

@@ -1,0 +1,174 @@
+// test_field_dart_stage.cpp - the dart stage of a varying radius
+// (field_dart_stage.hpp): every pair of its points keeps the field's rule,
+// checked exactly; the cells its bitmap marks lie inside their disk
+// (covered_cells.hpp); and its hand-over gives the Jones stage the same
+// points and values, which then ends maximal.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "covered_cells.hpp"
+#include "field_dart_stage.hpp"
+#include "jones_stage.hpp"
+#include "predicates.hpp"
+#include "radius_field.hpp"
+#include "rng.hpp"
+#include "spatial_hash.hpp"
+#include "suites.hpp"
+
+namespace {
+
+// 1:4 along x; and a 1:2.5 step at x = 1/2.
+double gradient(void* u, double x, double) { return *static_cast<double*>(u) * (1.0 + 3.0 * x); }
+double step(void* u, double x, double) { return *static_cast<double*>(u) * (x < 0.5 ? 1.0 : 2.5); }
+
+struct Field {
+    pds::RadiusField field;
+    pds::Frame frame;
+    pds::PointRadii radii;
+    Field(pds::RadiusField::Function fn, double* r0, double ratio)
+        : field(pds::RadiusField::function(fn, r0, *r0, ratio * *r0)),
+          frame(pds::Box{0, 0, 1, 1}, ratio * *r0),
+          radii(field, frame) {}
+};
+
+void fill(pds::FieldDartStage& stage, std::uint64_t seed) {
+    pds::Rng rng(seed);
+    stage.reserve(200000);
+    while (stage.next(rng) != nullptr) stage.add_next();
+}
+
+// Every later point outside every earlier disk, exactly (|p_j - p_i| >= r_i
+// for i < j); returns the pairs within 1.01 r_i.
+std::size_t check_rule(const pds::FieldDartStage& stage, const pds::PointRadii& radii, const pds::Box& box) {
+    std::vector<pds::Point> pts(stage.count());
+    for (std::size_t k = 0; k < pts.size(); ++k) pts[k] = stage.point(k);
+    const pds::SpatialHash grid(pts, 0, box, radii.rmax());
+    std::size_t near_pairs = 0;
+    for (std::size_t j = 0; j < pts.size(); ++j) {
+        ck_assert(box.contains(pts[j]));
+        grid.for_each_near(pts[j], [&](std::uint32_t i, int, int) {
+            if (i >= j) return;
+            const double ri = radii.radius_of(stage.value(i));
+            ck_assert_msg(pds::compare_distance(pts[j], pts[i], ri) >= 0, "point %zu inside point %u's disk", j,
+                          static_cast<unsigned>(i));
+            if (pds::compare_distance(pts[j], pts[i], 1.01 * ri) < 0) ++near_pairs;
+        });
+    }
+    return near_pairs;
+}
+
+}  // namespace
+
+START_TEST(field_dart_points_keep_the_rule) {
+    // Layers by radius, each point in the grid of its own layer, darts
+    // reading the layers marked near them now (not when they were drawn),
+    // radii kept as floats with the exact ones behind the filter: every
+    // pair is checked exactly, and the exact path must have been taken. A
+    // layer mask read when the dart was drawn gave points deep inside
+    // earlier disks, and marks from disks 2% too large went unseen until
+    // the bitmap was compared with its points' disks (both measured to
+    // fail here).
+    double r0 = test_light() ? 0.006 : 0.003;
+    for (auto fn : {gradient, step}) {
+        const Field f(fn, &r0, fn == gradient ? 4.0 : 2.5);
+        std::size_t near_pairs = 0, exact = 0;
+        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+            pds::FieldDartStage stage(f.frame.box(), f.radii);
+            ck_assert_uint_ge(stage.layer_count(), fn == gradient ? 5 : 3);
+            fill(stage, seed);
+            ck_assert_uint_gt(stage.count(), 500);
+            near_pairs += check_rule(stage, f.radii, f.frame.box());
+            // The bitmap marks exactly what the points' own disks mark.
+            pds::CoveredCells again = stage.covered_cells();
+            again.clear();
+            for (std::size_t k = 0; k < stage.count(); ++k)
+                again.cover_disk(stage.point(k), f.radii.radius_of(stage.value(k)));
+            ck_assert(again == stage.covered_cells());
+            exact += stage.exact_checks();
+        }
+        ck_assert_uint_gt(near_pairs, 100);
+        ck_assert_uint_gt(exact, 0);
+    }
+}
+END_TEST
+
+START_TEST(covered_cells_lie_inside_their_disk) {
+    // Each marked cell's corners strictly inside the disk (a dart there is
+    // covered); and the marks are nearly all the cells wholly inside, found
+    // by brute force (a mark test on the nearer edge of a row, or no margin,
+    // marks cells reaching outside; one that gave up would mark few).
+    const double x0 = -0.37, y0 = 1.21, side = 0.0137;
+    const std::size_t cols = 40, rows = 30;
+    pds::Rng rng(7);
+    std::size_t marked_total = 0, inside_total = 0;
+    for (int disk = 0; disk < 300; ++disk) {
+        pds::CoveredCells cells(x0, y0, side, cols, rows);
+        const pds::Point c{x0 + rng.next_double() * static_cast<double>(cols) * side,
+                           y0 + rng.next_double() * static_cast<double>(rows) * side};
+        const double r = side * (0.5 + 8.0 * rng.next_double());
+        cells.cover_disk(c, r);
+        for (std::size_t j = 0; j < rows; ++j) {
+            for (std::size_t i = 0; i < cols; ++i) {
+                bool inside = true;
+                for (int corner = 0; corner < 4; ++corner) {
+                    const auto qi = static_cast<double>(i + static_cast<std::size_t>(corner % 2));
+                    const auto qj = static_cast<double>(j + static_cast<std::size_t>(corner / 2));
+                    const pds::Point q{x0 + qi * side, y0 + qj * side};
+                    inside = inside && pds::compare_distance(q, c, r) < 0;
+                }
+                if (cells.covered(i, j)) {
+                    ck_assert_msg(inside, "disk %d: cell (%zu, %zu) marked but not inside", disk, i, j);
+                    ++marked_total;
+                }
+                if (inside) ++inside_total;
+            }
+        }
+    }
+    ck_assert_uint_gt(marked_total, 2000);
+    ck_assert_uint_ge(marked_total, inside_total * 99 / 100);
+}
+END_TEST
+
+START_TEST(field_hand_over_keeps_points_and_values) {
+    double r0 = 0.01;
+    const Field f(gradient, &r0, 4.0);
+    pds::FieldDartStage stage(f.frame.box(), f.radii);
+    fill(stage, 11);
+    const std::size_t n = stage.count();
+    ck_assert_uint_gt(n, 500);
+    // The stage's own queries build a mesh of its points: valid, not yet maximal.
+    const pds::VerifyReport partial = stage.verify();
+    ck_assert_msg(partial.valid, "%s", partial.failure.c_str());
+    ck_assert(!partial.maximal);
+    const double free_before = stage.free_area();
+    ck_assert(free_before > 0.0);
+    std::vector<pds::Point> pts(n);
+    std::vector<double> values(n);
+    for (std::size_t k = 0; k < n; ++k) pts[k] = stage.point(k), values[k] = stage.value(k);
+    pds::JonesStage jones(f.frame.box(), f.frame.r(), pds::Torus{}, &f.radii);
+    jones.reserve(4 * n);
+    stage.hand_over_to(jones);
+    ck_assert_uint_eq(jones.count(), n);
+    for (std::size_t k = 0; k < n; ++k) {
+        ck_assert(jones.point(k).x == pts[k].x && jones.point(k).y == pts[k].y);
+        ck_assert(jones.value(k) == values[k]);
+    }
+    ck_assert_double_eq_tol(jones.free_area(), free_before, 1e-12);
+    pds::Rng rng(12);
+    while (jones.next(rng) != nullptr) jones.add_next();
+    const pds::VerifyReport done = jones.verify();
+    ck_assert_msg(done.valid && done.maximal, "%s", done.failure.c_str());
+}
+END_TEST
+
+Suite* field_dart_stage_suite() {
+    Suite* s = suite_create("field_dart_stage");
+    TCase* t = tcase_create("layers");
+    tcase_set_timeout(t, 120);
+    tcase_add_test(t, field_dart_points_keep_the_rule);
+    tcase_add_test(t, covered_cells_lie_inside_their_disk);
+    tcase_add_test(t, field_hand_over_keeps_points_and_values);
+    suite_add_tcase(s, t);
+    return s;
+}
