@@ -98,25 +98,25 @@ private:
     // distance in doubt, is kept apart.
     using Cell = std::uint64_t;
     struct Free {
-        void operator()(void* p) const { std::free(p); }
+        template <class T>
+        void operator()(T* p) const { std::free(p); }
     };
-    // A layer's grid is stored in square bricks of 2^shift cells a side (up
-    // to 512: 2 MiB, one huge page), so the 5 x 5 cells a dart reads lie in
-    // one or a few pages, and pages are touched only where points are.
+    // A layer's grid is stored in bricks of 32 x 32 cells (8 KiB; flatter
+    // for a thin grid), so the 5 x 5 cells a dart reads lie in one or a few
+    // pages, and pages are touched only where points are.
     struct Layer {
         double low, high;  // its radii: [low, high]
         double side, inv_side, step, reach;  // reach: high in cells, with slack
         std::size_t cols, rows;  // real cells; kPad more around them
-        int shift;
+        int shift_x, shift_y;    // a brick is 2^shift_x x 2^shift_y cells
         std::size_t bricks_x;
-        Cell* cells;            // in cells_memory (zeroed_pages)
-        std::uint32_t* index;   // a taken cell's point, in index_memory
-        std::unique_ptr<void, Free> cells_memory, index_memory;
+        std::unique_ptr<Cell[], Free> cells;
+        std::unique_ptr<std::uint32_t[], Free> index;  // a taken cell's point
         // The cell in padded column x, row y (the real cells from kPad on).
         std::size_t at(std::size_t x, std::size_t y) const {
-            const std::size_t m = (std::size_t{1} << shift) - 1;
-            const std::size_t brick = (y >> shift) * bricks_x + (x >> shift);
-            return (((brick << shift) | (y & m)) << shift) | (x & m);
+            const std::size_t mx = (std::size_t{1} << shift_x) - 1, my = (std::size_t{1} << shift_y) - 1;
+            const std::size_t brick = (y >> shift_y) * bricks_x + (x >> shift_x);
+            return (((brick << shift_y) | (y & my)) << shift_x) | (x & mx);
         }
     };
     // The cells of a layer a disk centred at a point may reach.
@@ -134,7 +134,6 @@ private:
     };
 
     static void allocate_cells(Layer& L);
-    static void* zeroed_pages(std::size_t bytes, std::unique_ptr<void, Free>& memory);
     std::size_t layer_of(double r) const;
     Block block_of(const Layer& L, const Point& p) const;
     std::size_t tile_of(const Point& p) const;

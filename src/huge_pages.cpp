@@ -9,12 +9,11 @@
 
 namespace pds {
 
-void advise_huge_pages(const void* p, std::size_t bytes) { advise_huge_pages(p, bytes, std::size_t{128} << 20); }
-
-void advise_huge_pages(const void* p, std::size_t bytes, std::size_t min_bytes) {
+void advise_huge_pages(const void* p, std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
-    if (p == nullptr || bytes < min_bytes) return;
+    constexpr std::size_t kMinBytes = std::size_t{128} << 20;
+    if (p == nullptr || bytes < kMinBytes) return;
     const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
     const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(kHuge - 1);
     // The result is ignored: a refused hint leaves ordinary pages.
@@ -22,7 +21,6 @@ void advise_huge_pages(const void* p, std::size_t bytes, std::size_t min_bytes) 
 #else
     (void)p;
     (void)bytes;
-    (void)min_bytes;
 #endif
 }
 

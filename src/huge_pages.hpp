@@ -23,8 +23,6 @@ namespace pds {
 // Advises huge pages for the 2 MiB-aligned part of [p, p + bytes), when
 // bytes is at least 128 MiB.
 void advise_huge_pages(const void* p, std::size_t bytes);
-// The same from min_bytes on.
-void advise_huge_pages(const void* p, std::size_t bytes, std::size_t min_bytes);
 
 template <class T>
 void advise_huge_pages(const std::vector<T>& v) {
