@@ -51,10 +51,21 @@ const std::uint32_t* CurveOrder::order(const std::vector<Point>& points) {
     tmp_order_.resize(n);
     key_.resize(n);
     tmp_key_.resize(n);
-    std::uint32_t* order = order_.data();
-    std::uint32_t* tmp_order = tmp_order_.data();
-    std::uint64_t* key = key_.data();
-    std::uint64_t* tmp_key = tmp_key_.data();
+    sort(points, order_.data(), key_.data(), tmp_order_.data(), tmp_key_.data());
+    return order_.data();
+}
+
+std::vector<std::uint32_t> CurveOrder::fresh_order(const std::vector<Point>& points) const {
+    const std::size_t n = points.size();
+    std::vector<std::uint32_t> order(n), tmp_order(n);
+    std::vector<std::uint64_t> key(n), tmp_key(n);
+    sort(points, order.data(), key.data(), tmp_order.data(), tmp_key.data());
+    return order;
+}
+
+void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, std::uint64_t* key,
+                      std::uint32_t* tmp_order, std::uint64_t* tmp_key) const {
+    const std::size_t n = points.size();
     std::size_t ends[64];
     std::size_t rounds = 0;
     for (std::size_t end = n; end > 0; end = end > 256 ? end / 4 : 0) ends[rounds++] = end;
@@ -89,7 +100,6 @@ const std::uint32_t* CurveOrder::order(const std::vector<Point>& points) {
         }
         begin = end;
     }
-    return order;
 }
 
 }  // namespace pds

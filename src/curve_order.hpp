@@ -23,6 +23,7 @@ namespace pds {
 
 class CurveOrder {
 public:
+    CurveOrder() = default;  // over one cell, until assigned
     // The curve runs over cols x rows cells of side_x by side_y from the
     // box's lower left corner (points outside count as in the nearest cell).
     CurveOrder(const Box& box, double side_x, double side_y, std::size_t cols, std::size_t rows);
@@ -36,14 +37,21 @@ public:
     // The indices of points in insertion order, in the reserved scratch
     // (valid until the next call); requires room for points.size().
     const std::uint32_t* order(const std::vector<Point>& points);
+    // The same order in fresh scratch (for queries; allocates).
+    std::vector<std::uint32_t> fresh_order(const std::vector<Point>& points) const;
 
     // Position along the curve of p's cell.
     std::uint64_t key(const Point& p) const;
 
 private:
-    Box box_;
-    double inv_side_x_, inv_side_y_;
-    std::size_t cols_, rows_;
+    // Sorts points into order[0, n); the other three arrays are scratch of
+    // n entries each.
+    void sort(const std::vector<Point>& points, std::uint32_t* order, std::uint64_t* key, std::uint32_t* tmp_order,
+              std::uint64_t* tmp_key) const;
+
+    Box box_{0.0, 0.0, 1.0, 1.0};
+    double inv_side_x_ = 1.0, inv_side_y_ = 1.0;
+    std::size_t cols_ = 1, rows_ = 1;
     std::uint64_t side_ = 1;  // a power of two at least cols_ and rows_
     std::vector<std::uint32_t> order_, tmp_order_;
     std::vector<std::uint64_t> key_, tmp_key_;

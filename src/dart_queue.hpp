@@ -49,7 +49,6 @@ public:
     }
     // The dart next() returned; requires one.
     const Dart& pending() const { return batch_[head_ - 1]; }
-    bool has_pending() const { return has_pending_; }
     void take() { has_pending_ = false; }
     // Ends the stage (the hand-over).
     void end() {

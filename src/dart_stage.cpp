@@ -18,8 +18,7 @@ DartStage::DartStage(const Box& domain, double radius, const Torus& torus)
       r_(radius),
       r2_low_(radius * radius * (1.0 - kFilterSlack)),
       r2_high_(radius * radius * (1.0 + kFilterSlack)),
-      torus_(torus),
-      curve_(domain, 1.0, 1.0, 1, 1) {
+      torus_(torus) {
     const double side = kCellShrink * radius / std::sqrt(2.0);
     cols_ = cells_along(domain.width(), side);
     rows_ = cells_along(domain.height(), side);
@@ -59,11 +58,6 @@ void DartStage::reserve(std::size_t points) {
     // Each reserve either succeeds or leaves its vector as it was.
     points_.reserve(points);
     curve_.reserve(points);
-}
-
-DartStage::CellXY DartStage::column_row(const Point& p) const {
-    return CellXY{clamped_cell((p.x - box_.x0) * inv_side_x_, cols_),
-                  clamped_cell((p.y - box_.y0) * inv_side_y_, rows_)};
 }
 
 void DartStage::write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index) {
@@ -118,7 +112,8 @@ void DartStage::draw_batch(Dart* batch, std::size_t n, Rng& rng) {
 }
 
 void DartStage::aim(Dart& d) const {
-    // Its cell as column_row() finds it, and the columns and rows within R.
+    // Its cell (clamped: rounding may put a point on the far edge of the
+    // last cell), and the columns and rows within R.
     const double fx = (d.p.x - box_.x0) * inv_side_x_, fy = (d.p.y - box_.y0) * inv_side_y_;
     const std::size_t cx = clamped_cell(fx, cols_), cy = clamped_cell(fy, rows_);
     d.col = static_cast<std::int64_t>(cx);
@@ -178,16 +173,9 @@ const std::uint32_t* DartStage::handover_order() {
     return curve_.order(points_);
 }
 
-std::vector<std::uint32_t> DartStage::fresh_order() const {
-    CurveOrder curve(box_, side_x_, side_y_, cols_, rows_);
-    curve.reserve(points_.size());
-    const std::uint32_t* order = curve.order(points_);
-    return std::vector<std::uint32_t>(order, order + points_.size());
-}
-
 Delaunay DartStage::triangulate(std::vector<std::uint32_t>& order) const {
     const std::size_t n = points_.size();
-    order = fresh_order();
+    order = curve_.fresh_order(points_);
     Delaunay mesh(box_);
     mesh.reserve(n + Delaunay::kGhosts);
     mesh.insert_in_order(points_, order.data(), n, [](std::uint32_t, VertexIndex) {});
@@ -196,7 +184,7 @@ Delaunay DartStage::triangulate(std::vector<std::uint32_t>& order) const {
 
 JonesStage DartStage::torus_stage(std::vector<std::uint32_t>& order) const {
     // On the torus the queries need the copies: a Jones stage of the points.
-    order = fresh_order();
+    order = curve_.fresh_order(points_);
     JonesStage stage(box_, r_, torus_);
     stage.reserve(points_.size());
     stage.adopt(points_, order.data());

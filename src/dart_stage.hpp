@@ -125,12 +125,6 @@ private:
         void operator()(Cell* p) const { std::free(p); }
     };
 
-    struct CellXY {
-        std::size_t x, y;  // column and row, from 0, without the padding
-    };
-    CellXY column_row(const Point& p) const;
-    // The hand-over's order of the points, in fresh scratch (for queries).
-    std::vector<std::uint32_t> fresh_order() const;
     // A triangulation of the points, for queries; vertex v holds point
     // order[v - kGhosts].
     Delaunay triangulate(std::vector<std::uint32_t>& order) const;

@@ -13,8 +13,28 @@
 
 namespace pds {
 
+namespace {
+
+// A cell's word: the offsets in steps (bits 0-15, 16-31), the radius as a
+// float (32-63).
+std::uint64_t cell_word(std::uint64_t sx, std::uint64_t sy, double r) {
+    const auto r_float = static_cast<float>(r);
+    std::uint32_t bits;
+    std::memcpy(&bits, &r_float, sizeof bits);
+    return (std::uint64_t{bits} << 32) | (sy << 16) | sx;
+}
+
+double radius_in(std::uint64_t word) {
+    const auto bits = static_cast<std::uint32_t>(word >> 32);
+    float r;
+    std::memcpy(&r, &bits, sizeof r);
+    return static_cast<double>(r);
+}
+
+}  // namespace
+
 FieldDartStage::FieldDartStage(const Box& domain, const PointRadii& radii)
-    : box_(domain), radii_(radii), curve_(domain, 1.0, 1.0, 1, 1) {
+    : box_(domain), radii_(radii) {
     const double rmin = radii.rmin(), rmax = radii.rmax();
     // Slack far above the rounding of a cell coordinate (as dart_stage.cpp).
     constexpr double kReachSlack = 1e-6;
@@ -25,6 +45,8 @@ FieldDartStage::FieldDartStage(const Box& domain, const PointRadii& radii)
         L.high = std::min(low * kLayerRatio, rmax);
         L.side = kCellShrink * low / std::sqrt(2.0);
         L.inv_side = 1.0 / L.side;
+        L.x0 = domain.x0 - kPad * L.side;
+        L.y0 = domain.y0 - kPad * L.side;
         L.step = L.side / kOffsetSteps;
         L.reach = L.high * L.inv_side + kReachSlack;
         L.cols = cells_along(domain.width(), L.side);
@@ -125,24 +147,18 @@ FieldDartStage::Block FieldDartStage::block_of(const Layer& L, const Point& p) c
 bool FieldDartStage::free_in(const Layer& L, const Block& b, const Point& p) const {
     // A taken cell is covered whole: its point's radius is over its diagonal.
     if (L.cells[L.at(b.x, b.y)] != 0) return false;
-    const double x_origin = box_.x0 - static_cast<double>(kPad) * L.side;
-    const double y_origin = box_.y0 - static_cast<double>(kPad) * L.side;
     for (int i = b.y_lo; i <= b.y_hi; ++i) {
         const std::size_t y = b.y + static_cast<std::size_t>(i);
-        const double y0 = y_origin + static_cast<double>(y) * L.side;
+        const double y0 = L.corner_y(y);
         for (int j = b.x_lo; j <= b.x_hi; ++j) {
             const std::size_t x = b.x + static_cast<std::size_t>(j);
             const std::size_t cell = L.at(x, y);
             const Cell word = L.cells[cell];
             if (word == 0) continue;
-            const auto bits = static_cast<std::uint32_t>(word >> 32);
-            float r;
-            std::memcpy(&r, &bits, sizeof r);
-            const double x0 = x_origin + static_cast<double>(x) * L.side;
-            const double qx = x0 + (static_cast<double>(word & 0xFFFF) + 0.5) * L.step;
+            const double qx = L.corner_x(x) + (static_cast<double>(word & 0xFFFF) + 0.5) * L.step;
             const double qy = y0 + (static_cast<double>((word >> 16) & 0xFFFF) + 0.5) * L.step;
-            const double dx = qx - p.x, dy = qy - p.y;
-            const double d2 = dx * dx + dy * dy, r2 = static_cast<double>(r) * static_cast<double>(r);
+            const double dx = qx - p.x, dy = qy - p.y, r = radius_in(word);
+            const double d2 = dx * dx + dy * dy, r2 = r * r;
             if (d2 < r2 * (1.0 - kFilterSlack)) return false;
             if (d2 < r2 * (1.0 + kFilterSlack)) {
                 // The float radius is within 2^-24 of the point's: far inside the slack.
@@ -217,19 +233,13 @@ void FieldDartStage::add_next() {
     const double r = radii_.radius_of(value);
     const std::size_t k = layer_of(r);
     const Layer& L = layers_[k];
-    const std::size_t col = clamped_cell((p.x - box_.x0) * L.inv_side, L.cols);
-    const std::size_t row = clamped_cell((p.y - box_.y0) * L.inv_side, L.rows);
-    // The cell's corner by the reading's formula (free_in), padded coordinates.
-    const double x0 = box_.x0 - static_cast<double>(kPad) * L.side + static_cast<double>(col + kPad) * L.side;
-    const double y0 = box_.y0 - static_cast<double>(kPad) * L.side + static_cast<double>(row + kPad) * L.side;
-    const std::uint64_t sx = offset_steps(p.x - x0, L.step), sy = offset_steps(p.y - y0, L.step);
-    const auto index = static_cast<std::uint32_t>(points_.size());
-    const auto r_float = static_cast<float>(r);
-    std::uint32_t r_bits;
-    std::memcpy(&r_bits, &r_float, sizeof r_bits);
-    const std::size_t cell = L.at(col + kPad, row + kPad);
-    L.cells[cell] = (std::uint64_t{r_bits} << 32) | (sy << 16) | sx;
-    L.index[cell] = index;
+    const Block b = block_of(L, p);
+    // The offsets from the corner free_in reads them from.
+    const std::uint64_t sx = offset_steps(p.x - L.corner_x(b.x), L.step);
+    const std::uint64_t sy = offset_steps(p.y - L.corner_y(b.y), L.step);
+    const std::size_t cell = L.at(b.x, b.y);
+    L.cells[cell] = cell_word(sx, sy, r);
+    L.index[cell] = static_cast<std::uint32_t>(points_.size());
     mark_layer_near(p, k);
     covered_.cover_disk(p, r);
     points_.push_back(p);
@@ -245,11 +255,9 @@ void FieldDartStage::hand_over_to(JonesStage& jones) {
 }
 
 std::unique_ptr<JonesStage> FieldDartStage::jones_of_points() const {
-    CurveOrder curve = curve_;
-    curve.reserve(points_.size());
     auto stage = std::make_unique<JonesStage>(box_, radii_.rmax(), Torus{}, &radii_);
     stage->reserve(points_.size());
-    stage->adopt(points_, curve.order(points_), &values_);
+    stage->adopt(points_, curve_.fresh_order(points_).data(), &values_);
     return stage;
 }
 

@@ -115,8 +115,12 @@ void Sampler::prepare(std::size_t points) {
         const std::optional<PointRadii> radii = point_radii(frame_);
         auto jones = std::make_unique<JonesStage>(frame_.box(), frame_.r(), frame_.torus(), radii ? &*radii : nullptr);
         std::unique_ptr<OpeningStage> darts;
-        if (use_darts() && radii) darts = std::make_unique<FieldDartStage>(frame_.box(), *radii);
-        else if (use_darts()) darts = std::make_unique<DartStage>(frame_.box(), frame_.r(), frame_.torus());
+        if (use_darts()) {
+            if (radii)
+                darts = std::make_unique<FieldDartStage>(frame_.box(), *radii);
+            else
+                darts = std::make_unique<DartStage>(frame_.box(), frame_.r(), frame_.torus());
+        }
         jones_ = std::move(jones);
         darts_ = std::move(darts);
     }
