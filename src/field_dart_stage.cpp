@@ -147,25 +147,33 @@ FieldDartStage::Block FieldDartStage::block_of(const Layer& L, const Point& p) c
 bool FieldDartStage::free_in(const Layer& L, const Block& b, const Point& p) const {
     // A taken cell is covered whole: its point's radius is over its diagonal.
     if (L.cells[L.at(b.x, b.y)] != 0) return false;
+    // Whether the point in the cell i rows and j columns from the dart's (if
+    // there is one) lies within its radius.
+    const auto covers = [&](int i, int j) {
+        const std::size_t x = b.x + static_cast<std::size_t>(j), y = b.y + static_cast<std::size_t>(i);
+        const std::size_t cell = L.at(x, y);
+        const Cell word = L.cells[cell];
+        if (word == 0) return false;
+        const double qx = L.corner_x(x) + (static_cast<double>(word & 0xFFFF) + 0.5) * L.step;
+        const double qy = L.corner_y(y) + (static_cast<double>((word >> 16) & 0xFFFF) + 0.5) * L.step;
+        const double dx = qx - p.x, dy = qy - p.y, r = radius_in(word);
+        const double d2 = dx * dx + dy * dy, r2 = r * r;
+        if (d2 < r2 * (1.0 - kFilterSlack)) return true;
+        if (!(d2 < r2 * (1.0 + kFilterSlack))) return false;
+        // The float radius is within 2^-24 of the point's: far inside the slack.
+        ++exact_checks_;
+        const std::uint32_t k = L.index[cell];
+        return compare_distance(p, points_[k], radii_.radius_of(values_[k])) < 0;
+    };
+    // The eight cells around the dart's first, the likeliest to cover it (as
+    // in dart_stage.cpp); a layer's radii span over one cell, so they always
+    // lie in the block.
+    if (covers(0, -1) || covers(0, 1) || covers(-1, 0) || covers(1, 0)) return false;
+    if (covers(-1, -1) || covers(-1, 1) || covers(1, -1) || covers(1, 1)) return false;
     for (int i = b.y_lo; i <= b.y_hi; ++i) {
-        const std::size_t y = b.y + static_cast<std::size_t>(i);
-        const double y0 = L.corner_y(y);
         for (int j = b.x_lo; j <= b.x_hi; ++j) {
-            const std::size_t x = b.x + static_cast<std::size_t>(j);
-            const std::size_t cell = L.at(x, y);
-            const Cell word = L.cells[cell];
-            if (word == 0) continue;
-            const double qx = L.corner_x(x) + (static_cast<double>(word & 0xFFFF) + 0.5) * L.step;
-            const double qy = y0 + (static_cast<double>((word >> 16) & 0xFFFF) + 0.5) * L.step;
-            const double dx = qx - p.x, dy = qy - p.y, r = radius_in(word);
-            const double d2 = dx * dx + dy * dy, r2 = r * r;
-            if (d2 < r2 * (1.0 - kFilterSlack)) return false;
-            if (d2 < r2 * (1.0 + kFilterSlack)) {
-                // The float radius is within 2^-24 of the point's: far inside the slack.
-                ++exact_checks_;
-                const std::uint32_t k = L.index[cell];
-                if (compare_distance(p, points_[k], radii_.radius_of(values_[k])) < 0) return false;
-            }
+            const bool inner = i >= -1 && i <= 1 && j >= -1 && j <= 1;
+            if (!inner && covers(i, j)) return false;
         }
     }
     return true;
