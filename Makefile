@@ -6,7 +6,8 @@
 #   make check      install what the tests need (Debian, as root), then run them all,
 #                   and the same suites again under Valgrind memcheck
 #   make bench      benchmark figures against two baselines (not assertions);
-#                   make bench-quick: the two smaller sizes only
+#                   make bench-quick: the two smaller sizes only; make bench-phases:
+#                   where one run's time goes, stage by stage (PHASES_ARGS='N SEED')
 #   make install    PREFIX, DESTDIR, LIBDIR, INCLUDEDIR, BINDIR, MANDIR, PKGCONFIGDIR
 #   make install-python   pip-install bindings/python (offline) for SYSTEM_PYTHON
 #                   (/usr/bin/python3); make uninstall-python
@@ -83,7 +84,7 @@ CHECK_LIBS = $$(pkg-config --libs check)
 .PHONY: all demo check bench install uninstall clean deps abi-baseline \
         check-unit check-api check-header check-symbols check-abi check-man \
         check-examples check-python check-pkgconfig check-cli check-valgrind \
-        bench-quick check-bench check-threads check-sanitizers check-asan check-tsan
+        bench-quick bench-phases check-bench check-threads check-sanitizers check-asan check-tsan
 
 all: $(LIB_SO) $(B)/libpoissondisk.so $(B)/$(SONAME) $(LIB_A) $(CLI)
 
@@ -393,11 +394,21 @@ $(B)/bench: $(BENCH_SRC) $(wildcard bench/*.h) include/poissondisk.h $(LIB_A)
 bench: $(B)/bench
 	$(B)/bench --csv $(B)/bench.csv --svg $(B)/bench.svg $(BENCH_ARGS)
 
+# Where the time of one run goes (bench/phases.cpp): the stages of a pds_run
+# timed one by one, with the darts thrown and the Jones loop's selections.
+# PHASES_ARGS: [N [SEED]], default 10^6 points, seed 1.
+PHASES_BIN := $(B)/bench-phases
+$(PHASES_BIN): bench/phases.cpp include/poissondisk.h $(LIB_A)
+	$(CXX) -std=c++17 -Iinclude -Isrc $(PDS_WARN) -O2 $(CXXFLAGS) -o $@ bench/phases.cpp $(LIB_A) -lm
+
+bench-phases: $(PHASES_BIN)
+	$(PHASES_BIN) $(PHASES_ARGS)
+
 bench-quick: $(B)/bench
 	$(B)/bench --csv $(B)/bench-quick.csv --svg $(B)/bench-quick.svg $(BENCH_ARGS) 10000 100000
 
-check-bench: $(B)/bench
-	sh tests/check-bench.sh $(B)/bench
+check-bench: $(B)/bench $(PHASES_BIN)
+	sh tests/check-bench.sh $(B)/bench $(PHASES_BIN)
 
 # ---- install -------------------------------------------------------------------------
 install: all

@@ -37,6 +37,7 @@ public:
             }
             const Dart& d = batch_[head_++];
             ++window_darts_;
+            ++thrown_;
             const bool hit = inside(d) && is_free(d);
             if (hit) ++window_hits_;
             if (window_darts_ == window_) end_of_window();
@@ -50,6 +51,8 @@ public:
     // The dart next() returned; requires one.
     const Dart& pending() const { return batch_[head_ - 1]; }
     void take() { has_pending_ = false; }
+    // Darts tested so far (bench/phases.cpp).
+    std::size_t thrown() const { return thrown_; }
     // Ends the stage (the hand-over).
     void end() {
         over_ = true;
@@ -65,6 +68,7 @@ private:
     Dart batch_[kMaxBatch];
     std::size_t head_ = kMaxBatch;  // used up: the first next() draws
     std::size_t window_ = 0, window_darts_ = 0, window_hits_ = 0;
+    std::size_t thrown_ = 0;
     double min_acceptance_ = 0.0;
     bool over_ = false;
     bool has_pending_ = false;

@@ -87,6 +87,8 @@ public:
     // Distances the rounded offsets left undecided, sent to the exact
     // predicate (for tests: the path must be taken).
     std::size_t exact_checks() const { return exact_checks_; }
+    // Darts thrown so far, landed or not (bench/phases.cpp).
+    std::size_t darts_thrown() const { return queue_.thrown(); }
     // The points' indices in the order the hand-over inserts them (see the
     // .cpp); written into the reserved scratch: never allocates. Ends the
     // stage and releases its grid.

@@ -241,6 +241,7 @@ void JonesStage::draw_batch_unguarded(std::size_t n, Rng& rng) {
     const double total = tree_.total();
     for (std::size_t k = 0; k < n; ++k) target[k] = rng.next_double() * total;
     tree_.select_many(target, n, sites);
+    stats_.selections += n;
     VertexIndex rings[kMaxBatch];
     for (std::size_t k = 0; k < n; ++k) {
         vertices[k] = vertex_of(sites[k]);
@@ -272,6 +273,8 @@ void JonesStage::draw_batch_unguarded(std::size_t n, Rng& rng) {
             if (sel.measure.area < bound[k]) {
                 // The target fell in the part of the bound the cell has lost
                 // since it was measured.
+                ++stats_.stale_selections;
+                if (sel.measure.area == 0.0) ++stats_.stale_at_zero;
                 continue;
             }
             if (!sel.fallback()) {

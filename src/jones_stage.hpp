@@ -76,6 +76,13 @@ namespace pds {
 // What the stage could not do, for tests and diagnostics.
 struct JonesStats {
     std::size_t gave_up_cells = 0;  // cells still free that no draw could reach
+    // Where the loop's work goes (bench/phases.cpp): cells selected from the
+    // tree; of those, selections whose target fell in the part of the bound
+    // the cell had lost since it was measured; and of those, the ones whose
+    // cell had no free area left.
+    std::size_t selections = 0;
+    std::size_t stale_selections = 0;
+    std::size_t stale_at_zero = 0;
 };
 
 class JonesStage final : public Stage {

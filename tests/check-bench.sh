@@ -13,12 +13,15 @@
 # pds_run and pds_step loops: printed, same points). Also the SVG's shape and
 # the argument errors. Timings
 # are only checked to be positive: nothing here depends on the machine's speed.
+# Last, with a second argument, bench-phases: its --check (the stages called
+# one by one give pds_run's points) and its table.
 # Ends with "check-bench: N passed, M failed" and a non-zero status on failure.
 
 set -u
 
 name=check-bench
-program=${1:?usage: sh tests/check-bench.sh PATH-TO-bench}
+program=${1:?usage: sh tests/check-bench.sh PATH-TO-bench [PATH-TO-bench-phases]}
+phases=${2:-}
 . "$(dirname "$0")/harness.sh"
 bench=$program
 
@@ -146,5 +149,34 @@ usage_case "a size of 5" 5
 usage_case "a size that is not a number" 10k
 usage_case "an unknown option" --bogus 1000
 usage_case "--chunked 5" --chunked 5 1000
+
+# ---- bench-phases ---------------------------------------------------------------------
+# The stages timed one by one must be pds_run's own path: --check compares
+# every coordinate with pds_run's at the same radius and seed.
+if [ -n "$phases" ]; then
+    for run in "20000 1" "3000 5"; do
+        # shellcheck disable=SC2086
+        "$phases" --check $run > "$tmp/p.out" 2>&1
+        rc=$?
+        expect "bench-phases --check $run: exit 0 (got $rc)" [ "$rc" -eq 0 ]
+        expect "bench-phases --check $run: the same points as pds_run" grep -q '^check: pds_run gives [0-9]* points, the same$' "$tmp/p.out"
+        for phase in darts 'hand-over order' 'hand-over insert' 'hand-over measure' 'Jones loop' total; do
+            expect "bench-phases $run: a '$phase' row" grep -q "^$phase  *[0-9]" "$tmp/p.out"
+        done
+        # The dart and loop points add up to the total.
+        expect "bench-phases $run: the phases' points add up" awk '
+            /^darts / { d = $4 } /^Jones loop / { l = $5 } /^total / { t = $4 }
+            END { exit !(d > 0 && l > 0 && d + l == t) }' "$tmp/p.out"
+        # Each point took a dart or a selection that no stale bound rejected.
+        expect "bench-phases $run: the counts are consistent" awk '
+            /^darts / { d = $4; thrown = $7 }
+            /^Jones loop / { l = $5; sel = $8; stale = $13; zero = $15 }
+            END { exit !(thrown >= d && sel - stale >= l && zero <= stale && zero > 0) }' "$tmp/p.out"
+    done
+    "$phases" 50 > "$tmp/p.out" 2> "$tmp/p.err"
+    rc=$?
+    expect "bench-phases 50: exit 2 (got $rc)" [ "$rc" -eq 2 ]
+    expect "bench-phases 50: the usage" grep -q '^usage: ' "$tmp/p.err"
+fi
 
 finish

@@ -1,0 +1,151 @@
+// phases.cpp - where the time of one run goes (make bench-phases).
+//
+//   build/bench-phases [--check] [N [SEED]]
+//
+// Samples the unit square at R = sqrt(0.6966/N) (the bench's radius) with the
+// library's own stages, called one by one in the order pds_run calls them:
+// the dart stage, the hand-over's insertion order, the hand-over itself
+// (triangulating the dart points, measuring every cell, building the tree)
+// and the Jones loop. It prints each phase's time with what it counted: darts
+// thrown, and the loop's cell selections with those a stale bound rejected
+// (the lazy areas of jones_stage.hpp). The measuring part of the hand-over is
+// timed by measuring every cell once more afterwards, the insertion is the
+// rest. Wall-clock times of one run: compare phases within a run, and runs
+// on one machine.
+//
+// --check also runs pds_run with the same radius and seed and fails unless
+// both give the same points, coordinate for coordinate: what is timed here is
+// the library's path, not an imitation of it (make check-bench runs it).
+//
+// A developer's tool: it includes the library's internal headers (src/) and
+// links its static archive.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "dart_stage.hpp"
+#include "jones_stage.hpp"
+#include "mesh_cells.hpp"
+#include "poissondisk.h"
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+int usage() {
+    std::fprintf(stderr, "usage: bench-phases [--check] [N [SEED]]   (N >= 100, default 1000000; SEED default 1)\n");
+    return 2;
+}
+
+// The points of a pds_run with the same radius and seed; false on an error.
+bool library_points(double radius, std::uint64_t seed, std::vector<double>* xy) {
+    pds_sampler* s = nullptr;
+    if (pds_create(&s, radius, seed) != 0) return false;
+    bool ok = pds_run(s, 0, nullptr) == PDS_DONE;
+    if (ok) {
+        xy->resize(2 * pds_count(s));
+        ok = pds_points(s, 0, pds_count(s), xy->data()) == pds_count(s);
+    }
+    pds_destroy(s);
+    return ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    bool check = false;
+    int arg = 1;
+    if (arg < argc && std::strcmp(argv[arg], "--check") == 0) {
+        check = true;
+        ++arg;
+    }
+    double n_target = 1e6;
+    std::uint64_t seed = 1;
+    char* end = nullptr;
+    if (arg < argc) {
+        n_target = std::strtod(argv[arg++], &end);
+        if (*end != '\0' || !(n_target >= 100.0 && n_target <= 1e9)) return usage();
+    }
+    if (arg < argc) {
+        seed = std::strtoull(argv[arg++], &end, 10);
+        if (*end != '\0') return usage();
+    }
+    if (arg != argc) return usage();
+
+    using pds::Delaunay;
+    const double radius = std::sqrt(0.6966 / n_target);
+    const pds::Box square{0.0, 0.0, 1.0, 1.0};
+    const auto room = static_cast<std::size_t>(1.2 * n_target) + 1000;  // a maximal pattern holds about 1.0 N
+    pds::Rng rng(seed);
+    pds::DartStage darts(square, radius);
+    pds::JonesStage jones(square, radius);
+    darts.reserve(room);
+    jones.reserve(room);
+
+    auto t = std::chrono::steady_clock::now();
+    while (darts.next(rng)) darts.add_next();
+    const double t_darts = seconds_since(t);
+    const std::size_t dart_points = darts.count(), thrown = darts.darts_thrown();
+
+    t = std::chrono::steady_clock::now();
+    const std::uint32_t* order = darts.handover_order();
+    const double t_order = seconds_since(t);
+
+    t = std::chrono::steady_clock::now();
+    jones.adopt(darts.points(), order);
+    const double t_adopt = seconds_since(t);
+
+    // The measuring part of the hand-over, timed once more on its own.
+    t = std::chrono::steady_clock::now();
+    const pds::MeshCells cells = jones.cells();
+    double free_area = 0.0;
+    for (pds::VertexIndex v = Delaunay::kGhosts; v < jones.mesh().vertex_count(); ++v)
+        free_area += cells.measure(v).area;
+    const double t_measure = seconds_since(t);
+
+    t = std::chrono::steady_clock::now();
+    while (jones.next(rng)) jones.add_next();
+    const double t_loop = seconds_since(t);
+
+    const std::size_t total = jones.count(), loop_points = total - dart_points;
+    const pds::JonesStats& st = jones.stats();
+    const double t_all = t_darts + t_order + t_adopt + t_loop;
+    const auto share = [&](double x) { return 100.0 * x / t_all; };
+    const auto per = [](double a, std::size_t b) { return b == 0 ? 0.0 : a / static_cast<double>(b); };
+
+    std::printf("poissondisk %s phases: unit square, N=%.0f, R=%.6g, seed %llu: %zu points\n",
+                pds_version_string(), n_target, radius, static_cast<unsigned long long>(seed), total);
+    std::printf("phase                 seconds  share     points  per point  counted\n");
+    std::printf("darts                %8.4f  %4.1f%%  %9zu  %6.0f ns  %zu darts thrown (%.2f per point, %.1f ns each)\n",
+                t_darts, share(t_darts), dart_points, 1e9 * per(t_darts, dart_points), thrown,
+                per(static_cast<double>(thrown), dart_points), 1e9 * per(t_darts, thrown));
+    std::printf("hand-over order      %8.4f  %4.1f%%  %9zu  %6.0f ns\n", t_order, share(t_order), dart_points,
+                1e9 * per(t_order, dart_points));
+    std::printf("hand-over insert     %8.4f  %4.1f%%  %9zu  %6.0f ns  (the hand-over less the measuring)\n",
+                t_adopt - t_measure, share(t_adopt - t_measure), dart_points,
+                1e9 * per(t_adopt - t_measure, dart_points));
+    std::printf("hand-over measure    %8.4f  %4.1f%%  %9zu  %6.0f ns  free area %.4g of the square at the switch\n",
+                t_measure, share(t_measure), dart_points, 1e9 * per(t_measure, dart_points), free_area);
+    std::printf("Jones loop           %8.4f  %4.1f%%  %9zu  %6.0f ns  %zu selections (%.2f per point), %zu stale, "
+                "%zu of them at zero area\n",
+                t_loop, share(t_loop), loop_points, 1e9 * per(t_loop, loop_points), st.selections,
+                per(static_cast<double>(st.selections), loop_points), st.stale_selections, st.stale_at_zero);
+    std::printf("total                %8.4f  100%%   %9zu  %6.0f ns\n", t_all, total, 1e9 * per(t_all, total));
+
+    if (!check) return 0;
+    std::vector<double> xy;
+    if (!library_points(radius, seed, &xy)) {
+        std::fprintf(stderr, "bench-phases: pds_run failed\n");
+        return 1;
+    }
+    bool same = xy.size() == 2 * total;
+    for (std::size_t k = 0; same && k < total; ++k)
+        same = xy[2 * k] == jones.point(k).x && xy[2 * k + 1] == jones.point(k).y;
+    std::printf("check: pds_run gives %zu points, %s\n", xy.size() / 2, same ? "the same" : "NOT the same");
+    return same ? 0 : 1;
+}
