@@ -25,7 +25,7 @@ from ._errors import (CanceledError, InternalError, InvalidArgumentError, OutOfM
                       PoissonDiskError, RangeError, StateError)
 from ._sampler import UNIT_SQUARE, Points, ProgressFn, Radii, RadiusFn, Sampler, random_seed
 
-__version__ = "1.3.2"  # of this package; version() is the loaded library's
+__version__ = "1.3.3"  # of this package; version() is the loaded library's
 
 
 def sample(radius: Optional[float], *, bounds: Sequence[Sequence[float]] = UNIT_SQUARE,
