@@ -131,7 +131,7 @@ bool DartStage::is_free(const Dart& d) const {
     const Point& p = d.p;
     const auto stride = static_cast<std::ptrdiff_t>(stride_);
     // Whether the point in the cell i rows and j columns from the dart's
-    // (if there is one) lies within R. A lambda, so that it is inlined.
+    // (if there is one) lies within R.
     const auto covers = [&](int i, int j) {
         const std::size_t cell = d.cell + static_cast<std::size_t>(i * stride + j);
         const Cell word = cells_[cell];
@@ -145,19 +145,9 @@ bool DartStage::is_free(const Dart& d) const {
         ++exact_checks_;
         return compare_distance(p, exact(cell, word), r_) < 0;
     };
-    // The eight cells around the dart's come first: a point there is the
-    // likeliest to cover it, so most rejected darts stop early (the stage took
-    // 13% less time at 10^6 points than with the block read row by row). They
-    // always lie in the block: R spans more than one cell.
-    if (covers(0, -1) || covers(0, 1) || covers(-1, 0) || covers(1, 0)) return false;
-    if (covers(-1, -1) || covers(-1, 1) || covers(1, -1) || covers(1, 1)) return false;
-    for (int i = d.y_lo; i <= d.y_hi; ++i) {
-        for (int j = d.x_lo; j <= d.x_hi; ++j) {
-            const bool inner = i >= -1 && i <= 1 && j >= -1 && j <= 1;
-            if (!inner && covers(i, j)) return false;
-        }
-    }
-    return true;
+    // R spans more than one cell, so the block holds the eight around the
+    // dart's own cell (grid_cells.hpp reads those first).
+    return !block_covers(d.x_lo, d.x_hi, d.y_lo, d.y_hi, covers);
 }
 
 const Point* DartStage::next(Rng& rng) {

@@ -165,18 +165,9 @@ bool FieldDartStage::free_in(const Layer& L, const Block& b, const Point& p) con
         const std::uint32_t k = L.index[cell];
         return compare_distance(p, points_[k], radii_.radius_of(values_[k])) < 0;
     };
-    // The eight cells around the dart's first, the likeliest to cover it (as
-    // in dart_stage.cpp); a layer's radii span over one cell, so they always
-    // lie in the block.
-    if (covers(0, -1) || covers(0, 1) || covers(-1, 0) || covers(1, 0)) return false;
-    if (covers(-1, -1) || covers(-1, 1) || covers(1, -1) || covers(1, 1)) return false;
-    for (int i = b.y_lo; i <= b.y_hi; ++i) {
-        for (int j = b.x_lo; j <= b.x_hi; ++j) {
-            const bool inner = i >= -1 && i <= 1 && j >= -1 && j <= 1;
-            if (!inner && covers(i, j)) return false;
-        }
-    }
-    return true;
+    // A layer's radii span over one cell, so the block holds the eight
+    // around the dart's own cell (grid_cells.hpp reads those first).
+    return !block_covers(b.x_lo, b.x_hi, b.y_lo, b.y_hi, covers);
 }
 
 bool FieldDartStage::is_free(const Dart& d) const {

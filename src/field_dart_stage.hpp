@@ -14,7 +14,7 @@
 // Two points of a layer are at least low_k apart (the earlier one's radius),
 // so a grid of cells of side 0.99 low_k / sqrt 2 holds at most one of them a
 // cell, and its disk, at most kLayerRatio low_k wide, reaches under 2 cells:
-// a dart reads at most 4 x 4 cells of each layer, as with one radius. A
+// a dart reads at most 5 x 5 cells of each layer (4 x 4 with one radius). A
 // coarse grid of tiles as wide as the largest radius records which layers
 // have points in each tile, so a dart reads only the layers near it: where
 // the field is smooth, one or two. A bitmap of the finest cells that lie
