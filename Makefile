@@ -66,7 +66,7 @@ LIB_A     := $(B)/libpoissondisk.a
 CLI       := $(B)/poissondisk
 MAPFILE   := src/libpoissondisk.map
 
-LIB_SRC   := $(sort $(wildcard src/*.cpp))
+LIB_SRC   := $(sort $(wildcard src/*.cpp src/*/*.cpp))
 LIB_OBJ   := $(LIB_SRC:src/%.cpp=$(B)/obj/%.o)
 CORE_OBJ  := $(filter-out $(B)/obj/capi.o,$(LIB_OBJ))
 
@@ -82,7 +82,7 @@ EXAMPLE_BIN := $(EXAMPLE_SRC:tests/man_examples/%.c=$(B)/examples/%)
 CHECK_LIBS = $$(pkg-config --libs check)
 
 .PHONY: all demo check bench install uninstall clean deps abi-baseline \
-        check-unit check-api check-header check-symbols check-abi check-man \
+        check-layers check-unit check-api check-header check-symbols check-abi check-man \
         check-examples check-python check-pkgconfig check-cli check-valgrind \
         bench-quick bench-phases check-bench check-threads check-sanitizers check-asan check-tsan
 
@@ -176,7 +176,7 @@ deps:
 	@sh tests/install-deps.sh
 
 check: deps all
-	@$(MAKE) --no-print-directory check-header check-symbols check-abi check-unit \
+	@$(MAKE) --no-print-directory check-header check-layers check-symbols check-abi check-unit \
 	    check-api check-threads check-examples check-cli check-bench check-python check-pkgconfig \
 	    check-man check-valgrind check-fuzz check-alloc
 	@echo "make check: all checks passed"
@@ -208,6 +208,9 @@ check-header:
 	printf '#include <poissondisk.h>\nint main(void){return pds_version_number()==0;}\n' > $(B)/tests/header.c
 	$(CC) -std=c99 -pedantic -Werror -Wall -Wextra -Iinclude -c $(B)/tests/header.c -o $(B)/tests/header-c.o
 	$(CXX) -x c++ -std=c++11 -pedantic -Werror -Wall -Wextra -Iinclude -c $(B)/tests/header.c -o $(B)/tests/header-cxx.o
+
+check-layers:
+	sh tests/check-layers.sh
 
 check-symbols: $(LIB_SO)
 	sh tests/check-symbols.sh $(LIB_SO) $(MAPFILE)

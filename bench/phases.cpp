@@ -26,9 +26,9 @@
 #include <cstring>
 #include <vector>
 
-#include "dart_stage.hpp"
-#include "jones_stage.hpp"
-#include "mesh_cells.hpp"
+#include "darts/dart_stage.hpp"
+#include "jones/jones_stage.hpp"
+#include "jones/mesh_cells.hpp"
 #include "poissondisk.h"
 
 namespace {

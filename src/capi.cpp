@@ -15,7 +15,7 @@
 #include <new>
 
 #include "poissondisk.h"
-#include "sampler.hpp"
+#include "sampler/sampler.hpp"
 
 struct pds_sampler {
     explicit pds_sampler(std::unique_ptr<pds::Sampler> c) : core(std::move(c)) {}

@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "point.hpp"
+#include "core/point.hpp"
 
 // Distance from the site along direction (ux, uy) to the boundary of its
 // clipped cell, over all `others` (which may include the site itself).

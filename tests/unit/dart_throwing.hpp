@@ -18,7 +18,7 @@
 #include <random>
 #include <vector>
 
-#include "point.hpp"
+#include "core/point.hpp"
 
 class SaturatedDartThrowing {
 public:

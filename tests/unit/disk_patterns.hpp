@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-#include "delaunay.hpp"
-#include "predicates.hpp"
+#include "mesh/delaunay.hpp"
+#include "core/predicates.hpp"
 
 struct Disk {
     pds::Point p;

@@ -19,7 +19,7 @@
 #include <random>
 #include <vector>
 
-#include "point.hpp"
+#include "core/point.hpp"
 
 class FieldDartThrowing {
 public:

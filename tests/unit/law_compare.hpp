@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "sampler.hpp"
+#include "sampler/sampler.hpp"
 #include "suites.hpp"
 
 namespace law {

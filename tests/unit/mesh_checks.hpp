@@ -9,8 +9,8 @@
 
 #include <cstddef>
 
-#include "delaunay.hpp"
-#include "mesh_invariants.hpp"
+#include "mesh/delaunay.hpp"
+#include "mesh/mesh_invariants.hpp"
 
 inline void check_quadedge_algebra(const pds::QuadEdgeMesh& m) {
     const pds::MeshReport rep = pds::check_edge_algebra(m);

@@ -2,7 +2,7 @@
 #include <cmath>
 #include <random>
 
-#include "angle.hpp"
+#include "core/angle.hpp"
 #include "suites.hpp"
 
 START_TEST(matches_atan2_everywhere) {

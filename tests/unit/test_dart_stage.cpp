@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "dart_stage.hpp"
-#include "predicates.hpp"
-#include "spatial_hash.hpp"
+#include "darts/dart_stage.hpp"
+#include "core/predicates.hpp"
+#include "verify/spatial_hash.hpp"
 #include "suites.hpp"
 
 namespace {

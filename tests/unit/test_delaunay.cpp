@@ -5,7 +5,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "delaunay.hpp"
+#include "mesh/delaunay.hpp"
 #include "mesh_checks.hpp"
 #include "suites.hpp"
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <random>
 
-#include "expansion.hpp"
+#include "core/expansion.hpp"
 #include "suites.hpp"
 
 using pds::Expansion;

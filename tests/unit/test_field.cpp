@@ -10,8 +10,8 @@
 
 #include "field_dart_throwing.hpp"
 #include "law_compare.hpp"
-#include "radius_field.hpp"
-#include "sampler.hpp"
+#include "radius/radius_field.hpp"
+#include "sampler/sampler.hpp"
 #include "suites.hpp"
 
 namespace {

@@ -7,13 +7,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "covered_cells.hpp"
-#include "field_dart_stage.hpp"
-#include "jones_stage.hpp"
-#include "predicates.hpp"
-#include "radius_field.hpp"
-#include "rng.hpp"
-#include "spatial_hash.hpp"
+#include "darts/covered_cells.hpp"
+#include "darts/field_dart_stage.hpp"
+#include "jones/jones_stage.hpp"
+#include "core/predicates.hpp"
+#include "radius/radius_field.hpp"
+#include "core/rng.hpp"
+#include "verify/spatial_hash.hpp"
 #include "suites.hpp"
 
 namespace {

@@ -6,11 +6,11 @@
 #include <random>
 #include <vector>
 
-#include "cell_coverage.hpp"
+#include "cells/cell_coverage.hpp"
 #include "binned_chi2.hpp"
 #include "cell_oracle.hpp"
-#include "free_area.hpp"
-#include "sampler.hpp"
+#include "cells/free_area.hpp"
+#include "sampler/sampler.hpp"
 #include "suites.hpp"
 
 namespace {

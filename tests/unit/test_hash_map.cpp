@@ -6,8 +6,8 @@
 #include <random>
 #include <utility>
 
-#include "hash_map.hpp"
-#include "spatial_hash.hpp"
+#include "core/hash_map.hpp"
+#include "verify/spatial_hash.hpp"
 #include "suites.hpp"
 
 START_TEST(agrees_with_std_map) {

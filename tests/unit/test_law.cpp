@@ -12,7 +12,7 @@
 
 #include "dart_throwing.hpp"
 #include "law_compare.hpp"
-#include "sampler.hpp"
+#include "sampler/sampler.hpp"
 #include "suites.hpp"
 
 namespace {

@@ -13,9 +13,9 @@
 #include <random>
 #include <vector>
 
-#include "point.hpp"
+#include "core/point.hpp"
 #include "law_compare.hpp"
-#include "sampler.hpp"
+#include "sampler/sampler.hpp"
 #include "suites.hpp"
 
 namespace {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "alloc_hook.hpp"
-#include "jones_stage.hpp"
+#include "jones/jones_stage.hpp"
 #include "suites.hpp"
 
 namespace {

@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "binned_chi2.hpp"
-#include "cell_coverage.hpp"
-#include "free_area.hpp"
-#include "rng.hpp"
+#include "cells/cell_coverage.hpp"
+#include "cells/free_area.hpp"
+#include "core/rng.hpp"
 #include "disk_patterns.hpp"
-#include "mesh_cells.hpp"
+#include "jones/mesh_cells.hpp"
 #include "suites.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <random>
 #include <utility>
 
-#include "predicates.hpp"
+#include "core/predicates.hpp"
 #include "suites.hpp"
 
 using pds::Point;

@@ -1,6 +1,6 @@
 // test_quadedge.cpp - the edge algebra on hand-built meshes.
 #include "mesh_checks.hpp"
-#include "quadedge.hpp"
+#include "mesh/quadedge.hpp"
 #include "suites.hpp"
 
 using Q = pds::QuadEdgeMesh;

@@ -9,10 +9,10 @@
 #include <set>
 #include <vector>
 
-#include "delaunay.hpp"
+#include "mesh/delaunay.hpp"
 #include "disk_patterns.hpp"
 #include "mesh_checks.hpp"
-#include "predicates.hpp"
+#include "core/predicates.hpp"
 #include "suites.hpp"
 
 namespace {

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "mesh_checks.hpp"
-#include "predicates.hpp"
-#include "sampler.hpp"
+#include "core/predicates.hpp"
+#include "sampler/sampler.hpp"
 #include "suites.hpp"
 
 namespace {

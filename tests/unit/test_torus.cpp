@@ -5,12 +5,12 @@
 #include <cstring>
 #include <vector>
 
-#include "delaunay.hpp"
-#include "frame.hpp"
-#include "sampler.hpp"
+#include "mesh/delaunay.hpp"
+#include "domain/frame.hpp"
+#include "sampler/sampler.hpp"
 #include "suites.hpp"
-#include "torus_copies.hpp"
-#include "verify_torus.hpp"
+#include "mesh/torus_copies.hpp"
+#include "verify/verify_torus.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-#include "free_area_tree.hpp"
+#include "jones/free_area_tree.hpp"
 #include "suites.hpp"
 
 namespace {

@@ -5,11 +5,11 @@
 #include <cstring>
 #include <vector>
 
-#include "delaunay.hpp"
-#include "jones_stage.hpp"
-#include "sampler.hpp"
+#include "mesh/delaunay.hpp"
+#include "jones/jones_stage.hpp"
+#include "sampler/sampler.hpp"
 #include "suites.hpp"
-#include "verify.hpp"
+#include "verify/verify.hpp"
 
 namespace {
 

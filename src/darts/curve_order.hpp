@@ -1,0 +1,62 @@
+// curve_order.hpp - the order in which a dart stage's points are inserted
+// into the Jones stage's mesh at the hand-over.
+//
+// Biased randomized insertion order (Amenta, Choi and Rote 2003): the points
+// come in rounds, each about three times the points before it, and each round
+// is sorted along a Hilbert curve over a grid of cells. A round's points then
+// fall inside the triangulation of the earlier ones, near where the last one
+// went, so walks are short and flips stay local. The points are in random
+// order already (the order they were added in), so the rounds are prefixes:
+// ends n, n/4, n/16, ... down to 256 or fewer points.
+//
+// The scratch is reserved with the points, so the hand-over never allocates.
+#ifndef PDS_CURVE_ORDER_HPP
+#define PDS_CURVE_ORDER_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/point.hpp"
+
+namespace pds {
+
+class CurveOrder {
+public:
+    CurveOrder() = default;  // over one cell, until assigned
+    // The curve runs over cols x rows cells of side_x by side_y from the
+    // box's lower left corner (points outside count as in the nearest cell).
+    CurveOrder(const Box& box, double side_x, double side_y, std::size_t cols, std::size_t rows);
+
+    // Room for `points` points; strong guarantee (std::bad_alloc).
+    void reserve(std::size_t points);
+    bool has_room_for(std::size_t points) const {
+        return order_.capacity() >= points && tmp_order_.capacity() >= points && key_.capacity() >= points &&
+               tmp_key_.capacity() >= points;
+    }
+    // The indices of points in insertion order, in the reserved scratch
+    // (valid until the next call); requires room for points.size().
+    const std::uint32_t* order(const std::vector<Point>& points);
+    // The same order in fresh scratch (for queries; allocates).
+    std::vector<std::uint32_t> fresh_order(const std::vector<Point>& points) const;
+
+    // Position along the curve of p's cell.
+    std::uint64_t key(const Point& p) const;
+
+private:
+    // Sorts points into order[0, n); the other three arrays are scratch of
+    // n entries each.
+    void sort(const std::vector<Point>& points, std::uint32_t* order, std::uint64_t* key, std::uint32_t* tmp_order,
+              std::uint64_t* tmp_key) const;
+
+    Box box_{0.0, 0.0, 1.0, 1.0};
+    double inv_side_x_ = 1.0, inv_side_y_ = 1.0;
+    std::size_t cols_ = 1, rows_ = 1;
+    std::uint64_t side_ = 1;  // a power of two at least cols_ and rows_
+    std::vector<std::uint32_t> order_, tmp_order_;
+    std::vector<std::uint64_t> key_, tmp_key_;
+};
+
+}  // namespace pds
+
+#endif

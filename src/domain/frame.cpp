@@ -1,0 +1,179 @@
+// frame.cpp - internal coordinates and limits (see frame.hpp).
+#include "domain/frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mesh/delaunay.hpp"
+#include "mesh/quadedge.hpp"
+
+namespace pds {
+
+namespace {
+
+// Coordinates are scaled so the largest magnitude is in [1, 2); the radius
+// must keep this many bits of resolution below it.
+constexpr double kMinInternalRadius = 0x1.0p-26;
+constexpr double kMinMagnitude = 0x1.0p-900;
+// Upper bound on memory per point, for the address-space check on 32-bit.
+constexpr std::size_t kBytesPerPointBudget = 256;
+
+double max_magnitude(const Box& b) {
+    return std::max(std::max(std::fabs(b.x0), std::fabs(b.x1)),
+                    std::max(std::fabs(b.y0), std::fabs(b.y1)));
+}
+
+Box scaled(const Box& b, int k) {
+    return Box{std::ldexp(b.x0, k), std::ldexp(b.y0, k), std::ldexp(b.x1, k), std::ldexp(b.y1, k)};
+}
+
+// Any radius at least the diagonal gives the same one-point pattern; capping
+// keeps R^2 finite.
+double effective_radius(const Box& b, double r) {
+    const double w = b.width(), h = b.height();
+    const double cap = 2.0 * std::sqrt(w * w + h * h);  // not hypot: see delaunay.cpp
+    return r < cap ? r : cap;
+}
+
+// The largest period on the torus grid with lo + period <= hi exactly.
+double grid_period(double lo, double hi) {
+    // hi - lo = s + e exactly (two-sum); rounding s may have gone up.
+    const double s = hi - lo;
+    const double bv = s - hi;
+    const double e = (hi - (s - bv)) + (-lo - bv);
+    double p = Torus::snap_down(s);
+    if (p > s || (p == s && e < 0.0)) p -= Torus::kQuantum;
+    return p;
+}
+
+}  // namespace
+
+Frame::Frame(const Box& user_domain, double user_radius)
+    : user_domain_(user_domain), user_radius_(user_radius) {
+    set_domain(user_domain);
+}
+
+void Frame::set_domain(const Box& user_domain) {
+    user_domain_ = user_domain;
+    // Coordinates too small to scale keep k = 0; precision_limit() refuses them.
+    scale_exp_ = max_magnitude(user_domain) < kMinMagnitude ? 0 : -std::ilogb(max_magnitude(user_domain));
+    box_ = scaled(user_domain, scale_exp_);
+    torus_ = Torus{};
+    if (periodic_) {
+        // Periods on the torus grid, rounded down so every point stays inside
+        // the user's rectangle (torus.hpp).
+        torus_.px = grid_period(box_.x0, box_.x1);
+        torus_.py = grid_period(box_.y0, box_.y1);
+        torus_.x0 = box_.x0;
+        torus_.y0 = box_.y0;
+        if (torus_.px > 0.0 && torus_.py > 0.0) {
+            box_.x1 = box_.x0 + torus_.px;
+            box_.y1 = box_.y0 + torus_.py;
+        } else {
+            torus_ = Torus{};  // degenerate: precision_limit() refuses it
+        }
+    }
+    set_radius(user_radius_);
+}
+
+void Frame::set_periodic(bool periodic) {
+    periodic_ = periodic;
+    set_domain(user_domain_);
+}
+
+void Frame::set_radius(double user_radius) {
+    user_radius_ = user_radius;
+    r_ = internal_radius(user_radius);
+}
+
+bool Frame::periods_beyond(double ratio) const {
+    const double w = user_domain_.x1 - user_domain_.x0, h = user_domain_.y1 - user_domain_.y0;
+    return periodic_ && std::max(w, h) > ratio * std::min(w, h);
+}
+
+double Frame::internal_radius(double user_radius) const {
+    return effective_radius(box_, std::ldexp(user_radius, scale_exp_));
+}
+
+Limit Frame::precision_limit() const {
+    const double m = max_magnitude(user_domain_);
+    if (m < kMinMagnitude) return Limit::coordinates_too_small;
+    // Scaling is exact only while no coordinate underflows: a nonzero one far
+    // below the largest would lose its bits (and exact products need room
+    // below every value).
+    const double coords[4] = {user_domain_.x0, user_domain_.y0, user_domain_.x1, user_domain_.y1};
+    for (double c : coords)
+        if (c != 0.0 && std::fabs(c) < m * kMinMagnitude) return Limit::coordinates_too_small;
+    if (!(std::ldexp(user_radius_, scale_exp_) >= kMinInternalRadius)) return Limit::radius_below_precision;
+    if (periodic_) {
+        if (!torus_.on()) return Limit::radius_below_precision;
+        // Against the user's periods: their rounding onto the grid (below
+        // 2^-50) must not refuse R = period / 2.
+        const Box user = scaled(user_domain_, scale_exp_);
+        const double shorter = std::min(user.x1 - user.x0, user.y1 - user.y0);
+        const double longer = std::max(user.x1 - user.x0, user.y1 - user.y0);
+        if (longer > kMaxPeriodRatio * shorter) return Limit::periods_too_unequal;
+        if (2.0 * r_ > shorter) return Limit::radius_exceeds_period;
+    }
+    return Limit::ok;
+}
+
+double Frame::count_bound() const {
+    // Oler (1961): points at mutual distance >= R in a convex region of area A
+    // and perimeter P number at most 2A/(sqrt(3) R^2) + P/(2R) + 1.
+    const double w = box_.width() / r_, h = box_.height() / r_;
+    return 2.0 / std::sqrt(3.0) * w * h + (w + h) + 1.0;
+}
+
+namespace {
+constexpr double kSaturationCoverage = 0.547;  // pi R^2 N / (4 A) of a maximal RSA pattern
+constexpr double kEdgeExcess = 0.23;           // extra points per R of a rectangle's perimeter
+}  // namespace
+
+double Frame::expected_count(double user_radius) const {
+    const double r = std::ldexp(user_radius, scale_exp_);
+    const double a = box_.width() * box_.height(), perimeter = 2.0 * (box_.width() + box_.height());
+    const double bulk = kSaturationCoverage * 4.0 * a / (M_PI * r * r);
+    return periodic_ ? bulk : bulk + kEdgeExcess * perimeter / r;
+}
+
+double Frame::max_radius() const {
+    if (!periodic_) return HUGE_VAL;
+    const double w = user_domain_.x1 - user_domain_.x0, h = user_domain_.y1 - user_domain_.y0;
+    return 0.5 * std::min(w, h);
+}
+
+double Frame::radius_for_count(double n) const {
+    // n = a / r^2 + b / r, solved for r > 0.
+    const double area = box_.width() * box_.height(), perimeter = 2.0 * (box_.width() + box_.height());
+    const double a = kSaturationCoverage * 4.0 * area / M_PI;
+    const double b = periodic_ ? 0.0 : kEdgeExcess * perimeter;
+    const double r = (b + std::sqrt(b * b + 4.0 * a * n)) / (2.0 * n);
+    return std::ldexp(r, -scale_exp_);
+}
+
+double Frame::lowest_count_radius(double n) const {
+    constexpr double kBelowEveryStep = 0.98;
+    const double area = box_.width() * box_.height();
+    return std::ldexp(kBelowEveryStep * std::sqrt(area / (M_PI * n)), -scale_exp_);
+}
+
+std::size_t Frame::count_bound_points() const {
+    const double bound = count_bound();
+    const double cap = static_cast<double>(max_points()) + 1.0;
+    return static_cast<std::size_t>(bound < cap ? bound : cap);
+}
+
+std::size_t Frame::max_points() {
+    const std::size_t by_edges = kMaxEdgeRecords / 3 - Delaunay::kGhosts;
+    const std::size_t by_memory = static_cast<std::size_t>(-1) / 2 / kBytesPerPointBudget;
+    return std::min(by_edges, by_memory);
+}
+
+Point Frame::to_user(const Point& p) const {
+    return Point{std::ldexp(p.x, -scale_exp_), std::ldexp(p.y, -scale_exp_)};
+}
+
+double Frame::area_to_user(double a) const { return std::ldexp(a, -2 * scale_exp_); }
+
+}  // namespace pds

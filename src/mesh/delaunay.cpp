@@ -1,0 +1,288 @@
+// delaunay.cpp - Guibas-Stolfi insertion with exact predicates (see delaunay.hpp).
+#include "mesh/delaunay.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/batch.hpp"
+#include "core/huge_pages.hpp"
+#include "core/predicates.hpp"
+
+namespace pds {
+
+Delaunay::Delaunay(const Box& domain, bool weighted, double ghost_radius) : weighted_(weighted) {
+    const double cx = 0.5 * (domain.x0 + domain.x1);
+    const double cy = 0.5 * (domain.y0 + domain.y1);
+    // sqrt, not hypot: libm's hypot may differ in the last bit between
+    // versions, and the ghosts' coordinates reach the points a seed gives.
+    const double w = domain.width(), h = domain.height();
+    const double half = 3.0 * std::sqrt(w * w + h * h);
+    reserve(kGhosts + 1);
+    points_ = {{cx - half, cy - half}, {cx + half, cy - half}, {cx + half, cy + half},
+               {cx - half, cy + half}};
+    // The square's boundary, counterclockwise, then one diagonal.
+    EdgeRef side[kGhosts];
+    for (std::uint32_t i = 0; i < kGhosts; ++i) side[i] = mesh_.make_edge(i, (i + 1) % kGhosts);
+    for (std::uint32_t i = 0; i < kGhosts; ++i)
+        mesh_.splice(QuadEdgeMesh::sym(side[i]), side[(i + 1) % kGhosts]);
+    mesh_.connect(side[1], side[0]);  // 2 -> 0
+    vertex_edge_.assign(side, side + kGhosts);
+    if (weighted_) {
+        radii_.assign(kGhosts, ghost_radius);
+        hidden_by_.assign(kGhosts, kNoVertex);
+    }
+}
+
+void Delaunay::reserve(std::size_t vertices) {
+    // An insertion adds three edges (four and deletes one when the point lands
+    // on an edge), so 3 records per vertex always suffice.
+    mesh_.reserve(3 * vertices);
+    points_.reserve(vertices);
+    vertex_edge_.reserve(vertices);
+    if (weighted_) {
+        radii_.reserve(vertices);
+        hidden_by_.reserve(vertices);
+        advise_huge_pages(radii_);
+    }
+    advise_huge_pages(points_);
+    advise_huge_pages(vertex_edge_);
+}
+
+bool Delaunay::has_room_for_one() const {
+    return points_.size() < points_.capacity() && vertex_edge_.size() < vertex_edge_.capacity() &&
+           mesh_.spare_records() >= 3 &&
+           (!weighted_ || (radii_.size() < radii_.capacity() && hidden_by_.size() < hidden_by_.capacity()));
+}
+
+EdgeRef Delaunay::locate(const Point& p, EdgeRef e) const {
+    // The walk visits each triangle at most once on a Delaunay mesh; the bound
+    // only turns a broken invariant into an error instead of a hang.
+    const std::size_t limit = 4 * mesh_.live_count() + 16;
+    for (std::size_t step = 0; step < limit; ++step) {
+        const Point& o = points_[mesh_.org(e)];
+        const Point& d = points_[mesh_.dest(e)];
+        if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y)) return e;
+        if (right_of(p, e)) {
+            e = QuadEdgeMesh::sym(e);
+        } else if (!right_of(p, mesh_.onext(e))) {
+            e = mesh_.onext(e);
+        } else if (!right_of(p, mesh_.dprev(e))) {
+            e = mesh_.dprev(e);
+        } else {
+            return e;
+        }
+    }
+    throw std::logic_error("point location did not terminate");
+}
+
+void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) const {
+    constexpr int kMaxSteps = 12;  // typical rings have about 6 edges
+    EdgeRef edge[kMaxBatch], first[kMaxBatch];
+    if (n > kMaxBatch) n = kMaxBatch;
+    for (std::size_t k = 0; k < n; ++k) {
+        __builtin_prefetch(&vertex_edge_[vertices[k]]);
+        __builtin_prefetch(&points_[vertices[k]]);
+        if (weighted_) __builtin_prefetch(&radii_[vertices[k]]);
+    }
+    for (std::size_t k = 0; k < n; ++k) edge[k] = first[k] = vertex_edge_[vertices[k]];
+    // One step of every ring per round: the loads of a round are independent.
+    for (int step = 0; step < kMaxSteps; ++step) {
+        bool any = false;
+        for (std::size_t k = 0; k < n; ++k) {
+            if (edge[k] == kNoEdge) continue;
+            __builtin_prefetch(&points_[mesh_.dest(edge[k])]);
+            if (weighted_) __builtin_prefetch(&radii_[mesh_.dest(edge[k])]);
+            const EdgeRef next = mesh_.onext(edge[k]);
+            __builtin_prefetch(mesh_.record_address(next));
+            edge[k] = next == first[k] ? kNoEdge : next;
+            any = true;
+        }
+        if (!any) break;
+    }
+}
+
+void Delaunay::prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t n) const {
+    constexpr std::size_t kMax = 16 * kMaxBatch;  // rings have about 6 edges: ample
+    EdgeRef edge[kMax];
+    std::size_t m = 0;
+    // Round 1: each ring edge c -> a; its left triangle's third side a -> b
+    // (the link edge) is read from the ring edge's own record.
+    for (std::size_t k = 0; k < n && m < kMax; ++k) {
+        const EdgeRef first = vertex_edge_[vertices[k]];
+        EdgeRef e = first;
+        do {
+            const EdgeRef link = mesh_.lnext(e);
+            __builtin_prefetch(mesh_.record_address(link));
+            edge[m++] = link;
+            e = mesh_.onext(e);
+        } while (e != first && m < kMax);
+    }
+    // Round 2: behind each link edge, the edge to the far corner of the
+    // triangle on its other side (what the flip test reads).
+    for (std::size_t i = 0; i < m; ++i) {
+        edge[i] = mesh_.oprev(edge[i]);
+        __builtin_prefetch(mesh_.record_address(edge[i]));
+    }
+    // Round 3: the far corners themselves (and their radii).
+    for (std::size_t i = 0; i < m; ++i) {
+        __builtin_prefetch(&points_[mesh_.dest(edge[i])]);
+        if (weighted_) __builtin_prefetch(&radii_[mesh_.dest(edge[i])]);
+    }
+}
+
+void Delaunay::swap_edge(EdgeRef e) {
+    // The endpoints lose e: point their entry edges at edges they keep. Written
+    // unconditionally: a store does not wait for the cache, a test would.
+    const EdgeRef a = mesh_.oprev(e), b = mesh_.oprev(QuadEdgeMesh::sym(e));
+    vertex_edge_[mesh_.org(e)] = a;
+    vertex_edge_[mesh_.dest(e)] = b;
+    mesh_.swap(e);
+}
+
+void Delaunay::delete_edge(EdgeRef e) {
+    const std::uint32_t o = mesh_.org(e), d = mesh_.dest(e);
+    if (vertex_edge_[o] == e) vertex_edge_[o] = mesh_.onext(e);
+    if (vertex_edge_[d] == QuadEdgeMesh::sym(e)) vertex_edge_[d] = mesh_.onext(QuadEdgeMesh::sym(e));
+    mesh_.delete_edge(e);
+}
+
+std::uint32_t Delaunay::insert(const Point& p, std::uint32_t near) {
+    if (weighted_) throw std::logic_error("Delaunay::insert without a radius on a weighted mesh");
+    if (!has_room_for_one()) throw std::logic_error("Delaunay::insert without reserved room");
+    EdgeRef e = locate(p, vertex_edge_[near]);
+    const Point& o = points_[mesh_.org(e)];
+    const Point& d = points_[mesh_.dest(e)];
+    if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y))
+        throw std::logic_error("Delaunay::insert of a duplicate point");
+    const bool on_edge = orient2d(o, d, p) == 0;
+    const std::uint32_t v = static_cast<std::uint32_t>(points_.size());
+    points_.push_back(p);
+    vertex_edge_.push_back(kNoEdge);
+    const EdgeRef start = connect_spokes(e, v, on_edge, &e);
+
+    // Restore the Delaunay property: examine the edges opposite p, flip those
+    // whose far corner lies inside the circle through p and the edge.
+    for (;;) {
+        const EdgeRef t = mesh_.oprev(e);
+        const Point& far = points_[mesh_.dest(t)];
+        if (right_of(far, e) &&
+            incircle(points_[mesh_.org(e)], far, points_[mesh_.dest(e)], p) > 0) {
+            swap_edge(e);
+            e = mesh_.oprev(e);
+        } else if (mesh_.onext(e) == start) {
+            break;
+        } else {
+            e = mesh_.lprev(mesh_.onext(e));
+        }
+    }
+    return v;
+}
+
+EdgeRef Delaunay::connect_spokes(EdgeRef e, VertexIndex v, bool on_edge, EdgeRef* link) {
+    if (on_edge) {
+        // p lies on e (strictly inside it, since it is in the closed triangle
+        // and not a corner): remove e and fill the quadrilateral instead.
+        const EdgeRef t = mesh_.oprev(e);
+        delete_edge(e);
+        e = t;
+    }
+    // Connect p to every corner of the (triangle or quadrilateral) face.
+    EdgeRef base = mesh_.make_edge(mesh_.org(e), v);
+    mesh_.splice(base, e);
+    const EdgeRef start = base;
+    do {
+        base = mesh_.connect(e, QuadEdgeMesh::sym(base));
+        e = mesh_.oprev(base);
+    } while (mesh_.lnext(e) != start);
+    vertex_edge_[v] = QuadEdgeMesh::sym(start);
+    *link = e;  // a link edge (opposite v, v on its left)
+    return start;
+}
+
+std::size_t Delaunay::degree(VertexIndex v) const {
+    std::size_t n = 0;
+    for_each_neighbour(v, [&](VertexIndex) { ++n; });
+    return n;
+}
+
+void Delaunay::hide_vertex(VertexIndex a, VertexIndex v) {
+    // Deleting a's three edges merges its triangles into one.
+    while (vertex_edge_[a] != kNoEdge) {
+        const EdgeRef e = vertex_edge_[a];
+        const EdgeRef next = mesh_.onext(e);
+        delete_edge(e);
+        vertex_edge_[a] = next == e ? kNoEdge : next;
+    }
+    hidden_by_[a] = v;
+    ++hidden_count_;
+}
+
+std::uint32_t Delaunay::insert(const Point& p, double r, std::uint32_t near) {
+    if (!weighted_) throw std::logic_error("Delaunay::insert with a radius on an unweighted mesh");
+    if (!has_room_for_one()) throw std::logic_error("Delaunay::insert without reserved room");
+    EdgeRef e = locate(p, vertex_edge_[visible(near)]);
+    const VertexIndex a0 = mesh_.org(e), b0 = mesh_.dest(e), c0 = mesh_.dest(mesh_.lnext(e));
+    const Point& o = points_[a0];
+    const Point& d = points_[b0];
+    if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y))
+        throw std::logic_error("Delaunay::insert of a duplicate point");
+    const VertexIndex v = static_cast<VertexIndex>(points_.size());
+    points_.push_back(p);
+    vertex_edge_.push_back(kNoEdge);
+    radii_.push_back(r);
+    hidden_by_.push_back(kNoVertex);
+    // Hidden at once: the lifted p on or above the plane of the triangle
+    // holding it (on an edge, both triangles' planes agree there).
+    if (power_test(o, radii_[a0], d, radii_[b0], points_[c0], radii_[c0], p, r) <= 0) {
+        hidden_by_[v] = a0;
+        ++hidden_count_;
+        return v;
+    }
+    const bool on_edge = orient2d(o, d, p) == 0;
+    std::size_t degree_v = on_edge ? 4 : 3;
+    connect_spokes(e, v, on_edge, &e);
+
+    // Edelsbrunner-Shah flips, around v clockwise (e: a link edge a -> b
+    // with v on its left, far corner f across it). Every link edge must end
+    // regular; while one is not, one of them can be flipped (their Lemma),
+    // so the walk goes on until a whole turn finds every link edge regular.
+    const std::size_t limit = 64 * (mesh_.live_count() + 16);
+    std::size_t quiet = 0;
+    for (std::size_t step = 0; quiet < degree_v; ++step) {
+        if (step > limit) throw std::logic_error("regular insertion did not terminate");
+        const EdgeRef t = mesh_.oprev(e);  // a -> f
+        const VertexIndex a = mesh_.org(e), b = mesh_.dest(e), f = mesh_.dest(t);
+        const Point& pf = points_[f];
+        if (!right_of(pf, e) ||
+            power_test(points_[a], radii_[a], pf, radii_[f], points_[b], radii_[b], p, r) <= 0) {
+            ++quiet;
+            e = mesh_.lprev(mesh_.onext(e));
+            continue;
+        }
+        quiet = 0;
+        const int side_a = orient2d(p, pf, points_[a]), side_b = orient2d(p, pf, points_[b]);
+        if (side_a < 0 && side_b > 0) {
+            // Convex: the 2-2 flip; look at the first of the two new link edges.
+            swap_edge(e);
+            e = mesh_.oprev(e);
+            ++degree_v;
+        } else if (side_a > 0 && !is_ghost(a) && degree(a) == 3) {
+            // a is inside triangle (v, f, b) and only joins them: 3-1.
+            const EdgeRef fb = mesh_.lnext(t);
+            hide_vertex(a, v);
+            e = fb;
+            --degree_v;
+        } else if (side_b < 0 && !is_ghost(b) && degree(b) == 3) {
+            // b is inside triangle (v, a, f): 3-1, leaving link edge a -> f.
+            hide_vertex(b, v);
+            e = t;
+            --degree_v;
+        } else {
+            // Not flippable now; another link edge is (the Lemma).
+            e = mesh_.lprev(mesh_.onext(e));
+        }
+    }
+    return v;
+}
+
+}  // namespace pds

@@ -1,0 +1,290 @@
+// sampler.cpp - frame, stages and hand-over (see sampler.hpp).
+#include "sampler/sampler.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace pds {
+
+Sampler::Sampler(double radius, std::uint64_t seed)
+    : frame_(Box{0.0, 0.0, 1.0, 1.0}, radius), seed_(seed), rng_(seed) {}
+
+bool Sampler::use_darts() const {
+    if (skip_darts_ || smallest_frame().count_bound() > static_cast<double>(Frame::max_points())) return false;
+    if (!varying_field()) return true;
+    // A varying field: a grid per layer of radii (field_dart_stage.hpp), in
+    // the plane, while the layers stay few. On the torus the loop runs alone:
+    // the copies of a point would go into every layer's padding, and the
+    // torus's mesh widens its margin as the points come (jones_stage.hpp).
+    return !frame_.torus().on() && field_->rmax() <= FieldDartStage::kMaxRatio * field_->rmin();
+}
+
+double Sampler::expected_count() const {
+    // A field's: as for the radius whose 1/R^2 is the mean of 1/r^2 over the domain.
+    if (!varying_field()) return frame_.expected_count(frame_.user_radius());
+    // The field's mean of 1/r^2 is measured once per field and domain.
+    if (!mean_inverse_square_) mean_inverse_square_ = field_->mean_inverse_square(frame_.user_domain());
+    return frame_.expected_count(frame_.user_radius() / field_->rmax() / std::sqrt(*mean_inverse_square_));
+}
+
+Frame Sampler::smallest_frame() const {
+    if (!field_) return frame_;
+    Frame f = frame_;
+    f.set_radius(scaled_radius(field_->rmin(), field_->rmax(), frame_.user_radius()));
+    return f;
+}
+
+void Sampler::set_field(const RadiusField& field) {
+    if (count() != 0) throw std::logic_error("set_field after the first point");
+    if (count_target_ != 0) throw std::logic_error("set_field in count mode");
+    forget_stages();
+    field_ = field;
+    mean_inverse_square_.reset();
+    frame_.set_radius(field.rmax());
+}
+
+void Sampler::forget_stages() {
+    // Without points the stages hold nothing but the old frame, and a first
+    // point drawn but refused by a radius field: the generator goes back to
+    // the seed, so the points are a fresh sampler's with these settings.
+    darts_.reset();
+    jones_.reset();
+    rng_ = Rng(seed_);
+}
+
+void Sampler::set_domain(const Box& domain) {
+    if (count() != 0) throw std::logic_error("set_domain after the first point");
+    forget_stages();
+    frame_.set_domain(domain);
+    mean_inverse_square_.reset();
+    if (count_target_ != 0) set_count(count_target_);
+}
+
+void Sampler::set_periodic(bool periodic) {
+    if (count() != 0) throw std::logic_error("set_periodic after the first point");
+    forget_stages();
+    frame_.set_periodic(periodic);
+    if (count_target_ != 0) set_count(count_target_);
+}
+
+void Sampler::set_count(std::size_t n) {
+    if (count() != 0) throw std::logic_error("set_count after the first point");
+    forget_stages();
+    count_target_ = n;
+    // Above the expected radius, so the first maximal pattern holds fewer
+    // than n points and the steps approach n from below (sampler.hpp): a
+    // for large n (1.5%), more for small n, whose counts vary more (10/n: dozens of
+    // cheap steps for a few points). Not more: each step leaves a pattern a
+    // little less dense than one made at the final radius, so many steps
+    // would end at a smaller radius. On the torus, at most half the shorter
+    // period.
+    if (n == 0) return;
+    const double above = 1.015 + 10.0 / static_cast<double>(n);
+    frame_.set_radius(std::min(above * frame_.radius_for_count(static_cast<double>(n)), frame_.max_radius()));
+}
+
+void Sampler::skip_dart_stage() {
+    if (count() != 0) throw std::logic_error("skip_dart_stage after the first point");
+    forget_stages();
+    skip_darts_ = true;
+}
+
+void Sampler::prepare(std::size_t points) {
+    if (points > Frame::max_points()) throw LimitError(Limit::too_many_points, frame_.user_radius());
+    if (!started()) {
+        // A field: precision at the smallest radius, the torus's period at
+        // the largest.
+        const Frame low = smallest_frame();
+        const Limit limit = low.precision_limit();
+        if (limit != Limit::ok) throw LimitError(limit, low.user_radius());
+        const Limit high = frame_.precision_limit();
+        if (high != Limit::ok) throw LimitError(high, frame_.user_radius());
+        if (varying_field() && frame_.periods_beyond(Frame::kMaxFieldPeriodRatio))
+            throw LimitError(Limit::field_periods_too_unequal, frame_.user_radius());
+        // Count mode lowers the radius as it goes: the lowest it can reach is
+        // judged now, so a run never meets the limit half way.
+        if (count_target_ != 0) {
+            Frame lowest = frame_;
+            lowest.set_radius(std::min(frame_.user_radius(),
+                                       frame_.lowest_count_radius(static_cast<double>(count_target_))));
+            const Limit at_lowest = lowest.precision_limit();
+            if (at_lowest != Limit::ok) throw LimitError(at_lowest, lowest.user_radius());
+        }
+        // Built aside, kept only when both exist: std::bad_alloc changes nothing.
+        const std::optional<PointRadii> radii = point_radii(frame_);
+        auto jones = std::make_unique<JonesStage>(frame_.box(), frame_.r(), frame_.torus(), radii ? &*radii : nullptr);
+        std::unique_ptr<OpeningStage> darts;
+        if (use_darts()) {
+            if (radii)
+                darts = std::make_unique<FieldDartStage>(frame_.box(), *radii);
+            else
+                darts = std::make_unique<DartStage>(frame_.box(), frame_.r(), frame_.torus());
+        }
+        jones_ = std::move(jones);
+        darts_ = std::move(darts);
+    }
+    // One growth policy for every call: at least double what is there, up
+    // to what the pattern can hold, so small calls cost O(1) amortized. The
+    // Jones stage gets room for the dart stage's points too (the hand-over
+    // may come with any point), and each reserve is all or nothing.
+    const bool room = jones_->has_room_for(points) && (!darts_ || darts_->has_room_for(points));
+    if (room) return;
+    const std::size_t cap = std::min(smallest_frame().count_bound_points(), Frame::max_points());
+    constexpr std::size_t kFirstRoom = 64;  // points reserved at the first growth, at least
+    const std::size_t want = std::max(points, std::min(2 * count() + kFirstRoom, cap));
+    jones_->reserve(want);
+    if (darts_) darts_->reserve(want);
+}
+
+const Point* Sampler::next_point() {
+    if (darts_) {
+        if (const Point* p = darts_->next(rng_)) return p;
+        hand_over();
+    }
+    return jones_->next(rng_);
+}
+
+bool Sampler::add_one() {
+    for (;;) {
+        if (complete()) return false;
+        if (next_point() != nullptr) break;
+        if (count_target_ == 0) return false;
+        lower_radius_for_count();
+    }
+    stage().add_next();
+    return true;
+}
+
+void Sampler::lower_radius_for_count() {
+    // Maximal with m < n points: the count goes as 1/R^2, so R sqrt(m/n)
+    // would hold about n; steps are kept between 0.1% and 1%, so the last
+    // radius ends close below the one that reaches n, and the pattern stays
+    // maximal at pds_radius()/0.99 (pds_set_count).
+    constexpr double kLargestStep = 0.99, kSmallestStep = 0.999;
+    const double guess = std::sqrt(static_cast<double>(count()) / static_cast<double>(count_target_));
+    const double step = std::min(kSmallestStep, std::max(kLargestStep, guess));
+    refine(step * frame_.user_radius());
+}
+
+void Sampler::hand_over() {
+    // Room for the points and the order was reserved with the dart stage's:
+    // nothing here allocates.
+    darts_->hand_over_to(*jones_);
+    darts_.reset();
+}
+
+bool Sampler::step() {
+    if (complete()) return false;
+    prepare(count() + 1);
+    return add_one();
+}
+
+Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
+    *added = 0;
+    const std::size_t n = count();
+    // Room to end maximal (Oler's bound; never below n, whatever its
+    // rounding), or the count asked for, or for max_new more if fewer.
+    // prepare() refuses a total past the index space, so an unbounded run
+    // whose maximal pattern might not fit fails before any point.
+    // A varying field: Oler's bound at the smallest radius may exceed the
+    // pattern by any factor (one small pixel in a map). It is judged at the
+    // first point, as a constant radius is; afterwards the pattern itself
+    // says whether it is complete. Memory is not reserved for that bound but
+    // grows with the run (geometrically, O(1) amortized), and a pattern that
+    // truly outgrows the index space stops there (PDS_ERANGE, points kept).
+    const bool grows = varying_field();
+    const std::size_t bound = smallest_frame().count_bound_points();
+    if (grows) {
+        const std::size_t asked = max_new == 0 ? (n == 0 ? bound : 0) : std::min(n + max_new, std::max(bound, n));
+        if (asked > Frame::max_points()) throw LimitError(Limit::too_many_points, smallest_frame().user_radius());
+        prepare(n + 1);
+    } else {
+        const std::size_t whole = count_target_ != 0 ? std::max(count_target_, n) : std::max(bound, n) + 1;
+        prepare(max_new != 0 && max_new < whole - n ? n + max_new : whole);
+    }
+    // The estimate is needed only for reports (a field's asks the field).
+    const double expected =
+        progress_.fn == nullptr ? 1.0 : count_target_ != 0 ? static_cast<double>(count_target_) : expected_count();
+    ProgressMeter meter(progress_, expected, count_target_ != 0);
+    while (max_new == 0 || *added < max_new) {
+        if (grows) prepare(count() + 1);  // nothing to do while there is room
+        if (!add_one()) {
+            // The final report; a stop asked for here changes nothing.
+            meter.finish(count());
+            return RunEnd::complete;
+        }
+        ++*added;
+        if (meter.tick(count())) return RunEnd::canceled;
+    }
+    // The limit was reached: there is room if a next point exists. Drawing
+    // it now is the work the next call would start with (stage.hpp).
+    if (complete() || (count_target_ == 0 && next_point() == nullptr)) {
+        meter.finish(count());
+        return RunEnd::complete;
+    }
+    return RunEnd::limit;
+}
+
+void Sampler::refine(double radius) {
+    Frame next = frame_;
+    next.set_radius(radius);
+    if (count() == 0) {
+        forget_stages();
+        frame_ = next;
+        return;
+    }
+    Frame next_smallest = next;
+    if (field_) next_smallest.set_radius(scaled_radius(field_->rmin(), field_->rmax(), radius));
+    const Limit limit = next_smallest.precision_limit();
+    if (limit != Limit::ok) throw LimitError(limit, next_smallest.user_radius());
+    const Limit high = next.precision_limit();
+    if (high != Limit::ok) throw LimitError(high, radius);
+    // The generator's state at a refine must not depend on whether the caller
+    // already asked for room (sampler.hpp): draw the next point, then drop it.
+    next_point();
+    // The dart stage's grid is laid out for the old radius.
+    if (darts_) hand_over();
+    const std::optional<PointRadii> radii = point_radii(next);
+    jones_->set_radius(next.r(), radii ? &*radii : nullptr);
+    frame_ = next;
+}
+
+std::size_t Sampler::copy_points(std::size_t first, std::size_t n, double* xy) const {
+    const std::size_t have = count();
+    if (first >= have) return 0;
+    n = std::min(n, have - first);
+    const Stage& s = stage();
+    for (std::size_t i = 0; i < n; ++i) {
+        const Point p = frame_.to_user(s.point(first + i));
+        xy[2 * i] = p.x;
+        xy[2 * i + 1] = p.y;
+    }
+    return n;
+}
+
+std::size_t Sampler::copy_radii(std::size_t first, std::size_t n, double* r) const {
+    const std::size_t have = count();
+    if (first >= have) return 0;
+    n = std::min(n, have - first);
+    const std::optional<PointRadii> radii = point_radii(frame_);
+    for (std::size_t i = 0; i < n; ++i)
+        r[i] = radii ? radii->user_radius_of(stage().value(first + i)) : frame_.user_radius();
+    return n;
+}
+
+double Sampler::free_area() const {
+    if (count() == 0) return frame_.user_domain().width() * frame_.user_domain().height();
+    return frame_.area_to_user(stage().free_area());
+}
+
+VerifyReport Sampler::verify() const {
+    if (count() == 0) {
+        VerifyReport rep;
+        rep.failure = "no points yet";
+        return rep;
+    }
+    return stage().verify();
+}
+
+}  // namespace pds

@@ -1,0 +1,145 @@
+// sampler.hpp - one pattern: the frame, the generator, the two stages of a
+// run and the hand-over between them. Knows nothing of C types; the C shim
+// (capi.cpp) validates arguments and maps exceptions to error codes.
+//
+// Stages (stage.hpp): a run opens with dart throwing (dart_stage.hpp), which
+// adds points with the Jones loop's law while most of the domain is free,
+// and hands its points to the Jones stage (jones_stage.hpp) once darts
+// mostly miss. The hand-over happens once, here (hand_over). The dart stage
+// is skipped when a maximal pattern could not fit the index type: its grid
+// would be too large to be worth it, and only bounded runs are possible.
+//
+// Determinism: the generator's state depends only on the operations done,
+// never on how a caller split them into calls. A stage draws its next point
+// once and keeps it until it is added (Stage::next), so a bounded run that
+// asks "is there room left?" does the work the next call starts with. A
+// refine first draws the next point at the old radius (or finds the pattern
+// maximal), then drops it: whether or not the caller had already asked, the
+// generator is in the same state when the radius changes.
+//
+// Limits (frame.hpp) are judged when the radius and domain are first used
+// together: at the first point, and at a refine once points exist. Memory
+// for the points a call may add is reserved before its first point, growing
+// geometrically, so calls of any size cost O(1) amortized per point.
+//
+// Errors: LimitError (before any change); std::bad_alloc before the first
+// point of a call, or, from the exact coverage test, with the pattern
+// exactly as an undisturbed run would have it after the points already
+// added (jones_stage.hpp); std::logic_error for a broken invariant (a bug).
+#ifndef PDS_SAMPLER_HPP
+#define PDS_SAMPLER_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "darts/dart_stage.hpp"
+#include "darts/field_dart_stage.hpp"
+#include "domain/frame.hpp"
+#include "jones/jones_stage.hpp"
+#include "core/point.hpp"
+#include "radius/point_radii.hpp"
+#include "sampler/progress.hpp"
+#include "radius/radius_field.hpp"
+#include "core/rng.hpp"
+#include "verify/verify.hpp"
+
+namespace pds {
+
+class Sampler {
+public:
+    // The unit square; requires a finite radius > 0.
+    Sampler(double radius, std::uint64_t seed);
+
+    // Each requires count() == 0.
+    void set_domain(const Box& domain);
+    void set_periodic(bool periodic);
+    // Count mode: the radius is chosen, and lowered by 1% whenever the
+    // pattern is maximal with fewer than n points (0 turns it off).
+    void set_count(std::size_t n);
+    std::size_t count_target() const { return count_target_; }
+    void set_progress(const ProgressHook& hook) { progress_ = hook; }
+    // A variable radius (radius_field.hpp): the radius in force becomes the
+    // field's largest; requires count() == 0 and no count.
+    void set_field(const RadiusField& field);
+    bool has_field() const { return field_.has_value(); }
+    const RadiusField* field() const { return field_ ? &*field_ : nullptr; }
+
+    // Adds one point (true), or finds the pattern complete (false): maximal,
+    // or holding the count asked for.
+    bool step();
+    enum class RunEnd { complete, limit, canceled };
+    // Adds up to max_new points (0: no limit); *added counts them. Ends
+    // complete (maximal, or the count reached; decided exactly), at the limit
+    // with room left, or canceled by the progress function.
+    RunEnd run(std::size_t max_new, std::size_t* added);
+    // The same, returning how many were added; *maximal: ended complete.
+    std::size_t run(std::size_t max_new, bool* maximal) {
+        std::size_t added = 0;
+        *maximal = run(max_new, &added) == RunEnd::complete;
+        return added;
+    }
+    // Continues with a smaller radius; requires 0 < radius <= radius().
+    void refine(double radius);
+
+    std::size_t count() const { return started() ? stage().count() : 0; }
+    std::size_t copy_points(std::size_t first, std::size_t n, double* xy) const;
+    // Each point's radius in force (user units): R for all without a field.
+    std::size_t copy_radii(std::size_t first, std::size_t n, double* r) const;
+    double radius() const { return frame_.user_radius(); }
+    const Box& domain() const { return frame_.user_domain(); }
+    // Exact free area: O(cells not yet known covered), 0 at once when maximal.
+    double free_area() const;
+    VerifyReport verify() const;
+
+    // Internals, for the unit tests.
+    // Runs the Jones loop from the first point; requires count() == 0.
+    void skip_dart_stage();
+    bool in_dart_stage() const { return darts_ != nullptr || (!started() && use_darts()); }
+    const Frame& frame() const { return frame_; }
+    // The Jones stage; requires a point to have been added.
+    const JonesStage& jones() const { return *jones_; }
+
+private:
+    bool started() const { return jones_ != nullptr; }
+    // The expected size of a maximal pattern (for progress reports).
+    double expected_count() const;
+    // The frame at the smallest radius in force: what the limits and the
+    // bounds on the count are judged with.
+    Frame smallest_frame() const;
+    // A field whose values differ; a constant one runs the plain stages at
+    // its radius (the same points, at the same speed).
+    bool varying_field() const { return field_ && !field_->constant(); }
+    // What the stages see of a varying field.
+    std::optional<PointRadii> point_radii(const Frame& frame) const {
+        return varying_field() ? std::optional<PointRadii>(PointRadii(*field_, frame)) : std::nullopt;
+    }
+    bool use_darts() const;
+    Stage& stage() { return darts_ ? static_cast<Stage&>(*darts_) : *jones_; }
+    const Stage& stage() const { return darts_ ? static_cast<const Stage&>(*darts_) : *jones_; }
+    // Judges the limits for a call that may bring the total to `points`,
+    // makes the stages at the first point, and reserves room.
+    void prepare(std::size_t points);
+    void forget_stages();
+    const Point* next_point();
+    bool add_one();
+    bool complete() const { return count_target_ != 0 && count() >= count_target_; }
+    void hand_over();
+    void lower_radius_for_count();
+
+    Frame frame_;
+    std::uint64_t seed_;
+    Rng rng_;  // at seed_'s state while count() == 0
+    bool skip_darts_ = false;
+    std::size_t count_target_ = 0;
+    ProgressHook progress_;
+    std::optional<RadiusField> field_;
+    mutable std::optional<double> mean_inverse_square_;  // of the field over the domain, once asked
+    std::unique_ptr<OpeningStage> darts_;  // while a dart stage runs
+    std::unique_ptr<JonesStage> jones_;  // from the first point on
+};
+
+}  // namespace pds
+
+#endif
