@@ -8,7 +8,7 @@
 // (triangulating the dart points, measuring every cell, building the tree)
 // and the Jones loop. It prints each phase's time with what it counted: darts
 // thrown, and the loop's cell selections with those a stale bound rejected
-// (the lazy areas of jones_stage.hpp). The measuring part of the hand-over is
+// (the lazy areas of jones_loop.hpp). The measuring part of the hand-over is
 // timed by measuring every cell once more afterwards, the insertion is the
 // rest. Wall-clock times of one run: compare phases within a run, and runs
 // on one machine.
@@ -82,7 +82,8 @@ int main(int argc, char** argv) {
     const auto room = static_cast<std::size_t>(1.2 * n_target) + 1000;  // a maximal pattern holds about 1.0 N
     pds::Rng rng(seed);
     pds::DartStage darts(square, radius);
-    pds::JonesStage jones(square, radius);
+    const auto jones_stage = pds::make_jones_stage(square, radius);
+    pds::JonesStage& jones = *jones_stage;
     darts.reserve(room);
     jones.reserve(room);
 

@@ -183,20 +183,20 @@ Delaunay DartStage::triangulate(std::vector<std::uint32_t>& order) const {
     return mesh;
 }
 
-JonesStage DartStage::torus_stage(std::vector<std::uint32_t>& order) const {
+std::unique_ptr<JonesStage> DartStage::torus_stage(std::vector<std::uint32_t>& order) const {
     // On the torus the queries need the copies: a Jones stage of the points.
     order = curve_.fresh_order(points_);
-    JonesStage stage(box_, r_, torus_);
-    stage.reserve(points_.size());
-    stage.adopt(points_, order.data());
-    stage.settle();
+    std::unique_ptr<JonesStage> stage = make_jones_stage(box_, r_, torus_);
+    stage->reserve(points_.size());
+    stage->adopt(points_, order.data());
+    stage->settle();
     return stage;
 }
 
 double DartStage::free_area() const {
     if (torus_.on()) {
         std::vector<std::uint32_t> order;
-        return torus_stage(order).free_area();
+        return torus_stage(order)->free_area();
     }
     std::vector<std::uint32_t> order;
     const Delaunay mesh = triangulate(order);
@@ -206,7 +206,7 @@ double DartStage::free_area() const {
 VerifyReport DartStage::verify() const {
     if (torus_.on()) {
         std::vector<std::uint32_t> order;
-        return torus_stage(order).verify();  // names points in the order added
+        return torus_stage(order)->verify();  // names points in the order added
     }
     std::vector<std::uint32_t> order;
     const Delaunay mesh = triangulate(order);

@@ -131,7 +131,7 @@ private:
     // order[v - kGhosts].
     Delaunay triangulate(std::vector<std::uint32_t>& order) const;
     // The torus: the points with their copies, as the Jones stage keeps them.
-    JonesStage torus_stage(std::vector<std::uint32_t>& order) const;
+    std::unique_ptr<JonesStage> torus_stage(std::vector<std::uint32_t>& order) const;
     // The lower left corner of the cell in column col, row row (the padding's
     // columns and rows are negative or past the last): one formula, for
     // writing and reading offsets alike.

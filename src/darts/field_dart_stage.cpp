@@ -254,7 +254,7 @@ void FieldDartStage::hand_over_to(JonesStage& jones) {
 }
 
 std::unique_ptr<JonesStage> FieldDartStage::jones_of_points() const {
-    auto stage = std::make_unique<JonesStage>(box_, radii_.rmax(), Torus{}, &radii_);
+    auto stage = make_jones_stage(box_, radii_.rmax(), Torus{}, &radii_);
     stage->reserve(points_.size());
     stage->adopt(points_, curve_.fresh_order(points_).data(), &values_);
     return stage;

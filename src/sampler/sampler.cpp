@@ -16,7 +16,7 @@ bool Sampler::use_darts() const {
     // A varying field: a grid per layer of radii (field_dart_stage.hpp), in
     // the plane, while the layers stay few. On the torus the loop runs alone:
     // the copies of a point would go into every layer's padding, and the
-    // torus's mesh widens its margin as the points come (jones_stage.hpp).
+    // torus's mesh widens its margin as the points come (torus_space.hpp).
     return !frame_.torus().on() && field_->rmax() <= FieldDartStage::kMaxRatio * field_->rmin();
 }
 
@@ -113,7 +113,7 @@ void Sampler::prepare(std::size_t points) {
         }
         // Built aside, kept only when both exist: std::bad_alloc changes nothing.
         const std::optional<PointRadii> radii = point_radii(frame_);
-        auto jones = std::make_unique<JonesStage>(frame_.box(), frame_.r(), frame_.torus(), radii ? &*radii : nullptr);
+        auto jones = make_jones_stage(frame_.box(), frame_.r(), frame_.torus(), radii ? &*radii : nullptr);
         std::unique_ptr<OpeningStage> darts;
         if (use_darts()) {
             if (radii)

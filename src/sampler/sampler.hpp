@@ -25,7 +25,7 @@
 // Errors: LimitError (before any change); std::bad_alloc before the first
 // point of a call, or, from the exact coverage test, with the pattern
 // exactly as an undisturbed run would have it after the points already
-// added (jones_stage.hpp); std::logic_error for a broken invariant (a bug).
+// added (jones_loop.hpp); std::logic_error for a broken invariant (a bug).
 #ifndef PDS_SAMPLER_HPP
 #define PDS_SAMPLER_HPP
 

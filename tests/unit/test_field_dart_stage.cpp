@@ -146,7 +146,8 @@ START_TEST(field_hand_over_keeps_points_and_values) {
     std::vector<pds::Point> pts(n);
     std::vector<double> values(n);
     for (std::size_t k = 0; k < n; ++k) pts[k] = stage.point(k), values[k] = stage.value(k);
-    pds::JonesStage jones(f.frame.box(), f.frame.r(), pds::Torus{}, &f.radii);
+    const auto jones_stage = pds::make_jones_stage(f.frame.box(), f.frame.r(), pds::Torus{}, &f.radii);
+    pds::JonesStage& jones = *jones_stage;
     jones.reserve(4 * n);
     stage.hand_over_to(jones);
     ck_assert_uint_eq(jones.count(), n);

@@ -53,7 +53,7 @@ void check_case(double r, int lattice_side) {
     const Lattice lat(lattice_side);
     const int limit = 40;
     const auto fresh = [&] {
-        auto stage = std::make_unique<pds::JonesStage>(lat.box, r);
+        auto stage = pds::make_jones_stage(lat.box, r);
         stage->reserve(lat.points.size() + limit);
         stage->adopt(lat.points, lat.order.data());
         // Several cells per batch, so a failure can come after a batch has

@@ -97,19 +97,19 @@ START_TEST(failure_names_the_users_point) {
     const std::vector<pds::Point> pts = {{0.9, 0.9}, {0.1, 0.1}, {0.9, 0.1}, {0.1, 0.9},
                                          {0.5, 0.5}, {0.12, 0.1}};
     const std::uint32_t order[] = {5, 4, 3, 2, 1, 0};  // the mesh sees them reversed
-    pds::JonesStage stage(box, 0.1);
-    stage.reserve(pts.size());
-    stage.adopt(pts, order);
-    const pds::VerifyReport rep = stage.verify();
+    const auto stage = pds::make_jones_stage(box, 0.1);
+    stage->reserve(pts.size());
+    stage->adopt(pts, order);
+    const pds::VerifyReport rep = stage->verify();
     ck_assert(!rep.valid);
     // Vertex order: point 5 comes first, so its partner found later is point 1.
     ck_assert_msg(std::strstr(rep.failure.c_str(), "(point 1)") != nullptr, "%s", rep.failure.c_str());
     // Same pattern in the user's order: now point 5 is the later one.
     const std::uint32_t same[] = {0, 1, 2, 3, 4, 5};
-    pds::JonesStage plain(box, 0.1);
-    plain.reserve(pts.size());
-    plain.adopt(pts, same);
-    const pds::VerifyReport rep2 = plain.verify();
+    const auto plain = pds::make_jones_stage(box, 0.1);
+    plain->reserve(pts.size());
+    plain->adopt(pts, same);
+    const pds::VerifyReport rep2 = plain->verify();
     ck_assert_msg(std::strstr(rep2.failure.c_str(), "(point 5)") != nullptr, "%s", rep2.failure.c_str());
 }
 END_TEST

@@ -1,5 +1,6 @@
-// jones_stage.cpp - the Jones loop (see jones_stage.hpp).
-#include "jones/jones_stage.hpp"
+// jones_loop.cpp - the Jones loop (see jones_loop.hpp), compiled once for
+// each mesh and radius rule, and the factory that picks one.
+#include "jones/jones_loop.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,101 +8,72 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/predicates.hpp"
-#include "verify/verify_torus.hpp"
+#include "jones/plane_space.hpp"
+#include "jones/radius_rule.hpp"
+#include "jones/torus_space.hpp"
 
 namespace pds {
 
-JonesStage::JonesStage(const Box& box, double r, const Torus& torus, const PointRadii* radii)
-    : box_(box),
+template <class Space, class Rule>
+JonesLoop<Space, Rule>::JonesLoop(const Box& box, double r, const Torus& torus, const PointRadii* radii)
+    : rule_(radii),
+      space_(box, r, torus, Rule::kWeighted),
+      box_(box),
       r_(r),
-      dt_(torus.on() ? TorusCopies(torus, r, radii != nullptr).largest_region() : box, radii != nullptr,
-          radii ? radii->rmax() : 0.0) {
-    if (radii) radii_ = *radii;
-    if (torus.on()) {
-        copies_ = TorusCopies(torus, r, radii != nullptr);
-        is_copy_.assign(Delaunay::kGhosts, 0);
-        original_.assign(Delaunay::kGhosts, 0);
-        copy_hint_.assign(copies_.max_offsets(), 0);
-    }
+      dt_(space_.mesh_region(), Rule::kWeighted, rule_.rmax()) {
     tree_.reserve(1);
     queue_.reserve(kMaxBatch);
     since_batch_.reserve(kMaxBatch + 1);
 }
 
-std::size_t JonesStage::vertices_for(std::size_t points) const {
-    if (!copies_.on()) return points;
-    // The copies expected at the current margin, and one point's worth more.
-    const double copies = static_cast<double>(points) * copies_.copies_per_point() * 1.25;
-    return points + static_cast<std::size_t>(copies) + copies_.max_copies() + 1;
-}
-
-void JonesStage::reserve(std::size_t points) {
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::reserve(std::size_t points) {
     // Each reserve either succeeds or leaves its container as it was.
     const std::size_t vertices = vertices_for(points);
     dt_.reserve(vertices + Delaunay::kGhosts);
     tree_.reserve(vertices);
     order_.reserve(points);
-    if (radii_) values_.reserve(points);
-    if (copies_.on()) {
-        is_copy_.reserve(vertices + Delaunay::kGhosts);
-        original_.reserve(vertices + Delaunay::kGhosts);
-    }
+    rule_.reserve(points);
+    space_.reserve(vertices + Delaunay::kGhosts);
 }
 
-bool JonesStage::has_room_for(std::size_t points) const {
+template <class Space, class Rule>
+bool JonesLoop<Space, Rule>::has_room_for(std::size_t points) const {
     const std::size_t vertices = vertices_for(points);
     return dt_.has_room_for(vertices + Delaunay::kGhosts) && tree_.capacity() >= vertices &&
-           order_.capacity() >= points && (!radii_ || values_.capacity() >= points) &&
-           (!copies_.on() || (is_copy_.capacity() >= vertices + Delaunay::kGhosts &&
-                              original_.capacity() >= vertices + Delaunay::kGhosts));
+           order_.capacity() >= points && rule_.has_room_for(points) &&
+           space_.has_room_for(vertices + Delaunay::kGhosts);
 }
 
-void JonesStage::adopt(const std::vector<Point>& points, const std::uint32_t* order,
-                       const std::vector<double>* values) {
-    if (radii_.has_value() != (values != nullptr) || (values && copies_.on()))
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::adopt(const std::vector<Point>& points, const std::uint32_t* order,
+                                   const std::vector<double>* values) {
+    if (Rule::kWeighted != (values != nullptr) || (values && Space::kPeriodic))
         throw std::logic_error("hand-over without the field's values");
-    if (count() != 0 || (!copies_.on() && !has_room_for(points.size()))) throw std::logic_error("hand-over without room");
-    const std::size_t n = points.size();
-    order_.resize(n);
-    if (copies_.on()) {
-        adopt_on_torus(points, order);
-        return;
-    }
-    if (values) values_.assign(values->begin(), values->end());  // within the reserved room
-    dt_.insert_in_order(
-        points, order, n, [&](std::uint32_t k) { return radii_->radius_of(values_[k]); },
-        [&](std::uint32_t k, VertexIndex v) { order_.set(k, v); });
-    tree_.resize(n);
-    measure_all_cells();
+    if (count() != 0 || (!Space::kPeriodic && !has_room_for(points.size())))
+        throw std::logic_error("hand-over without room");
+    order_.resize(points.size());
+    space_.adopt(*this, points, order, values);
 }
 
-void JonesStage::set_radius(double r, const PointRadii* radii) {
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::set_radius(double r, const PointRadii* radii) {
     settle();
-    if (radii_) {
-        const PointRadii old = *radii_;
-        radii_ = *radii;
-        try {
-            rebuild_mesh();
-        } catch (...) {
-            radii_ = old;
-            throw;
-        }
-    }
+    rule_.rescale(*this, radii);
     drop_queue();
     has_first_ = false;
     r_ = r;
     // On the torus the new radii may need a wider margin (their conflict disks
     // are not the old ones).
-    if (!measure_all_cells() && radii_) widen_margin();
+    if (!measure_all_cells() && Rule::kWeighted) space_.widen_margin(*this);
 }
 
-bool JonesStage::measure_all_cells() {
+template <class Space, class Rule>
+bool JonesLoop<Space, Rule>::measure_all_cells() {
     const MeshCells cells = this->cells();
     const SiteIndex sites = dt_.vertex_count() - Delaunay::kGhosts;
     bool valid = true;
-    // The rings are walked in step a batch ahead, so their misses overlap
-    // (at 10^7 points the ring reads were most of this loop's time).
+    // The rings are walked in step a batch ahead, so their misses overlap.
     constexpr SiteIndex kAhead = 16;
     VertexIndex ahead[kAhead];
     for (SiteIndex site = 0; site < sites; ++site) {
@@ -111,37 +83,25 @@ bool JonesStage::measure_all_cells() {
             for (SiteIndex s = site + kAhead; s < sites && m < kAhead; ++s) ahead[m++] = vertex_of(s);
             dt_.prefetch_rings(ahead, m);
         }
-        if (is_copy(v) || (radii_ && dt_.is_hidden(v))) {
+        if (space_.is_copy(v) || rule_.hidden(dt_, v)) {
             tree_.set_leaf_only(site, 0.0);
             continue;
         }
         const CellMeasure m = cells.measure(v);
-        if (copies_.on() && valid && !cell_valid(v, m)) valid = false;
+        if (valid && !space_.cell_valid(*this, v, m)) valid = false;
         tree_.set_leaf_only(site, m.area);
     }
     tree_.rebuild();
     return valid;
 }
 
-Point JonesStage::first_point(Rng& rng) const {
-    if (copies_.on()) {
-        // On the torus grid, inside the fundamental domain.
-        const Torus& t = copies_.torus();
-        const double u = rng.next_double(), w = rng.next_double();
-        return t.wrap(Point{Torus::snap(t.x0 + u * t.px), Torus::snap(t.y0 + w * t.py)});
-    }
-    Point p{box_.x0 + rng.next_double() * box_.width(), box_.y0 + rng.next_double() * box_.height()};
-    p.x = std::min(p.x, box_.x1);
-    p.y = std::min(p.y, box_.y1);
-    return p;
-}
-
-const Point* JonesStage::next(Rng& rng) {
+template <class Space, class Rule>
+const Point* JonesLoop<Space, Rule>::next(Rng& rng) {
     settle();
     if (count() == 0) {
         // The whole domain is free: the first point is uniform in it.
         if (!has_first_) {
-            first_ = Candidate{first_point(rng), 0};
+            first_ = Candidate{space_.first_point(rng), 0};
             has_first_ = true;
         }
         return &first_.p;
@@ -159,22 +119,24 @@ const Point* JonesStage::next(Rng& rng) {
     }
 }
 
-void JonesStage::add_next() {
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::add_next() {
     // The field is asked first: if it refuses, nothing has changed.
     if (count() == 0) {
         if (!has_first_) throw std::logic_error("add_next without next");
-        const double value = value_at(first_.p);
+        const double value = rule_.value_at(space_, first_.p);
         has_first_ = false;
-        insert_point(first_.p, 0, value);
+        space_.insert_point(*this, first_.p, 0, value);
         return;
     }
     if (queue_head_ >= queue_.size()) throw std::logic_error("add_next without next");
-    const double value = value_at(queue_[queue_head_].p);
+    const double value = rule_.value_at(space_, queue_[queue_head_].p);
     const Candidate cand = queue_[queue_head_++];
-    insert_point(cand.p, cand.source, value);
+    space_.insert_point(*this, cand.p, cand.source, value);
 }
 
-void JonesStage::adapt_batch_size() {
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::adapt_batch_size() {
     // In selections: double it while every candidate becomes a point; when
     // newer points cover some, shrink it so that about a fifth more
     // candidates are drawn than survive.
@@ -185,33 +147,33 @@ void JonesStage::adapt_batch_size() {
     batch_size_ = std::max<std::size_t>(1, std::min(kMaxBatch, next));
 }
 
-void JonesStage::drop_queue() {
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::drop_queue() {
     queue_.clear();
     queue_head_ = 0;
     since_batch_.clear();
 }
 
-bool JonesStage::still_free(const Point& p) const {
+template <class Space, class Rule>
+bool JonesLoop<Space, Rule>::still_free(const Point& p) const {
     // It was free when drawn; only the points added since can cover it. Most
-    // of those are far away: a box test skips them before the exact check.
-    if (copies_.on()) return still_free_on_torus(p);
+    // of those are far away: a box test skips them before the exact check,
+    // each newer disk by its own radius.
     const double reach = kBoxReach * r_;
-    for (VertexIndex v : since_batch_) {
-        const Point& q = dt_.point(v);
-        if (std::fabs(p.x - q.x) > reach || std::fabs(p.y - q.y) > reach) continue;
-        // Each newer disk by its own radius (r_ is the largest).
-        if (compare_distance(p, q, radii_ ? dt_.radius(v) : r_) < 0) return false;
-    }
+    for (VertexIndex v : since_batch_)
+        if (space_.covers(dt_.point(v), p, reach, [&] { return rule_.newer_radius(dt_, v, r_); })) return false;
     return true;
 }
 
-void JonesStage::set_weight(SiteIndex site, double weight) {
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::set_weight(SiteIndex site, double weight) {
     if (undo_count_ == sizeof undo_ / sizeof undo_[0]) throw std::logic_error("batch undo log full");
     undo_[undo_count_++] = WeightUndo{site, tree_.weight(site)};
     tree_.set(site, weight);
 }
 
-void JonesStage::draw_batch(std::size_t n, Rng& rng) {
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::draw_batch(std::size_t n, Rng& rng) {
     // Only the exact coverage test allocates here. If it fails, undo the
     // batch: the queue was empty, so afterwards the stage is as it was.
     const Rng rng_before = rng;
@@ -233,7 +195,8 @@ void JonesStage::draw_batch(std::size_t n, Rng& rng) {
     }
 }
 
-void JonesStage::draw_batch_unguarded(std::size_t n, Rng& rng) {
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
     double target[kMaxBatch] = {};
     std::size_t sites[kMaxBatch];
     VertexIndex vertices[kMaxBatch];
@@ -247,7 +210,7 @@ void JonesStage::draw_batch_unguarded(std::size_t n, Rng& rng) {
         vertices[k] = vertex_of(sites[k]);
         bound[k] = tree_.weight(sites[k]);
         // A hidden disk has no ring: a ghost's stands in for the prefetch.
-        rings[k] = radii_ && dt_.is_hidden(vertices[k]) ? 0 : vertices[k];
+        rings[k] = rule_.hidden(dt_, vertices[k]) ? 0 : vertices[k];
     }
     dt_.prefetch_rings(rings, n);
     const MeshCells cells = this->cells();
@@ -284,19 +247,18 @@ void JonesStage::draw_batch_unguarded(std::size_t n, Rng& rng) {
             // else rounding left the target just out of reach: the last chunk
         }
         // A found chunk in a cell floating point could not certify needs no
-        // special care: every draw is checked exactly before it is kept.
-        // On the torus the point is snapped to the grid first (torus.hpp)
-        // and the exact checks judge the snapped point.
+        // special care: every draw is checked exactly before it is kept, as
+        // the space places it (the torus snaps it to its grid first).
         Point chosen{0.0, 0.0};
         const auto accept = [&](const Point& p) {
-            chosen = copies_.on() ? Point{Torus::snap(p.x), Torus::snap(p.y)} : p;
+            chosen = space_.snap(p);
             return acceptable(chosen, v);
         };
         Point p;
         // A site outside its power cell: its pieces reach outside the cell,
         // so a draw there rejects the whole selection (a retry inside the
         // piece would favour the piece's part in the cell).
-        const bool retry = !radii_ || site_in_own_cell(v);
+        const bool retry = rule_.retry_in_piece(dt_, v);
         const SampleOutcome drawn = sample_chunk(q, sel.chunk(), rng.next_double(), rng, accept, kMaxDraws, &p, retry);
         if (drawn == SampleOutcome::placed) {
             queue_.push_back(Candidate{chosen, v});
@@ -314,75 +276,39 @@ void JonesStage::draw_batch_unguarded(std::size_t n, Rng& rng) {
     dt_.prefetch_beyond_rings(sources, queue_.size());
 }
 
-bool JonesStage::acceptable(const Point& p, VertexIndex v) const {
-    // Exact: inside the domain, at least R from the site, and in the site's
-    // Voronoi cell (no Delaunay neighbour strictly closer), hence at least R
-    // from every point. On the torus the cell is unclipped and p is moved
-    // into the fundamental domain when inserted.
-    if (!copies_.on() && !box_.contains(p)) return false;
-    const Point& c = dt_.point(v);
-    if (radii_) return in_free_power_cell(p, v);
-    if (compare_distance(p, c, r_) < 0) return false;
-    bool ok = true;
-    dt_.for_each_neighbour(v, [&](VertexIndex n) {
-        if (ok && !Delaunay::is_ghost(n) && compare_closer(p, c, dt_.point(n)) > 0) ok = false;
-    });
-    return ok;
-}
-
-void JonesStage::insert_point(const Point& p, VertexIndex near, double value) {
-    if (radii_ && !copies_.on()) {
-        // Room was reserved (values_ too): nothing here allocates.
-        const VertexIndex v = dt_.insert(p, radii_->radius_of(value), near);
-        values_.push_back(value);
-        tree_.push_back(dt_.is_hidden(v) ? 0.0 : cells().measure(v).area);
-        since_batch_.push_back(v);
-        draw_failures_ = 0;
-        return;
-    }
-    if (copies_.on()) {
-        insert_point_on_torus(p, near, value);
-        return;
-    }
-    const VertexIndex v = dt_.insert(p, near);
-    // The neighbours' cells only shrank: their weights stay valid upper bounds
-    // and are tightened when next selected (measured: re-measuring them here,
-    // even only the source cell, costs more than the rejections it saves).
-    // Only the new cell is measured.
-    tree_.push_back(cells().measure(v).area);
-    since_batch_.push_back(v);
-    draw_failures_ = 0;
-}
-
-void JonesStage::give_up(SiteIndex site) {
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::give_up(SiteIndex site) {
     if (!cells().covered_exactly(vertex_of(site))) ++stats_.gave_up_cells;
     set_weight(site, 0.0);
 }
 
-double JonesStage::free_area() const {
+template <class Space, class Rule>
+double JonesLoop<Space, Rule>::free_area() const {
     // Cells are the torus's only once the margin is settled.
-    if (widen_pending_) throw std::bad_alloc();
+    if (space_.pending()) throw std::bad_alloc();
     // The tree holds upper bounds; the exact area is re-measured, cell by cell,
     // in leaf order (so the sum is the same on every call).
     const MeshCells cells = this->cells();
     double sum = 0.0;
     tree_.for_each_positive([&](SiteIndex site) {
         const VertexIndex v = vertex_of(site);
-        if (!radii_ || !dt_.is_hidden(v)) sum += cells.measure(v).free();
+        if (!rule_.hidden(dt_, v)) sum += cells.measure(v).free();
         return true;
     });
     return sum;
 }
 
-VerifyReport JonesStage::verify() const {
-    if (widen_pending_) throw std::bad_alloc();
+template <class Space, class Rule>
+VerifyReport JonesLoop<Space, Rule>::verify() const {
+    if (space_.pending()) throw std::bad_alloc();
     VerifyReport rep;
-    if (radii_) {
+    if (Rule::kWeighted) {
+        // Each disk is checked against the points after it: their ranks.
         std::vector<std::size_t> rank(dt_.vertex_count(), 0);
         for (std::size_t k = 0; k < count(); ++k) rank[order_.vertex(k)] = k;
-        rep = copies_.on() ? verify_torus(dt_, copies_, is_copy_, r_, &rank) : verify_pattern(dt_, box_, r_, &rank);
+        rep = space_.verify(dt_, r_, &rank);
     } else {
-        rep = copies_.on() ? verify_torus(dt_, copies_, is_copy_, r_) : verify_pattern(dt_, box_, r_);
+        rep = space_.verify(dt_, r_, nullptr);
     }
     if (rep.vertex != kNoVertex) name_point(rep, order_.point(rep.vertex));
     if (rep.valid && !rep.maximal && count() > 0 && tree_.total() == 0.0) {
@@ -393,6 +319,20 @@ VerifyReport JonesStage::verify() const {
                            " free regions were below double-precision resolution)";
     }
     return rep;
+}
+
+template class JonesLoop<PlaneSpace, OneRadius>;
+template class JonesLoop<PlaneSpace, PowerRule>;
+template class JonesLoop<TorusSpace, OneRadius>;
+template class JonesLoop<TorusSpace, PowerRule>;
+
+std::unique_ptr<JonesStage> make_jones_stage(const Box& box, double r, const Torus& torus, const PointRadii* radii) {
+    if (torus.on()) {
+        if (radii) return std::make_unique<JonesLoop<TorusSpace, PowerRule>>(box, r, torus, radii);
+        return std::make_unique<JonesLoop<TorusSpace, OneRadius>>(box, r, torus, radii);
+    }
+    if (radii) return std::make_unique<JonesLoop<PlaneSpace, PowerRule>>(box, r, torus, radii);
+    return std::make_unique<JonesLoop<PlaneSpace, OneRadius>>(box, r, torus, radii);
 }
 
 }  // namespace pds

@@ -1,0 +1,164 @@
+// jones_loop.hpp - the Jones loop (Jones 2006, figure 1): pick a Voronoi
+// cell with probability proportional to its free area, draw a point
+// uniformly in its free region, insert it, and account for the areas that
+// changed.
+//
+// Lazy areas (our change to the paper's step 5): inserting a point only
+// shrinks its neighbours' cells, so their old free areas remain upper bounds.
+// The tree holds these bounds U >= A instead of exact areas, and neighbours are
+// not recomputed at insertion. A cell is selected with probability
+// proportional to U, measured exactly in the same pass that picks a piece with
+// target u * U, and kept with probability A / U (the target falls inside the
+// exact area); otherwise its weight is tightened to A and the selection starts
+// over. Every accepted cell is therefore chosen with probability proportional
+// to A, as the paper's exact recomputation would give, with a fraction of the
+// work; and the loop ends only when every weight has been measured 0.
+//
+// Batches (memory-level parallelism, batch.hpp): free regions only shrink, so
+// a point drawn uniformly from an older free region and kept only if it is
+// still free (at least R from the points added since) is exactly uniform over
+// the current one. So candidates are drawn in batches from one state of the
+// pattern: the tree is descended for all of them level by level and their
+// cells' rings are walked in step, so their misses overlap; then each is
+// computed from cache, and the queue is consumed in order, dropping
+// candidates the newer points cover. The batch size adapts to how many
+// candidates survive; the queue persists across calls, so splitting a run
+// does not change its points.
+//
+// Guarantees (with the predicates' exactness):
+//   - every accepted point is inside the domain, outside every disk and
+//     inside its cell, checked exactly;
+//   - each new point is uniform over the free area: the cell is chosen by area
+//     (tree), the piece by area, the point by rejection inside the piece;
+//   - next() returns nullptr only when every cell is covered: certified in
+//     floating point or decided exactly (cell_coverage.hpp).
+//
+// The loop knows its mesh and radius rule only as types:
+//   Space  where the points live: PlaneSpace (the domain's rectangle) or
+//          TorusSpace (the plane with copies of the points, torus_space.hpp);
+//          it inserts a point, bounds the newer points' reach, verifies.
+//   Rule   how far a point keeps others: OneRadius (Voronoi cells) or
+//          PowerRule (a field: power cells of a regular triangulation,
+//          radius_rule.hpp).
+//
+// Memory: reserve() makes room for the points beforehand; only the exact
+// coverage test allocates while points are drawn. If it runs out, the batch
+// being drawn is undone (generator, weights, queue) before std::bad_alloc
+// leaves, so the stage is exactly as before the batch and a later call draws
+// the same points.
+#ifndef PDS_JONES_LOOP_HPP
+#define PDS_JONES_LOOP_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/batch.hpp"
+#include "core/indices.hpp"
+#include "core/point.hpp"
+#include "core/rng.hpp"
+#include "jones/free_area_tree.hpp"
+#include "jones/jones_stage.hpp"
+#include "jones/point_order.hpp"
+#include "mesh/delaunay.hpp"
+
+namespace pds {
+
+template <class Space, class Rule>
+class JonesLoop final : public JonesStage {
+public:
+    JonesLoop(const Box& box, double r, const Torus& torus, const PointRadii* radii);
+
+    void reserve(std::size_t points) override;
+    bool has_room_for(std::size_t points) const override;
+    void adopt(const std::vector<Point>& points, const std::uint32_t* order,
+               const std::vector<double>* values) override;
+    void settle() override { space_.settle(*this); }
+    void set_radius(double r, const PointRadii* radii) override;
+
+    std::size_t count() const override { return space_.count(*this); }
+    const Point& point(PointIndex k) const override { return dt_.point(order_.vertex(k)); }
+    double value(PointIndex k) const override { return rule_.value(k); }
+    const Point* next(Rng& rng) override;
+    void add_next() override;
+    double free_area() const override;
+    VerifyReport verify() const override;
+
+    const Delaunay& mesh() const override { return dt_; }
+    MeshCells cells() const override { return MeshCells(dt_, space_.clip_box(), r_); }
+    const TorusCopies& torus_copies() const override { return space_.copies(); }
+    bool is_copy(VertexIndex v) const override { return space_.is_copy(v); }
+    const JonesStats& stats() const override { return stats_; }
+    void set_batch_size(std::size_t n) override { batch_size_ = n < 1 ? 1 : (n > kMaxBatch ? kMaxBatch : n); }
+
+private:
+    friend Space;
+    friend Rule;
+
+    static constexpr int kMaxDraws = 64;  // per piece; a healthy piece accepts > 1/2 of draws
+    static constexpr int kFailuresPerGiveUp = 8;
+    // A candidate is checked exactly only against the newer points within
+    // this many radii in x and y (any half-side >= R holds the disk).
+    static constexpr double kBoxReach = 1.5;
+
+    // A point drawn from the free region as it was when its batch was drawn.
+    struct Candidate {
+        Point p;
+        VertexIndex source;  // the vertex whose cell it was drawn in
+    };
+    // A tree weight as it was before the batch being drawn changed it.
+    struct WeightUndo {
+        SiteIndex site;
+        double weight;
+    };
+
+    // Every cell's exact free area into the tree: O(N), no allocation. On
+    // the torus, false when some real cell is not yet its torus cell.
+    bool measure_all_cells();
+    // Mesh vertices (ghosts aside) that `points` points need, copies included.
+    std::size_t vertices_for(std::size_t points) const { return space_.vertices_for(points); }
+    void adapt_batch_size();
+    void drop_queue();
+    // Candidates drawn for a mesh that is gone (a refine, a rebuilt mesh).
+    void forget_candidates() {
+        drop_queue();
+        has_first_ = false;
+    }
+    bool still_free(const Point& p) const;
+    void draw_batch(std::size_t n, Rng& rng);
+    void draw_batch_unguarded(std::size_t n, Rng& rng);
+    void set_weight(SiteIndex site, double weight);
+    void give_up(SiteIndex site);
+    // Exact: inside the domain, outside every disk, inside v's cell.
+    bool acceptable(const Point& p, VertexIndex v) const {
+        return space_.inside(p) && rule_.acceptable(dt_, p, v, r_);
+    }
+    // The bookkeeping of a point just inserted as vertex v.
+    void record_new_point(VertexIndex v, double value) {
+        rule_.push_value(value);
+        since_batch_.push_back(v);
+        draw_failures_ = 0;
+    }
+
+    Rule rule_;
+    Space space_;
+    Box box_;
+    double r_;
+    Delaunay dt_;
+    FreeAreaTree tree_;  // one leaf per site: an upper bound on its free area
+    PointOrder order_;
+    std::vector<Candidate> queue_;            // the current batch, consumed in order
+    std::size_t queue_head_ = 0;
+    std::vector<VertexIndex> since_batch_;    // vertices added since it was drawn
+    std::size_t batch_size_ = 1;
+    int draw_failures_ = 0;                   // failed chunk samplings since the last point
+    Candidate first_{};                       // the first point, drawn over the whole domain
+    bool has_first_ = false;
+    WeightUndo undo_[2 * kMaxBatch];          // at most two weight changes per candidate
+    std::size_t undo_count_ = 0;
+    JonesStats stats_;  // counters only: never steer the sampling
+};
+
+}  // namespace pds
+
+#endif

@@ -1,0 +1,109 @@
+// plane_space.hpp - the Jones loop's mesh in the domain's rectangle
+// (jones_loop.hpp): a point is one vertex, a cell is its Voronoi (or power)
+// cell clipped to the rectangle, and the first point is uniform in it.
+//
+// A space is what the loop asks of where its points live: the region the
+// mesh covers, the box cells are clipped to, whether a point is inside,
+// which newer points may cover a candidate, how a point is inserted, and
+// the certificate. Its functions take the loop (a friend) when they change
+// the mesh, so the loop's own code never asks which space it runs in.
+#ifndef PDS_PLANE_SPACE_HPP
+#define PDS_PLANE_SPACE_HPP
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/indices.hpp"
+#include "core/point.hpp"
+#include "core/predicates.hpp"
+#include "core/rng.hpp"
+#include "core/torus.hpp"
+#include "jones/mesh_cells.hpp"
+#include "mesh/delaunay.hpp"
+#include "mesh/torus_copies.hpp"
+#include "verify/verify.hpp"
+
+namespace pds {
+
+class PlaneSpace {
+public:
+    static constexpr bool kPeriodic = false;
+
+    PlaneSpace(const Box& box, double /*r*/, const Torus& /*torus*/, bool /*weighted*/) : box_(box) {}
+
+    Box mesh_region() const { return box_; }
+    Box clip_box() const { return box_; }
+    const TorusCopies& copies() const { return no_copies_; }
+    bool is_copy(VertexIndex) const { return false; }
+    VertexIndex original(VertexIndex v) const { return v; }
+    std::size_t vertices_for(std::size_t points) const { return points; }
+    void reserve(std::size_t) {}
+    bool has_room_for(std::size_t) const { return true; }
+    template <class Loop>
+    std::size_t count(const Loop& loop) const {
+        return loop.dt_.vertex_count() - Delaunay::kGhosts;
+    }
+
+    Point first_point(Rng& rng) const {
+        Point p{box_.x0 + rng.next_double() * box_.width(), box_.y0 + rng.next_double() * box_.height()};
+        p.x = std::min(p.x, box_.x1);
+        p.y = std::min(p.y, box_.y1);
+        return p;
+    }
+    Point snap(const Point& p) const { return p; }
+    bool inside(const Point& p) const { return box_.contains(p); }
+    Point wrap(const Point& p) const { return p; }
+    // Whether newer point q covers candidate p (radius() its disk's radius);
+    // the box test skips most without the exact predicate.
+    template <class Radius>
+    bool covers(const Point& q, const Point& p, double reach, const Radius& radius) const {
+        if (std::fabs(p.x - q.x) > reach || std::fabs(p.y - q.y) > reach) return false;
+        return compare_distance(p, q, radius()) < 0;
+    }
+
+    template <class Loop>
+    void adopt(Loop& loop, const std::vector<Point>& points, const std::uint32_t* order,
+               const std::vector<double>* values) {
+        if (values) loop.rule_.assign_values(*values);  // within the reserved room
+        loop.dt_.insert_in_order(
+            points, order, points.size(), [&](std::uint32_t k) { return loop.rule_.radius_of(loop.rule_.value(k)); },
+            [&](std::uint32_t k, VertexIndex v) { loop.order_.set(k, v); });
+        loop.tree_.resize(points.size());
+        loop.measure_all_cells();
+    }
+    template <class Loop>
+    void insert_point(Loop& loop, const Point& p, VertexIndex near, double value) {
+        // Room was reserved: nothing here allocates. The neighbours' cells
+        // only shrank: their weights stay valid upper bounds and are
+        // tightened when next selected (re-measuring them here, even only
+        // the source cell, costs more than the rejections it saves). Only
+        // the new cell is measured.
+        const VertexIndex v = loop.rule_.insert(loop.dt_, p, value, near);
+        loop.tree_.push_back(loop.rule_.hidden(loop.dt_, v) ? 0.0 : loop.cells().measure(v).area);
+        loop.record_new_point(v, value);
+    }
+    template <class Loop>
+    bool cell_valid(const Loop&, VertexIndex, const CellMeasure&) const {
+        return true;
+    }
+    template <class Loop>
+    void settle(Loop&) {}
+    template <class Loop>
+    void widen_margin(Loop&) {}
+    bool pending() const { return false; }
+
+    VerifyReport verify(const Delaunay& dt, double r, const std::vector<std::size_t>* rank) const {
+        return verify_pattern(dt, box_, r, rank);
+    }
+
+private:
+    Box box_;
+    TorusCopies no_copies_;  // off
+};
+
+}  // namespace pds
+
+#endif
