@@ -18,20 +18,12 @@ constexpr double kMinMagnitude = 0x1.0p-900;
 // Upper bound on memory per point, for the address-space check on 32-bit.
 constexpr std::size_t kBytesPerPointBudget = 256;
 
-double max_magnitude(const Box& b) {
-    return std::max(std::max(std::fabs(b.x0), std::fabs(b.x1)),
-                    std::max(std::fabs(b.y0), std::fabs(b.y1)));
-}
-
-Box scaled(const Box& b, int k) {
-    return Box{std::ldexp(b.x0, k), std::ldexp(b.y0, k), std::ldexp(b.x1, k), std::ldexp(b.y1, k)};
-}
+double max_magnitude(const Box& b) { return Rectangle(b).largest_magnitude(); }
 
 // Any radius at least the diagonal gives the same one-point pattern; capping
 // keeps R^2 finite.
-double effective_radius(const Box& b, double r) {
-    const double w = b.width(), h = b.height();
-    const double cap = 2.0 * std::sqrt(w * w + h * h);  // not hypot: see delaunay.cpp
+double effective_radius(const Rectangle& domain, double r) {
+    const double cap = 2.0 * domain.diameter();
     return r < cap ? r : cap;
 }
 
@@ -57,22 +49,23 @@ void Frame::set_domain(const Box& user_domain) {
     user_domain_ = user_domain;
     // Coordinates too small to scale keep k = 0; precision_limit() refuses them.
     scale_exp_ = max_magnitude(user_domain) < kMinMagnitude ? 0 : -std::ilogb(max_magnitude(user_domain));
-    box_ = scaled(user_domain, scale_exp_);
+    Box box = Rectangle(user_domain).scaled(scale_exp_).bounds();
     torus_ = Torus{};
     if (periodic_) {
         // Periods on the torus grid, rounded down so every point stays inside
         // the user's rectangle (torus.hpp).
-        torus_.px = grid_period(box_.x0, box_.x1);
-        torus_.py = grid_period(box_.y0, box_.y1);
-        torus_.x0 = box_.x0;
-        torus_.y0 = box_.y0;
+        torus_.px = grid_period(box.x0, box.x1);
+        torus_.py = grid_period(box.y0, box.y1);
+        torus_.x0 = box.x0;
+        torus_.y0 = box.y0;
         if (torus_.px > 0.0 && torus_.py > 0.0) {
-            box_.x1 = box_.x0 + torus_.px;
-            box_.y1 = box_.y0 + torus_.py;
+            box.x1 = box.x0 + torus_.px;
+            box.y1 = box.y0 + torus_.py;
         } else {
             torus_ = Torus{};  // degenerate: precision_limit() refuses it
         }
     }
+    domain_ = Rectangle(box);
     set_radius(user_radius_);
 }
 
@@ -92,7 +85,7 @@ bool Frame::periods_beyond(double ratio) const {
 }
 
 double Frame::internal_radius(double user_radius) const {
-    return effective_radius(box_, std::ldexp(user_radius, scale_exp_));
+    return effective_radius(domain_, std::ldexp(user_radius, scale_exp_));
 }
 
 Limit Frame::precision_limit() const {
@@ -109,7 +102,7 @@ Limit Frame::precision_limit() const {
         if (!torus_.on()) return Limit::radius_below_precision;
         // Against the user's periods: their rounding onto the grid (below
         // 2^-50) must not refuse R = period / 2.
-        const Box user = scaled(user_domain_, scale_exp_);
+        const Box user = Rectangle(user_domain_).scaled(scale_exp_).bounds();
         const double shorter = std::min(user.x1 - user.x0, user.y1 - user.y0);
         const double longer = std::max(user.x1 - user.x0, user.y1 - user.y0);
         if (longer > kMaxPeriodRatio * shorter) return Limit::periods_too_unequal;
@@ -118,12 +111,7 @@ Limit Frame::precision_limit() const {
     return Limit::ok;
 }
 
-double Frame::count_bound() const {
-    // Oler (1961): points at mutual distance >= R in a convex region of area A
-    // and perimeter P number at most 2A/(sqrt(3) R^2) + P/(2R) + 1.
-    const double w = box_.width() / r_, h = box_.height() / r_;
-    return 2.0 / std::sqrt(3.0) * w * h + (w + h) + 1.0;
-}
+double Frame::count_bound() const { return domain_.count_bound(r_); }
 
 namespace {
 constexpr double kSaturationCoverage = 0.547;  // pi R^2 N / (4 A) of a maximal RSA pattern
@@ -132,7 +120,7 @@ constexpr double kEdgeExcess = 0.23;           // extra points per R of a rectan
 
 double Frame::expected_count(double user_radius) const {
     const double r = std::ldexp(user_radius, scale_exp_);
-    const double a = box_.width() * box_.height(), perimeter = 2.0 * (box_.width() + box_.height());
+    const double a = domain_.area(), perimeter = domain_.perimeter();
     const double bulk = kSaturationCoverage * 4.0 * a / (M_PI * r * r);
     return periodic_ ? bulk : bulk + kEdgeExcess * perimeter / r;
 }
@@ -145,7 +133,7 @@ double Frame::max_radius() const {
 
 double Frame::radius_for_count(double n) const {
     // n = a / r^2 + b / r, solved for r > 0.
-    const double area = box_.width() * box_.height(), perimeter = 2.0 * (box_.width() + box_.height());
+    const double area = domain_.area(), perimeter = domain_.perimeter();
     const double a = kSaturationCoverage * 4.0 * area / M_PI;
     const double b = periodic_ ? 0.0 : kEdgeExcess * perimeter;
     const double r = (b + std::sqrt(b * b + 4.0 * a * n)) / (2.0 * n);
@@ -154,7 +142,7 @@ double Frame::radius_for_count(double n) const {
 
 double Frame::lowest_count_radius(double n) const {
     constexpr double kBelowEveryStep = 0.98;
-    const double area = box_.width() * box_.height();
+    const double area = domain_.area();
     return std::ldexp(kBelowEveryStep * std::sqrt(area / (M_PI * n)), -scale_exp_);
 }
 

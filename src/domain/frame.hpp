@@ -24,6 +24,7 @@
 
 #include "core/point.hpp"
 #include "core/torus.hpp"
+#include "domain/rectangle.hpp"
 
 namespace pds {
 
@@ -72,8 +73,9 @@ public:
 
     const Box& user_domain() const { return user_domain_; }
     double user_radius() const { return user_radius_; }
-    // The internal frame.
-    const Box& box() const { return box_; }
+    // The internal frame: the domain, its bounding box.
+    const Rectangle& domain() const { return domain_; }
+    const Box& box() const { return domain_.bounds(); }
     double r() const { return r_; }
 
     void set_domain(const Box& user_domain);
@@ -116,7 +118,7 @@ private:
     Box user_domain_;
     double user_radius_;
     int scale_exp_ = 0;  // internal = user * 2^scale_exp_
-    Box box_;            // on the torus, x1 and y1 are x0 + px and y0 + py rounded
+    Rectangle domain_;   // on the torus, x1 and y1 are x0 + px and y0 + py rounded
     Torus torus_;
     bool periodic_ = false;
     double r_ = 0.0;     // internal radius (capped at twice the diagonal)

@@ -15,10 +15,9 @@
 namespace pds {
 
 template <class Space, class Rule>
-JonesLoop<Space, Rule>::JonesLoop(const Box& box, double r, const Torus& torus, const PointRadii* radii)
+JonesLoop<Space, Rule>::JonesLoop(const Rectangle& domain, double r, const Torus& torus, const PointRadii* radii)
     : rule_(radii),
-      space_(box, r, torus, Rule::kWeighted),
-      box_(box),
+      space_(domain, r, torus, Rule::kWeighted),
       r_(r),
       dt_(space_.mesh_region(), Rule::kWeighted, rule_.rmax()) {
     tree_.reserve(1);
@@ -326,13 +325,14 @@ template class JonesLoop<PlaneSpace, PowerRule>;
 template class JonesLoop<TorusSpace, OneRadius>;
 template class JonesLoop<TorusSpace, PowerRule>;
 
-std::unique_ptr<JonesStage> make_jones_stage(const Box& box, double r, const Torus& torus, const PointRadii* radii) {
+std::unique_ptr<JonesStage> make_jones_stage(const Rectangle& domain, double r, const Torus& torus,
+                                             const PointRadii* radii) {
     if (torus.on()) {
-        if (radii) return std::make_unique<JonesLoop<TorusSpace, PowerRule>>(box, r, torus, radii);
-        return std::make_unique<JonesLoop<TorusSpace, OneRadius>>(box, r, torus, radii);
+        if (radii) return std::make_unique<JonesLoop<TorusSpace, PowerRule>>(domain, r, torus, radii);
+        return std::make_unique<JonesLoop<TorusSpace, OneRadius>>(domain, r, torus, radii);
     }
-    if (radii) return std::make_unique<JonesLoop<PlaneSpace, PowerRule>>(box, r, torus, radii);
-    return std::make_unique<JonesLoop<PlaneSpace, OneRadius>>(box, r, torus, radii);
+    if (radii) return std::make_unique<JonesLoop<PlaneSpace, PowerRule>>(domain, r, torus, radii);
+    return std::make_unique<JonesLoop<PlaneSpace, OneRadius>>(domain, r, torus, radii);
 }
 
 }  // namespace pds

@@ -67,7 +67,7 @@ namespace pds {
 template <class Space, class Rule>
 class JonesLoop final : public JonesStage {
 public:
-    JonesLoop(const Box& box, double r, const Torus& torus, const PointRadii* radii);
+    JonesLoop(const Rectangle& domain, double r, const Torus& torus, const PointRadii* radii);
 
     void reserve(std::size_t points) override;
     bool has_room_for(std::size_t points) const override;
@@ -142,7 +142,6 @@ private:
 
     Rule rule_;
     Space space_;
-    Box box_;
     double r_;
     Delaunay dt_;
     FreeAreaTree tree_;  // one leaf per site: an upper bound on its free area

@@ -16,6 +16,7 @@
 
 #include "core/point.hpp"
 #include "core/torus.hpp"
+#include "domain/rectangle.hpp"
 #include "jones/mesh_cells.hpp"
 #include "jones/stage.hpp"
 #include "mesh/delaunay.hpp"
@@ -68,9 +69,9 @@ public:
     virtual void set_batch_size(std::size_t n) = 0;
 };
 
-// box and r in the internal frame, torus on for a periodic domain; radii
-// for a variable radius (r: the largest). May throw std::bad_alloc.
-std::unique_ptr<JonesStage> make_jones_stage(const Box& box, double r, const Torus& torus = Torus{},
+// The domain and r in the internal frame, torus on for a periodic domain;
+// radii for a variable radius (r: the largest). May throw std::bad_alloc.
+std::unique_ptr<JonesStage> make_jones_stage(const Rectangle& domain, double r, const Torus& torus = Torus{},
                                              const PointRadii* radii = nullptr);
 
 }  // namespace pds

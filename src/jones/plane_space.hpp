@@ -3,7 +3,8 @@
 // cell clipped to the rectangle, and the first point is uniform in it.
 //
 // A space is what the loop asks of where its points live: the region the
-// mesh covers, the box cells are clipped to, whether a point is inside,
+// mesh covers, the box cells are clipped to (here, through the domain type,
+// domain/rectangle.hpp), whether a point is inside,
 // which newer points may cover a candidate, how a point is inserted, and
 // the certificate. Its functions take the loop (a friend) when they change
 // the mesh, so the loop's own code never asks which space it runs in.
@@ -21,6 +22,7 @@
 #include "core/predicates.hpp"
 #include "core/rng.hpp"
 #include "core/torus.hpp"
+#include "domain/rectangle.hpp"
 #include "jones/mesh_cells.hpp"
 #include "mesh/delaunay.hpp"
 #include "mesh/torus_copies.hpp"
@@ -32,10 +34,11 @@ class PlaneSpace {
 public:
     static constexpr bool kPeriodic = false;
 
-    PlaneSpace(const Box& box, double /*r*/, const Torus& /*torus*/, bool /*weighted*/) : box_(box) {}
+    PlaneSpace(const Rectangle& domain, double /*r*/, const Torus& /*torus*/, bool /*weighted*/)
+        : domain_(domain) {}
 
-    Box mesh_region() const { return box_; }
-    Box clip_box() const { return box_; }
+    Box mesh_region() const { return domain_.bounds(); }
+    Box clip_box() const { return domain_.bounds(); }
     const TorusCopies& copies() const { return no_copies_; }
     bool is_copy(VertexIndex) const { return false; }
     VertexIndex original(VertexIndex v) const { return v; }
@@ -47,14 +50,9 @@ public:
         return loop.dt_.vertex_count() - Delaunay::kGhosts;
     }
 
-    Point first_point(Rng& rng) const {
-        Point p{box_.x0 + rng.next_double() * box_.width(), box_.y0 + rng.next_double() * box_.height()};
-        p.x = std::min(p.x, box_.x1);
-        p.y = std::min(p.y, box_.y1);
-        return p;
-    }
+    Point first_point(Rng& rng) const { return domain_.uniform_point(rng); }
     Point snap(const Point& p) const { return p; }
-    bool inside(const Point& p) const { return box_.contains(p); }
+    bool inside(const Point& p) const { return domain_.contains(p); }
     Point wrap(const Point& p) const { return p; }
     // Whether newer point q covers candidate p (radius() its disk's radius);
     // the box test skips most without the exact predicate.
@@ -96,11 +94,11 @@ public:
     bool pending() const { return false; }
 
     VerifyReport verify(const Delaunay& dt, double r, const std::vector<std::size_t>* rank) const {
-        return verify_pattern(dt, box_, r, rank);
+        return verify_pattern(dt, domain_.bounds(), r, rank);
     }
 
 private:
-    Box box_;
+    Rectangle domain_;
     TorusCopies no_copies_;  // off
 };
 

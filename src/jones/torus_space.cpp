@@ -4,7 +4,7 @@
 
 namespace pds {
 
-TorusSpace::TorusSpace(const Box& /*box*/, double r, const Torus& torus, bool weighted)
+TorusSpace::TorusSpace(const Rectangle& /*domain: the torus holds its periods*/, double r, const Torus& torus, bool weighted)
     : copies_(torus, r, weighted) {
     is_copy_.assign(Delaunay::kGhosts, 0);
     original_.assign(Delaunay::kGhosts, 0);

@@ -25,6 +25,7 @@
 #include "core/predicates.hpp"
 #include "core/rng.hpp"
 #include "core/torus.hpp"
+#include "domain/rectangle.hpp"
 #include "jones/mesh_cells.hpp"
 #include "mesh/delaunay.hpp"
 #include "mesh/torus_copies.hpp"
@@ -36,7 +37,7 @@ class TorusSpace {
 public:
     static constexpr bool kPeriodic = true;
 
-    TorusSpace(const Box& box, double r, const Torus& torus, bool weighted);
+    TorusSpace(const Rectangle& domain, double r, const Torus& torus, bool weighted);
 
     Box mesh_region() const { return copies_.largest_region(); }
     Box clip_box() const { return copies_.clip_box(); }

@@ -113,7 +113,7 @@ void Sampler::prepare(std::size_t points) {
         }
         // Built aside, kept only when both exist: std::bad_alloc changes nothing.
         const std::optional<PointRadii> radii = point_radii(frame_);
-        auto jones = make_jones_stage(frame_.box(), frame_.r(), frame_.torus(), radii ? &*radii : nullptr);
+        auto jones = make_jones_stage(frame_.domain(), frame_.r(), frame_.torus(), radii ? &*radii : nullptr);
         std::unique_ptr<OpeningStage> darts;
         if (use_darts()) {
             if (radii)
