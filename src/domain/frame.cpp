@@ -50,27 +50,29 @@ void Frame::set_domain(const Box& user_domain) {
     // Coordinates too small to scale keep k = 0; precision_limit() refuses them.
     scale_exp_ = max_magnitude(user_domain) < kMinMagnitude ? 0 : -std::ilogb(max_magnitude(user_domain));
     Box box = Rectangle(user_domain).scaled(scale_exp_).bounds();
-    torus_ = Torus{};
-    if (periodic_) {
+    if (torus_) {
         // Periods on the torus grid, rounded down so every point stays inside
         // the user's rectangle (torus.hpp).
-        torus_.px = grid_period(box.x0, box.x1);
-        torus_.py = grid_period(box.y0, box.y1);
-        torus_.x0 = box.x0;
-        torus_.y0 = box.y0;
-        if (torus_.px > 0.0 && torus_.py > 0.0) {
-            box.x1 = box.x0 + torus_.px;
-            box.y1 = box.y0 + torus_.py;
+        Torus t;
+        t.px = grid_period(box.x0, box.x1);
+        t.py = grid_period(box.y0, box.y1);
+        t.x0 = box.x0;
+        t.y0 = box.y0;
+        if (t.px > 0.0 && t.py > 0.0) {
+            box.x1 = box.x0 + t.px;
+            box.y1 = box.y0 + t.py;
         } else {
-            torus_ = Torus{};  // degenerate: precision_limit() refuses it
+            t = Torus{};  // degenerate: precision_limit() refuses it
         }
+        torus_ = t;
     }
     domain_ = Rectangle(box);
     set_radius(user_radius_);
 }
 
 void Frame::set_periodic(bool periodic) {
-    periodic_ = periodic;
+    if (periodic) torus_.emplace();
+    else torus_.reset();
     set_domain(user_domain_);
 }
 
@@ -81,7 +83,7 @@ void Frame::set_radius(double user_radius) {
 
 bool Frame::periods_beyond(double ratio) const {
     const double w = user_domain_.x1 - user_domain_.x0, h = user_domain_.y1 - user_domain_.y0;
-    return periodic_ && std::max(w, h) > ratio * std::min(w, h);
+    return periodic() && std::max(w, h) > ratio * std::min(w, h);
 }
 
 double Frame::internal_radius(double user_radius) const {
@@ -98,8 +100,8 @@ Limit Frame::precision_limit() const {
     for (double c : coords)
         if (c != 0.0 && std::fabs(c) < m * kMinMagnitude) return Limit::coordinates_too_small;
     if (!(std::ldexp(user_radius_, scale_exp_) >= kMinInternalRadius)) return Limit::radius_below_precision;
-    if (periodic_) {
-        if (!torus_.on()) return Limit::radius_below_precision;
+    if (periodic()) {
+        if (!torus().on()) return Limit::radius_below_precision;
         // Against the user's periods: their rounding onto the grid (below
         // 2^-50) must not refuse R = period / 2.
         const Box user = Rectangle(user_domain_).scaled(scale_exp_).bounds();
@@ -122,11 +124,11 @@ double Frame::expected_count(double user_radius) const {
     const double r = std::ldexp(user_radius, scale_exp_);
     const double a = domain_.area(), perimeter = domain_.perimeter();
     const double bulk = kSaturationCoverage * 4.0 * a / (M_PI * r * r);
-    return periodic_ ? bulk : bulk + kEdgeExcess * perimeter / r;
+    return periodic() ? bulk : bulk + kEdgeExcess * perimeter / r;
 }
 
 double Frame::max_radius() const {
-    if (!periodic_) return HUGE_VAL;
+    if (!periodic()) return HUGE_VAL;
     const double w = user_domain_.x1 - user_domain_.x0, h = user_domain_.y1 - user_domain_.y0;
     return 0.5 * std::min(w, h);
 }
@@ -135,7 +137,7 @@ double Frame::radius_for_count(double n) const {
     // n = a / r^2 + b / r, solved for r > 0.
     const double area = domain_.area(), perimeter = domain_.perimeter();
     const double a = kSaturationCoverage * 4.0 * area / M_PI;
-    const double b = periodic_ ? 0.0 : kEdgeExcess * perimeter;
+    const double b = periodic() ? 0.0 : kEdgeExcess * perimeter;
     const double r = (b + std::sqrt(b * b + 4.0 * a * n)) / (2.0 * n);
     return std::ldexp(r, -scale_exp_);
 }

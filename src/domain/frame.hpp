@@ -20,6 +20,7 @@
 #define PDS_FRAME_HPP
 
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 
 #include "core/point.hpp"
@@ -81,9 +82,10 @@ public:
     void set_domain(const Box& user_domain);
     void set_radius(double user_radius);
     void set_periodic(bool periodic);
-    bool periodic() const { return torus_.on(); }
+    // Asked for, whether or not the domain allows it (precision_limit()).
+    bool periodic() const { return torus_.has_value(); }
     // The periods and fundamental domain (internal frame); off when not periodic.
-    const Torus& torus() const { return torus_; }
+    const Torus& torus() const { return torus_ && torus_->on() ? *torus_ : kNoTorus; }
 
     Limit precision_limit() const;
     // Upper bound on the number of points of any pattern (Oler, 1961).
@@ -119,8 +121,10 @@ private:
     double user_radius_;
     int scale_exp_ = 0;  // internal = user * 2^scale_exp_
     Rectangle domain_;   // on the torus, x1 and y1 are x0 + px and y0 + py rounded
-    Torus torus_;
-    bool periodic_ = false;
+    // Periodicity, stored once: none for a rectangle; periods on the torus
+    // grid when asked for (off, px = 0, when the domain is too small for one).
+    std::optional<Torus> torus_;
+    static constexpr Torus kNoTorus{};
     double r_ = 0.0;     // internal radius (capped at twice the diagonal)
 };
 
