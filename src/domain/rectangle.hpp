@@ -27,6 +27,8 @@
 
 namespace pds {
 
+class Delaunay;
+
 class Rectangle {
 public:
     Rectangle() = default;
@@ -65,6 +67,12 @@ public:
         return Rectangle(Box{std::ldexp(box_.x0, k), std::ldexp(box_.y0, k), std::ldexp(box_.x1, k),
                              std::ldexp(box_.y1, k)});
     }
+
+    // The certificate of maximality on the boundary: the name of a side
+    // ("bottom", "top", "left", "right") some point of which lies farther
+    // than its radius (r, or each vertex's own on a weighted mesh) from
+    // every vertex of dt, or nullptr when every side is covered. Exact.
+    const char* uncovered_side(const Delaunay& dt, double r) const;
 
 private:
     Box box_{0.0, 0.0, 1.0, 1.0};

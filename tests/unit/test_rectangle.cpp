@@ -7,6 +7,7 @@
 
 #include "core/rng.hpp"
 #include "domain/rectangle.hpp"
+#include "mesh/delaunay.hpp"
 #include "suites.hpp"
 
 namespace {
@@ -68,6 +69,37 @@ START_TEST(scaling_is_exact) {
 }
 END_TEST
 
+// The four points (0.25 or 0.75, y0 or y1) in the unit square, meshed.
+pds::Delaunay four_points(double y0, double y1) {
+    pds::Delaunay dt(pds::Box{0.0, 0.0, 1.0, 1.0});
+    dt.reserve(8);
+    pds::VertexIndex near = 0;
+    for (double y : {y0, y1})
+        for (double x : {0.25, 0.75}) near = dt.insert(pds::Point{x, y}, near);
+    return dt;
+}
+
+START_TEST(boundary_certificate_names_the_uncovered_side) {
+    const pds::Rectangle unit(pds::Box{0.0, 0.0, 1.0, 1.0});
+    // Symmetric: the corners are 0.3536 from their nearest point.
+    const pds::Delaunay even = four_points(0.25, 0.75);
+    ck_assert_ptr_null(unit.uncovered_side(even, 0.36));
+    ck_assert_str_eq(unit.uncovered_side(even, 0.35), "bottom");
+    // Shifted down: the bottom corners are 0.32 away, the top ones 0.39.
+    const pds::Delaunay low = four_points(0.2, 0.7);
+    ck_assert_str_eq(unit.uncovered_side(low, 0.36), "top");
+    ck_assert_ptr_null(unit.uncovered_side(low, 0.4));
+    // Exact at the boundary: the corners lie exactly 0.625 from (0.5, 0.5)
+    // (0.375^2 + 0.5^2), covered by a disk of radius 0.625, not by one just below.
+    pds::Delaunay one(pds::Box{0.0, 0.0, 1.0, 1.0});
+    one.reserve(5);
+    one.insert(pds::Point{0.5, 0.5}, 0);
+    const pds::Rectangle narrow(pds::Box{0.125, 0.0, 0.875, 1.0});
+    ck_assert_ptr_null(narrow.uncovered_side(one, 0.625));
+    ck_assert_ptr_nonnull(narrow.uncovered_side(one, std::nextafter(0.625, 0.0)));
+}
+END_TEST
+
 }  // namespace
 
 Suite* rectangle_suite() {
@@ -77,6 +109,7 @@ Suite* rectangle_suite() {
     tcase_add_test(t, measures_and_count_bound);
     tcase_add_test(t, uniform_point_inside_and_spread);
     tcase_add_test(t, scaling_is_exact);
+    tcase_add_test(t, boundary_certificate_names_the_uncovered_side);
     suite_add_tcase(s, t);
     return s;
 }
