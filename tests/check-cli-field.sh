@@ -121,6 +121,17 @@ expect "--radius-map with --domain: the rule, the radii and coverage of the rect
     py field "$tmp/dom.out" 0.05 0.2 -2 1 2 4 0.04
 expect "--radius-map with --domain: --stats in units of the radii" \
     py stats "$tmp/dom.err" "$tmp/dom.out" map -2 1 2 4 0
+# At the ends of the double range (disks pi r^2 over 1e600 or 1e-398 in user units).
+for dom in "1e299 -1e300 -1e300 1e300 1e300" "1e-200 0 0 1e-199 1e-199"; do
+    xr=${dom%% *}
+    xbox=${dom#* }
+    # shellcheck disable=SC2086
+    run domx --radius-map "$img/blob.pgm" --rmin "$xr" --rmax "$(awk "BEGIN { print 4 * $xr }")" \
+        --domain $xbox --radii --stats
+    # shellcheck disable=SC2086
+    expect "--radius-map on $xbox --stats: finite, in units of the radii (got $rc)" \
+        eval '[ "$rc" -eq 0 ] && py stats "$tmp/domx.err" "$tmp/domx.out" map $xbox 0'
+done
 
 # ---- a map on the torus ----------------------------------------------------------------
 run tor $MAP --periodic --radii --verify

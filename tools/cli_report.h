@@ -29,7 +29,10 @@ struct cli_where {
  * density pi R^2 N / (4A) (the share covered by the disks of radius R/2),
  * the smallest pair distance and the mean nearest-neighbour distance in
  * units of R (pattern_stats.c; wrapped on a torus; "-" below two points),
- * and the seconds spent sampling. In count mode maximality is asked of the
+ * and the seconds spent sampling. All are computed with lengths in units of
+ * a power of two near the domain's size, so they stay finite from 1e-300 to
+ * 1e308; the coverage is "-" where the library's free area, in user units,
+ * cannot give it (overflowed or underflowed on a domain not maximal). In count mode maximality is asked of the
  * library, as a run that reached N points does not tell it. The distances
  * need a copy of the points (16 bytes each) while they are computed.
  * With a radius map (w->field) the radius is "R=RMIN..RMAX (radius map)",
