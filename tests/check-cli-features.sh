@@ -104,6 +104,8 @@ expect "$per --count 700 --periodic: every pair at least the reported R='$pr' ap
     eval '[ -n "$pr" ] && min_dist_torus "$tmp/percount.out" "$pr" 0 0 1 1'
 usage_case "$per --periodic, R over half the side (PDS_ERANGE)" \
     'radius 0\.6 does not suit the periodic domain \[0,1\)x\[0,1\)' --radius 0.6 --periodic
+usage_case "$per --periodic with an empty domain: the domain written half-open" \
+    'cannot set domain \[0,0\)x\[0,1\): ' --radius 0.1 --domain 0 0 0 1 --periodic
 
 # ---- the progress line ------------------------------------------------------------------
 # Drawn on stderr, redrawn with \r, wiped at the end; never a change to stdout.

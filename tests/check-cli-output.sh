@@ -88,6 +88,9 @@ expect "--svg --disks exits 0 (got $rc)" [ "$rc" -eq 0 ]
 expect "--svg --disks: a disk of radius R/2 per point, none overlapping (--domain)" \
     py svg "$tmp/d.svg" "$tmp/disks.out" 0.1 -2 1 3 2.5 1 0
 run tdisks --radius 0.05 --periodic --svg "$tmp/t.svg" --disks
+expect "--periodic --svg: the title gives the half-open domain" \
+    grep -q '<title>poissondisk: [0-9]* points, R = 0.05, domain \[0,1)x\[0,1), periodic</title>' \
+    "$tmp/t.svg"
 expect "--periodic --svg --disks: disks and their copies across the sides" \
     py svg "$tmp/t.svg" "$tmp/tdisks.out" 0.05 0 0 1 1 1 1
 if command -v xmllint > /dev/null 2>&1; then

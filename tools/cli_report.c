@@ -170,32 +170,44 @@ void cli_print_stats(const char *prog, const pds_sampler *s, const struct cli_wh
             maximal ? "maximal" : "not maximal", verified ? " verified" : "", space, seconds);
 }
 
+const char *cli_domain_text(char *buf, size_t size, const struct cli_where *w)
+{
+    const double *d = w->box;
+    char close = w->periodic ? ')' : ']';
+
+    snprintf(buf, size, "[%g,%g%cx[%g,%g%c", d[0], d[2], close, d[1], d[3], close);
+    return buf;
+}
+
 int cli_range_error(const char *prog, const struct cli_where *w, double radius,
                     const char *msg)
 {
-    const double *d = w->box;
-    char what[64];
-    char close = w->periodic ? ')' : ']';
+    char what[160], domain[128];
 
-    /* With a radius map the smallest radius is the one judged (radius is the largest). */
-    if (w->field != NULL) {
+    cli_domain_text(domain, sizeof domain, w);
+    /* On a plane with a radius map the smallest radius is the one judged (radius
+       is the largest): too small for double precision or for the index type. */
+    if (w->field != NULL && !w->periodic) {
         fprintf(stderr, "%s: the smallest radius of --radius-map %s, %g, is too small for the "
-                        "domain [%g,%g]x[%g,%g]: %s\n", prog, w->field->path,
-                cli_field_smallest(w->field, radius), d[0], d[2], d[1], d[3], msg);
+                        "domain %s: %s\n", prog, w->field->path,
+                cli_field_smallest(w->field, radius), domain, msg);
         return CLI_EXIT_USAGE;
     }
     /* On a torus the radius may also be too large (over half a period, after the
        period's rounding), and a count asks for a radius: the library says which. */
-    if (w->count > 0 || w->periodic) {
-        if (w->count > 0)
+    if (w->field != NULL || w->count > 0 || w->periodic) {
+        if (w->field != NULL)
+            snprintf(what, sizeof what, "the radii of --radius-map %s, %g to %g,", w->field->path,
+                     cli_field_smallest(w->field, radius), radius);
+        else if (w->count > 0)
             snprintf(what, sizeof what, "--count %zu", w->count);
         else
             snprintf(what, sizeof what, "radius %g", radius);
-        fprintf(stderr, "%s: %s does not suit the %sdomain [%g,%g%cx[%g,%g%c: %s\n", prog, what,
-                w->periodic ? "periodic " : "", d[0], d[2], close, d[1], d[3], close, msg);
+        fprintf(stderr, "%s: %s %s not suit the %sdomain %s: %s\n", prog, what,
+                w->field != NULL ? "do" : "does", w->periodic ? "periodic " : "", domain, msg);
     } else {
-        fprintf(stderr, "%s: radius %g is too small for the domain [%g,%g]x[%g,%g]: %s\n",
-                prog, radius, d[0], d[2], d[1], d[3], msg);
+        fprintf(stderr, "%s: radius %g is too small for the domain %s: %s\n", prog, radius,
+                domain, msg);
     }
     return CLI_EXIT_USAGE;
 }

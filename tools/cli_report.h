@@ -42,10 +42,17 @@ struct cli_where {
  * the rule), mean_nn the mean nearest-neighbour distance over the point's
  * own radius (pattern_field_stats); with equal radii, the values above.
  */
+/* The domain as "[x0,x1]x[y0,y1]", half-open "[x0,x1)x[y0,y1)" on a torus, in buf. */
+const char *cli_domain_text(char *buf, size_t size, const struct cli_where *w);
+
 void cli_print_stats(const char *prog, const pds_sampler *s, const struct cli_where *w,
                      int maximal, int verified, double seconds);
 
-/* The message for PDS_ERANGE ("radius R is too small for the domain ..."); returns 2. */
+/*
+ * The message for PDS_ERANGE ("radius R is too small for the domain ...",
+ * or on a torus, where the radius may also be too large, "... does not suit
+ * the periodic domain ..." with the library's reason); returns 2.
+ */
 int cli_range_error(const char *prog, const struct cli_where *w, double radius,
                     const char *msg);
 

@@ -27,11 +27,12 @@ int cli_configure(const char *prog, pds_sampler *s, const struct cli_where *w, d
     /* Always set: the default is the unit square, the library's own default. */
     const double *d = w->box;
     int rc = pds_set_domain(s, d[0], d[1], d[2], d[3]);
+    char domain[128];
     if (rc < 0) {
         if (rc == PDS_ERANGE)
             return cli_range_error(prog, w, radius, pds_errmsg(s));
-        fprintf(stderr, "%s: cannot set domain [%g,%g]x[%g,%g]: %s\n", prog, d[0], d[2], d[1],
-                d[3], pds_errmsg(s));
+        fprintf(stderr, "%s: cannot set domain %s: %s\n", prog,
+                cli_domain_text(domain, sizeof domain, w), pds_errmsg(s));
         return rc == PDS_EINVAL ? CLI_EXIT_USAGE : CLI_EXIT_LIBRARY;
     }
     if (w->periodic && (rc = pds_set_periodic(s, 1)) < 0) {

@@ -188,7 +188,8 @@ static const struct cli_option option_list[] = {
       "stretched over the domain, its top row along Y1: a point's radius is the map's "
       "at the point, linear in the grey level from --rmin (black: the densest points) "
       "to --rmax (white), bilinear between pixel centres, and each later point keeps "
-      "out of every earlier point's disk; needs --rmin and --rmax; not with --periodic" },
+      "out of every earlier point's disk; needs --rmin and --rmax; with --periodic the "
+      "map spans the torus, --rmax at most half the shorter side" },
     { "--rmin", 1, "R", 0, NULL, opt_field_radius, "a finite number > 0",
       "with --radius-map, the radius of black (grey level 0), a finite number > 0" },
     { "--rmax", 1, "R", 0, NULL, opt_field_radius, "a finite number > 0",
