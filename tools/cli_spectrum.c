@@ -61,18 +61,18 @@ static int write_all(const char *prog, const struct spectrum *sp, const struct c
 
 /* Makes the pattern of seed like the first one and adds it. Returns an exit status. */
 static int add_pattern(const char *prog, struct spectrum *sp, const struct cli_where *w,
-                       const struct cli_stages *st, uint64_t seed)
+                       const struct cli_refines *rf, uint64_t seed)
 {
     pds_sampler *s = NULL;
     int maximal, rc, status;
 
-    rc = pds_create(&s, w->count > 0 ? 1.0 : st->radius, seed);
+    rc = pds_create(&s, w->count > 0 ? 1.0 : rf->radius, seed);
     if (rc < 0)
         return cli_library_error(prog, w, rc, "cannot create a sampler with radius",
-                                 st->radius, pds_strerror(rc));
-    status = cli_configure(prog, s, w, st->radius);
+                                 rf->radius, pds_strerror(rc));
+    status = cli_configure(prog, s, w, rf->radius);
     if (status == 0)
-        status = cli_sample(prog, s, st, w, &maximal);
+        status = cli_sample(prog, s, rf, w, &maximal);
     if (status == 0)
         add_sampler(sp, s);
     pds_destroy(s);
@@ -80,7 +80,7 @@ static int add_pattern(const char *prog, struct spectrum *sp, const struct cli_w
 }
 
 int cli_write_spectrum(const char *prog, const pds_sampler *s, const struct cli_outputs *o,
-                       const struct cli_where *w, const struct cli_stages *st, uint64_t seed)
+                       const struct cli_where *w, const struct cli_refines *rf, uint64_t seed)
 {
     struct spectrum sp;
     /* With a radius map, the smallest radius: the grid then reaches past every ring. */
@@ -97,7 +97,7 @@ int cli_write_spectrum(const char *prog, const pds_sampler *s, const struct cli_
     }
     add_sampler(&sp, s);
     for (k = 1; k < o->patterns && status == 0; k++) {
-        status = add_pattern(prog, &sp, w, st, seed + k);
+        status = add_pattern(prog, &sp, w, rf, seed + k);
         if (status == CLI_EXIT_INTERRUPTED)
             fprintf(stderr, "%s: interrupted while making pattern %u of %u for the spectrum; "
                             "no spectrum written\n", prog, k + 1, o->patterns);
