@@ -1,7 +1,7 @@
 /*
  * cli_sample.c - the sampling run of the poissondisk program (see
  * cli_sample.h): configuration, the run at each radius of the --refine chain,
- * the progress line and Ctrl-C.
+ * the progress line and the Ctrl-C answer.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -114,14 +114,11 @@ int cli_sample(const char *prog, pds_sampler *s, const struct cli_refines *rf,
         fprintf(stderr, "%s: cannot follow the progress: %s\n", prog, pds_errmsg(s));
         return CLI_EXIT_LIBRARY;
     }
-    cli_interrupt_begin();
     status = run_chain(prog, s, rf, w, &bar, maximal);
-    /* From here on Ctrl-C ends the program at once, as it did before sampling. */
-    cli_interrupt_end();
     cli_progress_clear(&bar);
     /* bar lives on this stack frame: the sampler must not keep pointing at it. */
     pds_set_progress(s, NULL, NULL);
-    if (status == 0 && cli_interrupted()) /* after the run's last report */
+    if (status == 0 && cli_interrupted()) /* after the run's last report, or before it */
         status = CLI_EXIT_INTERRUPTED;
     return status;
 }

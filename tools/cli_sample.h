@@ -2,8 +2,8 @@
  * cli_sample.h - the sampling run of the poissondisk program: set the sampler
  * up from the command line, then run at each radius in turn (the radius, then
  * each --refine radius) under the --max-points cap, with the progress callback
- * set and Ctrl-C caught (cli_progress.c). Library failures become a message
- * and an exit status. Knows nothing of the option
+ * set, which stops the run once Ctrl-C was caught (cli_progress.c). Library
+ * failures become a message and an exit status. Knows nothing of the option
  * table; public API only, plain C99.
  */
 #ifndef POISSONDISK_CLI_SAMPLE_H
@@ -56,9 +56,10 @@ int cli_configure(const char *prog, pds_sampler *s, const struct cli_where *w, d
 /*
  * Runs at every radius, drawing the progress line when wanted. *maximal
  * tells whether the last run reached maximality. Returns 0,
- * CLI_EXIT_INTERRUPTED when Ctrl-C stopped the run (the points so far stay
- * in the sampler), or another exit status after a message. Ctrl-C is caught
- * only while this runs; on return the sampler has no progress callback.
+ * CLI_EXIT_INTERRUPTED when Ctrl-C stopped the run or had come before it (the
+ * points so far stay in the sampler), or another exit status after a
+ * message. Ctrl-C is caught while the caller holds cli_interrupt_begin(); on
+ * return the sampler has no progress callback.
  */
 int cli_sample(const char *prog, pds_sampler *s, const struct cli_refines *rf,
                const struct cli_where *w, int *maximal);

@@ -24,8 +24,11 @@
  *
  * While sampling (cli_sample.c), a progress callback is always set: it
  * draws the progress line when wanted (cli_progress.c) and stops the run
- * with PDS_ECANCELED once Ctrl-C was pressed; the points so far are then
- * written only with --partial.
+ * with PDS_ECANCELED once Ctrl-C was pressed. Ctrl-C is caught from the
+ * first point until the points are written, and the points are written
+ * last, after --verify, the pictures and the spectrum (which may make more
+ * patterns): a Ctrl-C at any time before leaves standard output empty
+ * unless --partial asks for the points made so far.
  *
  * Exit status: 0 success, 1 library or output failure, 2 bad arguments,
  * including values only the library can judge (PDS_EINVAL, PDS_ERANGE),
@@ -43,6 +46,7 @@
 
 #include "cli_options.h"
 #include "cli_outputs.h"
+#include "cli_progress.h"
 #include "cli_report.h"
 #include "cli_sample.h"
 
@@ -272,8 +276,9 @@ static const struct cli_table cli = {
     "nothing; the arguments after them are not read.\n"
     "An option given twice takes its last value (--refine adds a stage); of\n"
     "--progress and --no-progress the last one counts.\n"
-    "Ctrl-C stops the sampling within about a second; nothing is written then,\n"
-    "unless --partial is given. A second Ctrl-C ends the program at once.\n"
+    "Ctrl-C stops the sampling, and the spectrum's patterns, within about a\n"
+    "second; nothing is written then, unless --partial is given (the points\n"
+    "are the last output). A second Ctrl-C ends the program at once.\n"
     "Exit status: 0 success, 1 library or output error, 2 bad arguments, also\n"
     "when the library rejects a value (an empty --domain, a radius too small for\n"
     "the domain or, with --periodic, over half its shorter side), 130\n"
@@ -390,34 +395,38 @@ int main(int argc, char **argv)
     if ((status = cli_configure(PROG, s, &o.where, o.refines.radius)) != 0)
         goto done;
 
+    /* Caught until the points are written; a second Ctrl-C ends the program at once. */
+    cli_interrupt_begin();
     status = cli_sample(PROG, s, &o.refines, &o.where, &maximal);
-    if (status == EXIT_INTERRUPTED) {
+    seconds = now_seconds() - t0;
+
+    /* Verify before writing, so a failed check leaves no plausible output. */
+    if (status == 0 && o.verify) {
+        rc = pds_verify(s);
+        if (rc != PDS_DONE && rc != PDS_MORE) {
+            fprintf(stderr, PROG ": verification failed: %s\n", pds_errmsg(s));
+            status = EXIT_LIBRARY;
+        } else {
+            verified = 1;
+            maximal = rc == PDS_DONE; /* exact, so it overrides the running answer */
+        }
+    }
+    /* The files first, the spectrum's patterns too: the points are the last output. */
+    if (status == 0 && !cli_interrupted())
+        status = cli_write_pictures(PROG, s, &o.out, &o.where);
+    if (status == 0 && !cli_interrupted())
+        status = cli_write_spectrum(PROG, s, &o.out, &o.where, &o.refines, o.seed);
+    /* From here on Ctrl-C ends the program at once; one caught before still counts. */
+    cli_interrupt_end();
+    if ((status == 0 || status == EXIT_INTERRUPTED) && cli_interrupted()) {
+        status = EXIT_INTERRUPTED;
         fprintf(stderr, PROG ": interrupted after %zu points%s\n", pds_count(s),
                 o.partial ? "; writing them" : "");
         if (o.partial && cli_write_points(PROG, s, &o.out, &o.where) != 0)
             status = EXIT_LIBRARY;
         goto done;
     }
-    if (status != 0)
-        goto done;
-    seconds = now_seconds() - t0;
-
-    /* Verify before writing, so a failed check leaves no plausible output. */
-    if (o.verify) {
-        rc = pds_verify(s);
-        if (rc != PDS_DONE && rc != PDS_MORE) {
-            fprintf(stderr, PROG ": verification failed: %s\n", pds_errmsg(s));
-            status = EXIT_LIBRARY;
-            goto done;
-        }
-        verified = 1;
-        maximal = rc == PDS_DONE; /* exact, so it overrides the running answer */
-    }
-
-    /* The points, then the pictures, then the spectrum (which may make more patterns). */
-    if ((status = cli_write_points(PROG, s, &o.out, &o.where)) != 0
-        || (status = cli_write_pictures(PROG, s, &o.out, &o.where)) != 0
-        || (status = cli_write_spectrum(PROG, s, &o.out, &o.where, &o.refines, o.seed)) != 0)
+    if (status != 0 || (status = cli_write_points(PROG, s, &o.out, &o.where)) != 0)
         goto done;
 
     if (o.stats)
