@@ -125,6 +125,9 @@ class Sampler:
             if periodic:
                 self._check(_capi.need("pds_set_periodic")(handle, 1), "pds_set_periodic")
             if count is not None:
+                count = operator.index(count)
+                if count < 0:
+                    raise ValueError("count must be >= 1, got %d" % count)
                 # 0 is the library's to refuse, with its message.
                 count = _size_arg(count, "count", 0)
                 self._check(_capi.need("pds_set_count")(handle, count), "pds_set_count")
