@@ -104,6 +104,8 @@ expect "$per --count 700 --periodic: every pair at least the reported R='$pr' ap
     eval '[ -n "$pr" ] && min_dist_torus "$tmp/percount.out" "$pr" 0 0 1 1'
 usage_case "$per --periodic, R over half the side (PDS_ERANGE)" \
     'radius 0\.6 does not suit the periodic domain \[0,1\)x\[0,1\)' --radius 0.6 --periodic
+usage_case "$per --periodic with an empty domain: the domain written half-open" \
+    'cannot set domain \[0,0\)x\[0,1\): ' --radius 0.1 --domain 0 0 0 1 --periodic
 
 # ---- the progress line ------------------------------------------------------------------
 # Drawn on stderr, redrawn with \r, wiped at the end; never a change to stdout.
@@ -155,13 +157,18 @@ fi
 # run stops at its next report. Where it lands varies; the checks do not
 # depend on it.
 # interrupt NAME COMMAND...: like run, with SIGINT after the first report.
-interrupt() {
-    i_name=$1
-    shift
+# interrupt_at TEXT NAME COMMAND...: the same, once stderr holds TEXT.
+interrupt() { interrupt_at '' "$@"; }
+interrupt_at() {
+    i_text=$1
+    i_name=$2
+    shift 2
+    : > "$tmp/$i_name.err"
     "$tmp/sigdfl" "$@" > "$tmp/$i_name.out" 2> "$tmp/$i_name.err" &
     i_pid=$!
     i_polls=0
-    while [ ! -s "$tmp/$i_name.err" ] && [ "$i_polls" -lt 1200 ] && kill -0 "$i_pid" 2> /dev/null
+    while ! grep -q -- "$i_text" "$tmp/$i_name.err" && [ "$i_polls" -lt 1200 ] \
+          && kill -0 "$i_pid" 2> /dev/null
     do
         sleep 0.05
         i_polls=$((i_polls + 1))
@@ -202,6 +209,26 @@ if [ -f "$tmp/sigdfl" ]; then
         expect "SIGINT with --partial: the $k lines are the start of the uninterrupted output" \
             cmp -s "$tmp/intref.out" "$tmp/intp.out"
     fi
+
+    # --patterns K: Ctrl-C once the first pattern is complete (its 100% report),
+    # while the spectrum's sums or its other patterns are being made (100000
+    # patterns would take hours): the first pattern is not written either.
+    spec="--radius 0.02 --periodic --progress --patterns 100000 --spectrum $tmp/intspec.png"
+    # shellcheck disable=SC2086
+    interrupt_at "100%" intspec "$cli" $spec
+    expect "SIGINT during --patterns: exit 130 (got $rc)" [ "$rc" -eq 130 ]
+    expect "SIGINT during --patterns without --partial: nothing on stdout" \
+        [ ! -s "$tmp/intspec.out" ]
+    expect "SIGINT during --patterns: stderr says no spectrum was written" \
+        grep -q 'interrupted while making pattern [0-9]* of 100000 for the spectrum; no spectrum written' \
+        "$tmp/intspec.err"
+    expect "SIGINT during --patterns: no spectrum file" [ ! -e "$tmp/intspec.png" ]
+    # shellcheck disable=SC2086
+    interrupt_at "100%" intspecp "$cli" $spec --partial
+    expect "SIGINT during --patterns with --partial: exit 130 (got $rc)" [ "$rc" -eq 130 ]
+    run intspecref --radius 0.02 --periodic
+    expect "SIGINT during --patterns with --partial: the whole first pattern is written" \
+        cmp -s "$tmp/intspecref.out" "$tmp/intspecp.out"
 
     # Without a progress line the callback still listens for Ctrl-C. Nothing
     # shows when the handler is in place, so on Linux its bit in SigCgt is

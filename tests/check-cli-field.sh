@@ -121,14 +121,34 @@ expect "--radius-map with --domain: the rule, the radii and coverage of the rect
     py field "$tmp/dom.out" 0.05 0.2 -2 1 2 4 0.04
 expect "--radius-map with --domain: --stats in units of the radii" \
     py stats "$tmp/dom.err" "$tmp/dom.out" map -2 1 2 4 0
+# At the ends of the double range (disks pi r^2 over 1e600 or 1e-398 in user units).
+for dom in "1e299 -1e300 -1e300 1e300 1e300" "1e-200 0 0 1e-199 1e-199"; do
+    xr=${dom%% *}
+    xbox=${dom#* }
+    # shellcheck disable=SC2086
+    run domx --radius-map "$img/blob.pgm" --rmin "$xr" --rmax "$(awk "BEGIN { print 4 * $xr }")" \
+        --domain $xbox --radii --stats
+    # shellcheck disable=SC2086
+    expect "--radius-map on $xbox --stats: finite, in units of the radii (got $rc)" \
+        eval '[ "$rc" -eq 0 ] && py stats "$tmp/domx.err" "$tmp/domx.out" map $xbox 0'
+done
 
 # ---- a map on the torus ----------------------------------------------------------------
 run tor $MAP --periodic --radii --verify
 expect "--radius-map --periodic --verify exits 0 (got $rc)" [ "$rc" -eq 0 ]
 expect "--radius-map --periodic: points in [0,1)^2, radii within [rmin, rmax]" \
     awk '$1 < 0 || $1 >= 1 || $2 < 0 || $2 >= 1 || $3 < 0.01 || $3 > 0.04 { bad = 1 } END { exit bad || NR < 100 }' "$tmp/tor.out"
-run torbig --radius-map "$img/grad-p5.pgm" --rmin 0.01 --rmax 0.6 --periodic
-expect "--radius-map --periodic: a largest radius above half the side is refused (got $rc)" [ "$rc" -ne 0 ]
+"$cli" --help | tr -s ' \n' ' ' > "$tmp/help.txt"
+expect "--help: --radius-map works with --periodic, its limit named" \
+    grep -q -- '--radius-map FILE .* with --periodic the map spans the torus, --rmax at most half the shorter side' \
+    "$tmp/help.txt"
+# Refused for its largest radius: the message names the radii and the half-open torus,
+# not the smallest radius as too small.
+usage_case "--radius-map --periodic, --rmax over half the side (PDS_ERANGE)" \
+    'the radii of --radius-map .*grad-p5\.pgm, 0\.01 to 0\.6, do not suit the periodic domain \[0,1\)x\[0,1\): .*half the shorter period' \
+    --radius-map "$img/grad-p5.pgm" --rmin 0.01 --rmax 0.6 --periodic
+expect "--radius-map --periodic, --rmax over half the side: not called too small" \
+    eval '! grep -q "too small" "$tmp/usage.err"'
 
 # ---- a constant map is the plain sampler ---------------------------------------------------
 run const --radius-map "$img/const.pgm" --rmin 0.05 --rmax 0.05

@@ -88,6 +88,9 @@ expect "--svg --disks exits 0 (got $rc)" [ "$rc" -eq 0 ]
 expect "--svg --disks: a disk of radius R/2 per point, none overlapping (--domain)" \
     py svg "$tmp/d.svg" "$tmp/disks.out" 0.1 -2 1 3 2.5 1 0
 run tdisks --radius 0.05 --periodic --svg "$tmp/t.svg" --disks
+expect "--periodic --svg: the title gives the half-open domain" \
+    grep -q '<title>poissondisk: [0-9]* points, R = 0.05, domain \[0,1)x\[0,1), periodic</title>' \
+    "$tmp/t.svg"
 expect "--periodic --svg --disks: disks and their copies across the sides" \
     py svg "$tmp/t.svg" "$tmp/tdisks.out" 0.05 0 0 1 1 1 1
 if command -v xmllint > /dev/null 2>&1; then
@@ -150,6 +153,24 @@ expect "--periodic --stats: the distances wrap around" \
 run stats1 --radius 0.05 --max-points 1 --stats
 expect "--stats with one point: min_dist=- mean_nn=-" \
     grep -q 'N=1 .* min_dist=- mean_nn=- ' "$tmp/stats1.err"
+# At the ends of the double range: squared distances and areas in user units would
+# overflow (1e300) or underflow (1e-199); a capped pattern's free area may too, and
+# then its coverage is "-". The widest domain the library takes needs its side,
+# 3.2e308, computed in scaled units as well.
+for case in "1e299 -1e300 -1e300 1e300 1e300" "1e-200 0 0 1e-199 1e-199" \
+            "1e307 -1.6e308 -1.6e308 1.6e308 1.6e308"; do
+    xr=${case%% *}
+    xbox=${case#* }
+    for extra in "" --periodic "--max-points 10"; do
+        # shellcheck disable=SC2086
+        run xstats --radius "$xr" --domain $xbox $extra --stats
+        periodic=0
+        [ "$extra" = --periodic ] && periodic=1
+        # shellcheck disable=SC2086
+        expect "--radius $xr --domain $xbox $extra --stats: finite, as brute force (got $rc)" \
+            eval '[ "$rc" -eq 0 ] && py stats "$tmp/xstats.err" "$tmp/xstats.out" "$xr" $xbox $periodic'
+    done
+done
 
 # ---- errors ------------------------------------------------------------------------------
 usage_case "--format xml" "--format.*'xml'" --radius 0.1 --format xml

@@ -313,10 +313,22 @@ def check_plot(path):
 
 # ---- --stats --------------------------------------------------------------------------------
 
+def check_coverage(line, fields):
+    """Every field a finite number, the coverage in [0, 1] ("-" where the library's free
+    area cannot give it), and 1 when maximal."""
+    check("nan" not in line and "inf" not in line, "stats: not finite: %s" % line)
+    cov = fields["coverage"]
+    if cov != "-":
+        check(0.0 <= float(cov) <= 1.0, "stats: coverage %s outside [0, 1]" % cov)
+    if " maximal" in line and " not maximal" not in line:
+        check(cov == "1.000000000", "stats: maximal, but coverage=%s" % cov)
+
+
 def check_field_stats(fields, ref, box):
-    """--stats with --radius-map: in units of the points' own radii (suffix r)."""
-    area = (box[2] - box[0]) * (box[3] - box[1])
-    packing = sum(math.pi * p[2] * p[2] for p in ref) / (4 * area)
+    """--stats with --radius-map: in units of the points' own radii (suffix r). Areas in
+    units of the domain's sides, so that a 1e300 domain's do not overflow."""
+    w, h = box[2] - box[0], box[3] - box[1]
+    packing = sum(math.pi * (p[2] / w) * (p[2] / h) for p in ref) / 4
     check(abs(float(fields["packing"]) - packing) < 1e-6, "stats: packing %s, expected %.6f"
           % (fields["packing"], packing))
     rule, nn = math.inf, []
@@ -347,15 +359,17 @@ def check_stats(stats_path, ref_path, radius, x0, y0, x1, y1, periodic):
     with open(stats_path) as f:
         line = f.read().strip()
     fields = dict(tok.split("=", 1) for tok in line.split() if "=" in tok)
+    check_coverage(line, fields)
     if radius == "map":
         return check_field_stats(fields, ref, box)
     r = float(radius)
-    area = (box[2] - box[0]) * (box[3] - box[1])
-    packing = math.pi * r * r * len(ref) / (4 * area)
+    # Lengths in units of R, so that any scale works (a 3.2e308 side is inf in user units).
+    ref = [(x / r, y / r) for x, y in ref]
+    w, h = box[2] / r - box[0] / r, box[3] / r - box[1] / r
+    packing = math.pi * len(ref) / (4 * w * h)
     check(abs(float(fields["packing"]) - packing) < 1e-6, "stats: packing %s, expected %.6f"
           % (fields["packing"], packing))
     nn = []
-    w, h = box[2] - box[0], box[3] - box[1]
     for i, (x, y) in enumerate(ref):
         best = math.inf
         for j, (u, v) in enumerate(ref):
@@ -366,7 +380,7 @@ def check_stats(stats_path, ref_path, radius, x0, y0, x1, y1, periodic):
                     dy -= h * round(dy / h)
                 best = min(best, math.hypot(dx, dy))
         nn.append(best)
-    want_min, want_mean = min(nn) / r, sum(nn) / len(nn) / r
+    want_min, want_mean = min(nn), sum(nn) / len(nn)
     got_min = float(fields["min_dist"].rstrip("R"))
     got_mean = float(fields["mean_nn"].rstrip("R"))
     check(abs(got_min - want_min) < 1e-8, "stats: min_dist %r, brute force %.9f" % (got_min, want_min))

@@ -68,7 +68,7 @@ int cli_outputs_option(struct cli_outputs *o, const char *name, const char *valu
     return CLI_BAD(0); /* not an output option: the table's mistake */
 }
 
-const char *cli_outputs_check(const struct cli_outputs *o, const struct cli_stages *st,
+const char *cli_outputs_check(const struct cli_outputs *o, const struct cli_refines *rf,
                               const struct cli_where *w, int verify, int stats, int partial,
                               char *msg, size_t size)
 {
@@ -77,8 +77,8 @@ const char *cli_outputs_check(const struct cli_outputs *o, const struct cli_stag
     if (o->spectrum_from != NULL) {
         /* Nothing is sampled: the options that make or write a pattern have no object. */
         const char *other = w->count > 0 ? "--count"
-                          : st->nrefine > 0 ? "--refine"
-                          : st->max_points > 0 ? "--max-points"
+                          : rf->nrefine > 0 ? "--refine"
+                          : rf->max_points > 0 ? "--max-points"
                           : verify ? "--verify"
                           : stats ? "--stats"
                           : partial ? "--partial"

@@ -45,7 +45,7 @@ struct cli_outputs {
  * NULL, or why the options cannot go together (written into msg).
  */
 int cli_outputs_option(struct cli_outputs *o, const char *name, const char *value);
-const char *cli_outputs_check(const struct cli_outputs *o, const struct cli_stages *st,
+const char *cli_outputs_check(const struct cli_outputs *o, const struct cli_refines *rf,
                               const struct cli_where *w, int verify, int stats, int partial,
                               char *msg, size_t size);
 
@@ -70,12 +70,12 @@ int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_
 /*
  * Writes the spectrum outputs (cli_spectrum.c): of s and, with --patterns K,
  * of K-1 more patterns made like s with the seeds seed+1 .. seed+K-1 (the
- * same stages, domain and options). The R of the frequency axis is
+ * same radii, domain and options). The R of the frequency axis is
  * pds_radius(s), with a radius map the smallest radius. Returns 0, CLI_EXIT_INTERRUPTED (Ctrl-C
  * while making them: no spectrum file written) or another exit status.
  */
 int cli_write_spectrum(const char *prog, const pds_sampler *s, const struct cli_outputs *o,
-                       const struct cli_where *w, const struct cli_stages *st, uint64_t seed);
+                       const struct cli_where *w, const struct cli_refines *rf, uint64_t seed);
 
 /*
  * --spectrum-from: the spectrum outputs of the patterns read from the file

@@ -60,9 +60,9 @@ int cli_progress_report(void *user, size_t count, double done)
 
     if (p->f != NULL) {
         len = snprintf(line, sizeof line, "%s: ", p->prog);
-        if (p->nstages > 1 && len < (int)sizeof line)
-            len += snprintf(line + len, sizeof line - (size_t)len, "stage %u/%u ", p->stage,
-                            p->nstages);
+        if (p->nruns > 1 && len < (int)sizeof line)
+            len += snprintf(line + len, sizeof line - (size_t)len, "stage %u/%u ", p->run,
+                            p->nruns);
         if (len < (int)sizeof line)
             len += snprintf(line + len, sizeof line - (size_t)len, "%3d%% %zu", (int)(done * 100),
                             count);

@@ -18,8 +18,8 @@ struct cli_progress {
     FILE *f;          /* where the line is drawn; NULL: no line, Ctrl-C only */
     const char *prog; /* the line's prefix */
     size_t target;    /* the count asked for (--count), or 0 */
-    unsigned stage;   /* 1-based stage of the run, shown when nstages > 1 */
-    unsigned nstages;
+    unsigned run;     /* 1-based run of the chain (the radius, then each --refine), shown when nruns > 1 */
+    unsigned nruns;
     int width;        /* characters drawn last, so that the line can be wiped */
 };
 

@@ -29,7 +29,10 @@ struct cli_where {
  * density pi R^2 N / (4A) (the share covered by the disks of radius R/2),
  * the smallest pair distance and the mean nearest-neighbour distance in
  * units of R (pattern_stats.c; wrapped on a torus; "-" below two points),
- * and the seconds spent sampling. In count mode maximality is asked of the
+ * and the seconds spent sampling. All are computed with lengths in units of
+ * a power of two near the domain's size, so they stay finite from 1e-300 to
+ * 1e308; the coverage is "-" where the library's free area, in user units,
+ * cannot give it (overflowed or underflowed on a domain not maximal). In count mode maximality is asked of the
  * library, as a run that reached N points does not tell it. The distances
  * need a copy of the points (16 bytes each) while they are computed.
  * With a radius map (w->field) the radius is "R=RMIN..RMAX (radius map)",
@@ -39,10 +42,17 @@ struct cli_where {
  * the rule), mean_nn the mean nearest-neighbour distance over the point's
  * own radius (pattern_field_stats); with equal radii, the values above.
  */
+/* The domain as "[x0,x1]x[y0,y1]", half-open "[x0,x1)x[y0,y1)" on a torus, in buf. */
+const char *cli_domain_text(char *buf, size_t size, const struct cli_where *w);
+
 void cli_print_stats(const char *prog, const pds_sampler *s, const struct cli_where *w,
                      int maximal, int verified, double seconds);
 
-/* The message for PDS_ERANGE ("radius R is too small for the domain ..."); returns 2. */
+/*
+ * The message for PDS_ERANGE ("radius R is too small for the domain ...",
+ * or on a torus, where the radius may also be too large, "... does not suit
+ * the periodic domain ..." with the library's reason); returns 2.
+ */
 int cli_range_error(const char *prog, const struct cli_where *w, double radius,
                     const char *msg);
 

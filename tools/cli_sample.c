@@ -1,6 +1,7 @@
 /*
  * cli_sample.c - the sampling run of the poissondisk program (see
- * cli_sample.h): configuration, the stages, the progress line and Ctrl-C.
+ * cli_sample.h): configuration, the run at each radius of the --refine chain,
+ * the progress line and the Ctrl-C answer.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -26,12 +27,13 @@ int cli_configure(const char *prog, pds_sampler *s, const struct cli_where *w, d
 {
     /* Always set: the default is the unit square, the library's own default. */
     const double *d = w->box;
+    char domain[128];
     int rc = pds_set_domain(s, d[0], d[1], d[2], d[3]);
     if (rc < 0) {
         if (rc == PDS_ERANGE)
             return cli_range_error(prog, w, radius, pds_errmsg(s));
-        fprintf(stderr, "%s: cannot set domain [%g,%g]x[%g,%g]: %s\n", prog, d[0], d[2], d[1],
-                d[3], pds_errmsg(s));
+        fprintf(stderr, "%s: cannot set domain %s: %s\n", prog,
+                cli_domain_text(domain, sizeof domain, w), pds_errmsg(s));
         return rc == PDS_EINVAL ? CLI_EXIT_USAGE : CLI_EXIT_LIBRARY;
     }
     if (w->periodic && (rc = pds_set_periodic(s, 1)) < 0) {
@@ -52,29 +54,29 @@ int cli_configure(const char *prog, pds_sampler *s, const struct cli_where *w, d
 }
 
 /*
- * Run stage after stage: the initial radius, then each --refine radius.
+ * Runs at each radius in turn: the initial radius, then each --refine radius.
  * *maximal tells whether the last run reached maximality. Returns an exit
  * status; CLI_EXIT_INTERRUPTED when Ctrl-C stopped a run (the points so far stay).
  */
-static int run_stages(const char *prog, pds_sampler *s, const struct cli_stages *st,
+static int run_chain(const char *prog, pds_sampler *s, const struct cli_refines *rf,
                       const struct cli_where *w, struct cli_progress *bar, int *maximal)
 {
-    size_t total = 0, stage;
+    size_t total = 0, k;
     int rc;
 
     *maximal = 0;
-    for (stage = 0; stage <= st->nrefine; stage++) {
-        if (stage > 0) {
-            rc = pds_refine(s, st->refine[stage - 1]);
+    for (k = 0; k <= rf->nrefine; k++) {
+        if (k > 0) {
+            rc = pds_refine(s, rf->refine[k - 1]);
             if (rc < 0)
                 return cli_library_error(prog, w, rc, "cannot refine to radius",
-                                         st->refine[stage - 1], pds_errmsg(s));
+                                         rf->refine[k - 1], pds_errmsg(s));
         }
-        /* Once the cap is used up, later stages only lower the radius. */
-        if (st->max_points == 0 || total < st->max_points) {
+        /* Once the cap is used up, the later radii only lower the radius. */
+        if (rf->max_points == 0 || total < rf->max_points) {
             size_t added = 0;
-            size_t max_new = st->max_points == 0 ? 0 : st->max_points - total;
-            bar->stage = (unsigned)stage + 1;
+            size_t max_new = rf->max_points == 0 ? 0 : rf->max_points - total;
+            bar->run = (unsigned)k + 1;
             rc = pds_run(s, max_new, &added);
             total += added;
             if (rc == PDS_ECANCELED)
@@ -95,7 +97,7 @@ static int run_stages(const char *prog, pds_sampler *s, const struct cli_stages 
     return 0;
 }
 
-int cli_sample(const char *prog, pds_sampler *s, const struct cli_stages *st,
+int cli_sample(const char *prog, pds_sampler *s, const struct cli_refines *rf,
                const struct cli_where *w, int *maximal)
 {
     struct cli_progress bar;
@@ -104,22 +106,19 @@ int cli_sample(const char *prog, pds_sampler *s, const struct cli_stages *st,
     *maximal = 0;
     memset(&bar, 0, sizeof bar);
     /* The callback is set even without the line: it is how Ctrl-C stops a run. */
-    bar.f = st->progress == 1 || (st->progress == -1 && isatty(STDERR_FILENO)) ? stderr : NULL;
+    bar.f = rf->progress == 1 || (rf->progress == -1 && isatty(STDERR_FILENO)) ? stderr : NULL;
     bar.prog = prog;
     bar.target = w->count;
-    bar.nstages = (unsigned)st->nrefine + 1;
+    bar.nruns = (unsigned)rf->nrefine + 1;
     if (pds_set_progress(s, cli_progress_report, &bar) < 0) {
         fprintf(stderr, "%s: cannot follow the progress: %s\n", prog, pds_errmsg(s));
         return CLI_EXIT_LIBRARY;
     }
-    cli_interrupt_begin();
-    status = run_stages(prog, s, st, w, &bar, maximal);
-    /* From here on Ctrl-C ends the program at once, as it did before sampling. */
-    cli_interrupt_end();
+    status = run_chain(prog, s, rf, w, &bar, maximal);
     cli_progress_clear(&bar);
     /* bar lives on this stack frame: the sampler must not keep pointing at it. */
     pds_set_progress(s, NULL, NULL);
-    if (status == 0 && cli_interrupted()) /* after the run's last report */
+    if (status == 0 && cli_interrupted()) /* after the run's last report, or before it */
         status = CLI_EXIT_INTERRUPTED;
     return status;
 }

@@ -1,10 +1,10 @@
 /*
  * cli_sample.h - the sampling run of the poissondisk program: set the sampler
- * up from the command line, then run stage after stage (the radius, then each
- * --refine radius) under the --max-points cap, with the progress callback set
- * and Ctrl-C caught (cli_progress.c). Library failures become a message and
- * an exit status. Knows nothing of the option table; public API only, plain
- * C99.
+ * up from the command line, then run at each radius in turn (the radius, then
+ * each --refine radius) under the --max-points cap, with the progress callback
+ * set, which stops the run once Ctrl-C was caught (cli_progress.c). Library
+ * failures become a message and an exit status. Knows nothing of the option
+ * table; public API only, plain C99.
  */
 #ifndef POISSONDISK_CLI_SAMPLE_H
 #define POISSONDISK_CLI_SAMPLE_H
@@ -27,8 +27,8 @@
    what a shell reports for a command ended by Ctrl-C. */
 enum { CLI_EXIT_LIBRARY = 1, CLI_EXIT_INTERRUPTED = 130 };
 
-/* The stages the command line asks for. */
-struct cli_stages {
+/* The radii the command line asks for, each run in turn ("--refine" chain). */
+struct cli_refines {
     double radius;     /* --radius; the library ignores it in count mode and with a
                           radius map */
     double *refine;    /* the --refine radii in command-line order */
@@ -54,13 +54,14 @@ int cli_library_error(const char *prog, const struct cli_where *w, int rc, const
 int cli_configure(const char *prog, pds_sampler *s, const struct cli_where *w, double radius);
 
 /*
- * Runs every stage, drawing the progress line when wanted. *maximal tells
- * whether the last stage reached maximality. Returns 0, CLI_EXIT_INTERRUPTED
- * when Ctrl-C stopped the run (the points so far stay in the sampler), or
- * another exit status after a message. Ctrl-C is caught only while this
- * runs; on return the sampler has no progress callback.
+ * Runs at every radius, drawing the progress line when wanted. *maximal
+ * tells whether the last run reached maximality. Returns 0,
+ * CLI_EXIT_INTERRUPTED when Ctrl-C stopped the run or had come before it (the
+ * points so far stay in the sampler), or another exit status after a
+ * message. Ctrl-C is caught while the caller holds cli_interrupt_begin(); on
+ * return the sampler has no progress callback.
  */
-int cli_sample(const char *prog, pds_sampler *s, const struct cli_stages *st,
+int cli_sample(const char *prog, pds_sampler *s, const struct cli_refines *rf,
                const struct cli_where *w, int *maximal);
 
 #endif /* POISSONDISK_CLI_SAMPLE_H */

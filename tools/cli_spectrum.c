@@ -2,7 +2,10 @@
  * cli_spectrum.c - the spectrum outputs of the poissondisk program (see
  * cli_outputs.h): the patterns averaged (made here, or read with
  * --spectrum-from), then the PNG, the CSV and the plot (spectrum_out.h).
- * The frequency grid reaches 2/R along each axis (spectrum.h).
+ * The frequency grid reaches 2/R along each axis (spectrum.h). The sums
+ * cost N points times the grid per pattern, seconds at small R: they stop
+ * between chunks of points once Ctrl-C was caught (cli_progress.h), as the
+ * sampling does at its next progress report.
  */
 #include "cli_outputs.h"
 
@@ -11,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli_progress.h"
 #include "points_in.h"
 #include "spectrum.h"
 #include "spectrum_out.h"
@@ -18,17 +22,21 @@
 #define FMAX_TIMES_R 2.0 /* the grid reaches this many times 1/R */
 #define CHUNK_POINTS 4096
 
-/* Adds every point of s to the spectrum as one pattern. */
-static void add_sampler(struct spectrum *sp, const pds_sampler *s)
+/* Adds every point of s to the spectrum as one pattern. Returns 0, or
+   CLI_EXIT_INTERRUPTED once Ctrl-C was caught (the sums are then partial). */
+static int add_sampler(struct spectrum *sp, const pds_sampler *s)
 {
     static double xy[2 * CHUNK_POINTS];
     size_t first = 0, got;
 
     while ((got = pds_points(s, first, CHUNK_POINTS, xy)) > 0) {
+        if (cli_interrupted())
+            return CLI_EXIT_INTERRUPTED;
         spectrum_add(sp, xy, got);
         first += got;
     }
     spectrum_end_pattern(sp);
+    return cli_interrupted() ? CLI_EXIT_INTERRUPTED : 0;
 }
 
 /* Writes the three outputs asked for. Returns 0 or an exit status. */
@@ -61,26 +69,26 @@ static int write_all(const char *prog, const struct spectrum *sp, const struct c
 
 /* Makes the pattern of seed like the first one and adds it. Returns an exit status. */
 static int add_pattern(const char *prog, struct spectrum *sp, const struct cli_where *w,
-                       const struct cli_stages *st, uint64_t seed)
+                       const struct cli_refines *rf, uint64_t seed)
 {
     pds_sampler *s = NULL;
     int maximal, rc, status;
 
-    rc = pds_create(&s, w->count > 0 ? 1.0 : st->radius, seed);
+    rc = pds_create(&s, w->count > 0 ? 1.0 : rf->radius, seed);
     if (rc < 0)
         return cli_library_error(prog, w, rc, "cannot create a sampler with radius",
-                                 st->radius, pds_strerror(rc));
-    status = cli_configure(prog, s, w, st->radius);
+                                 rf->radius, pds_strerror(rc));
+    status = cli_configure(prog, s, w, rf->radius);
     if (status == 0)
-        status = cli_sample(prog, s, st, w, &maximal);
+        status = cli_sample(prog, s, rf, w, &maximal);
     if (status == 0)
-        add_sampler(sp, s);
+        status = add_sampler(sp, s);
     pds_destroy(s);
     return status;
 }
 
 int cli_write_spectrum(const char *prog, const pds_sampler *s, const struct cli_outputs *o,
-                       const struct cli_where *w, const struct cli_stages *st, uint64_t seed)
+                       const struct cli_where *w, const struct cli_refines *rf, uint64_t seed)
 {
     struct spectrum sp;
     /* With a radius map, the smallest radius: the grid then reaches past every ring. */
@@ -95,13 +103,12 @@ int cli_write_spectrum(const char *prog, const pds_sampler *s, const struct cli_
         fprintf(stderr, "%s: out of memory for the spectrum\n", prog);
         return CLI_EXIT_LIBRARY;
     }
-    add_sampler(&sp, s);
-    for (k = 1; k < o->patterns && status == 0; k++) {
-        status = add_pattern(prog, &sp, w, st, seed + k);
-        if (status == CLI_EXIT_INTERRUPTED)
-            fprintf(stderr, "%s: interrupted while making pattern %u of %u for the spectrum; "
-                            "no spectrum written\n", prog, k + 1, o->patterns);
-    }
+    status = add_sampler(&sp, s);
+    for (k = 1; k < o->patterns && status == 0; k++)
+        status = add_pattern(prog, &sp, w, rf, seed + k);
+    if (status == CLI_EXIT_INTERRUPTED)
+        fprintf(stderr, "%s: interrupted while making pattern %u of %u for the spectrum; "
+                        "no spectrum written\n", prog, k, o->patterns);
     if (status == 0)
         status = write_all(prog, &sp, o, radius);
     spectrum_free(&sp);

@@ -39,6 +39,7 @@ int pattern_write_svg(const struct pattern *p, int disks, const char *path)
     double dot = p->dot > 0 ? p->dot : (p->radii != NULL ? p->rmin : p->radius) / 8;
     FILE *f = fopen(path, "w");
     int rc = 0, i, j;
+    char close = p->periodic ? ')' : ']';
 
     if (f == NULL)
         return -1;
@@ -46,14 +47,15 @@ int pattern_write_svg(const struct pattern *p, int disks, const char *path)
                "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
                "width=\"%.0f\" height=\"%.0f\" viewBox=\"%.10g %.10g %.10g %.10g\">\n",
             vw * scale, vh * scale, b[0] - margin, b[1] - margin, vw, vh);
+    /* A torus is half-open: its points lie in [x0,x1)x[y0,y1). */
     if (p->radii != NULL)
         fprintf(f, "<title>poissondisk: %zu points, radius map from %.10g to %.10g, domain "
-                   "[%.10g,%.10g]x[%.10g,%.10g]</title>\n", p->n, p->rmin, p->radius, b[0],
-                b[2], b[1], b[3]);
+                   "[%.10g,%.10g%cx[%.10g,%.10g%c%s</title>\n", p->n, p->rmin, p->radius,
+                b[0], b[2], close, b[1], b[3], close, p->periodic ? ", periodic" : "");
     else
         fprintf(f, "<title>poissondisk: %zu points, R = %.10g, domain "
-                   "[%.10g,%.10g]x[%.10g,%.10g]%s</title>\n", p->n, p->radius, b[0], b[2],
-                b[1], b[3], p->periodic ? ", periodic" : "");
+                   "[%.10g,%.10g%cx[%.10g,%.10g%c%s</title>\n", p->n, p->radius, b[0], b[2],
+                close, b[1], b[3], close, p->periodic ? ", periodic" : "");
     fprintf(f, "<desc>y grows upwards: the point (x, y) is drawn at (x, %.10g - y)</desc>\n",
             b[1] + b[3]);
     fprintf(f, "<defs><clipPath id=\"box\"><rect x=\"%.10g\" y=\"%.10g\" width=\"%.10g\" "

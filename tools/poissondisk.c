@@ -3,7 +3,7 @@
  *
  * Generates a maximal Poisson-disk pattern and writes one "x y" line per
  * point to stdout, in insertion order, with %.17g so every value reads back
- * as exactly the same double. Optional refinement stages (--refine) continue
+ * as exactly the same double. Optional refinements (--refine) continue
  * the same pattern at smaller radii; --max-points caps the total. --count
  * lets the library choose the radius for an exact number of points instead,
  * and --periodic makes the pattern tile the plane; --radius-map gives each
@@ -16,7 +16,7 @@
  * the parsing, the defaults, the usage line and the --help text from it, so
  * they cannot disagree. Arguments are read left to right; --help or
  * --version prints and ends the program there, without sampling. The
- * sampling itself, stage after stage, is in cli_sample.c.
+ * sampling itself, radius after radius, is in cli_sample.c.
  *
  * The library is used through the public header only, like any client, so it
  * doubles as a worked example of the C API. It is plain C99 plus
@@ -24,8 +24,11 @@
  *
  * While sampling (cli_sample.c), a progress callback is always set: it
  * draws the progress line when wanted (cli_progress.c) and stops the run
- * with PDS_ECANCELED once Ctrl-C was pressed; the points so far are then
- * written only with --partial.
+ * with PDS_ECANCELED once Ctrl-C was pressed. Ctrl-C is caught from the
+ * first point until the points are written, and the points are written
+ * last, after --verify, the pictures and the spectrum (which may make more
+ * patterns): a Ctrl-C at any time before leaves standard output empty
+ * unless --partial asks for the points made so far.
  *
  * Exit status: 0 success, 1 library or output failure, 2 bad arguments,
  * including values only the library can judge (PDS_EINVAL, PDS_ERANGE),
@@ -43,6 +46,7 @@
 
 #include "cli_options.h"
 #include "cli_outputs.h"
+#include "cli_progress.h"
 #include "cli_report.h"
 #include "cli_sample.h"
 
@@ -55,7 +59,7 @@ struct options {
     uint64_t seed;
     struct cli_where where;   /* --domain, --periodic, --count */
     struct cli_field field;   /* --radius-map, --rmin, --rmax */
-    struct cli_stages stages; /* --radius, --refine, --max-points, --progress */
+    struct cli_refines refines;/* --radius, --refine, --max-points, --progress */
     struct cli_outputs out;   /* --format, --output, --svg, --png, --spectrum... */
     int verify;
     int stats;
@@ -73,14 +77,14 @@ static int parse_radius(const char *text, double *out)
 static int opt_radius(void *ctx, const struct cli_option *opt, const char *const *v)
 {
     (void)opt;
-    return parse_radius(v[0], &((struct options *)ctx)->stages.radius);
+    return parse_radius(v[0], &((struct options *)ctx)->refines.radius);
 }
 
 static int opt_refine(void *ctx, const struct cli_option *opt, const char *const *v)
 {
-    struct cli_stages *st = &((struct options *)ctx)->stages;
+    struct cli_refines *rf = &((struct options *)ctx)->refines;
     (void)opt;
-    return parse_radius(v[0], &st->refine[st->nrefine++]);
+    return parse_radius(v[0], &rf->refine[rf->nrefine++]);
 }
 
 static int opt_radius_map(void *ctx, const struct cli_option *opt, const char *const *v)
@@ -119,7 +123,7 @@ static int parse_points(const char *text, size_t *out)
 static int opt_max_points(void *ctx, const struct cli_option *opt, const char *const *v)
 {
     (void)opt;
-    return parse_points(v[0], &((struct options *)ctx)->stages.max_points);
+    return parse_points(v[0], &((struct options *)ctx)->refines.max_points);
 }
 
 static int opt_count(void *ctx, const struct cli_option *opt, const char *const *v)
@@ -155,7 +159,7 @@ static int opt_flag(void *ctx, const struct cli_option *opt, const char *const *
     else if (strcmp(opt->name, "--partial") == 0)
         o->partial = 1;
     else
-        o->stages.progress = strcmp(opt->name, "--progress") == 0;
+        o->refines.progress = strcmp(opt->name, "--progress") == 0;
     return CLI_OK;
 }
 
@@ -188,7 +192,8 @@ static const struct cli_option option_list[] = {
       "stretched over the domain, its top row along Y1: a point's radius is the map's "
       "at the point, linear in the grey level from --rmin (black: the densest points) "
       "to --rmax (white), bilinear between pixel centres, and each later point keeps "
-      "out of every earlier point's disk; needs --rmin and --rmax; not with --periodic" },
+      "out of every earlier point's disk; needs --rmin and --rmax; with --periodic the "
+      "map spans the torus, --rmax at most half the shorter side" },
     { "--rmin", 1, "R", 0, NULL, opt_field_radius, "a finite number > 0",
       "with --radius-map, the radius of black (grey level 0), a finite number > 0" },
     { "--rmax", 1, "R", 0, NULL, opt_field_radius, "a finite number > 0",
@@ -271,8 +276,9 @@ static const struct cli_table cli = {
     "nothing; the arguments after them are not read.\n"
     "An option given twice takes its last value (--refine adds a stage); of\n"
     "--progress and --no-progress the last one counts.\n"
-    "Ctrl-C stops the sampling within about a second; nothing is written then,\n"
-    "unless --partial is given. A second Ctrl-C ends the program at once.\n"
+    "Ctrl-C stops the sampling, and the spectrum's patterns, within about a\n"
+    "second; nothing is written then, unless --partial is given (the points\n"
+    "are the last output). A second Ctrl-C ends the program at once.\n"
     "Exit status: 0 success, 1 library or output error, 2 bad arguments, also\n"
     "when the library rejects a value (an empty --domain, a radius too small for\n"
     "the domain or, with --periodic, over half its shorter side), 130\n"
@@ -282,15 +288,15 @@ static const struct cli_table cli = {
 /* Returns 0 to go on, CLI_STOP (--help, --version), or an exit status. */
 static int parse_args(int argc, char **argv, struct options *o)
 {
-    struct cli_stages *st = &o->stages;
+    struct cli_refines *rf = &o->refines;
     const struct cli_field *f = &o->field;
     char why[160];
     size_t k;
     int rc;
 
     /* At most one --refine per two arguments; argc bounds them all. */
-    st->refine = malloc((size_t)argc * sizeof *st->refine);
-    if (st->refine == NULL) {
+    rf->refine = malloc((size_t)argc * sizeof *rf->refine);
+    if (rf->refine == NULL) {
         fputs(PROG ": out of memory\n", stderr);
         return EXIT_LIBRARY;
     }
@@ -309,18 +315,18 @@ static int parse_args(int argc, char **argv, struct options *o)
             return cli_usage_error(&cli, "--radius-map cannot be used with --spectrum-from: "
                                    "the patterns are read, not made");
     }
-    if (o->where.count > 0 && st->nrefine > 0)
+    if (o->where.count > 0 && rf->nrefine > 0)
         return cli_usage_error(&cli, "--refine cannot be used with --count: the library "
                                "chooses the radius");
-    if (cli_outputs_check(&o->out, st, &o->where, o->verify, o->stats, o->partial, why,
+    if (cli_outputs_check(&o->out, rf, &o->where, o->verify, o->stats, o->partial, why,
                           sizeof why) != NULL)
         return cli_usage_error(&cli, "%s", why);
-    /* Checked now rather than by pds_refine once the earlier stages ran. */
-    for (k = 0; k < st->nrefine; k++) {
-        double before = k > 0 ? st->refine[k - 1] : f->path != NULL ? f->rmax : st->radius;
-        if (st->refine[k] > before)
+    /* Checked now rather than by pds_refine once the earlier radii ran. */
+    for (k = 0; k < rf->nrefine; k++) {
+        double before = k > 0 ? rf->refine[k - 1] : f->path != NULL ? f->rmax : rf->radius;
+        if (rf->refine[k] > before)
             return cli_usage_error(&cli, "--refine %g is larger than the radius before it, %g",
-                                   st->refine[k], before);
+                                   rf->refine[k], before);
     }
     return 0;
 }
@@ -344,7 +350,7 @@ int main(int argc, char **argv)
 
     memset(&o, 0, sizeof o);
     o.action = ACT_SAMPLE;
-    o.stages.progress = -1;
+    o.refines.progress = -1;
     setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
 
     status = parse_args(argc, argv, &o);
@@ -360,18 +366,18 @@ int main(int argc, char **argv)
     if (status != 0)
         goto done;
     if (o.out.spectrum_from != NULL) { /* nothing to sample */
-        status = cli_spectrum_from_file(PROG, &o.out, &o.where, o.stages.radius);
+        status = cli_spectrum_from_file(PROG, &o.out, &o.where, o.refines.radius);
         goto done;
     }
     if (o.field.path != NULL) {
         if ((status = cli_field_load(PROG, &o.field)) != 0)
             goto done;
         o.where.field = &o.field;
-        /* The radius of the sampler, and what each stage refines from: the largest. */
-        o.stages.radius = o.field.hi;
-        if (o.stages.nrefine > 0 && o.stages.refine[0] > o.field.hi) {
+        /* The radius of the sampler, and what --refine refines from: the largest. */
+        o.refines.radius = o.field.hi;
+        if (o.refines.nrefine > 0 && o.refines.refine[0] > o.field.hi) {
             status = cli_usage_error(&cli, "--refine %g is larger than the largest radius of "
-                                     "--radius-map %s, %g", o.stages.refine[0], o.field.path,
+                                     "--radius-map %s, %g", o.refines.refine[0], o.field.path,
                                      o.field.hi);
             goto done;
         }
@@ -379,44 +385,48 @@ int main(int argc, char **argv)
 
     t0 = now_seconds();
     /* In count mode the library ignores the radius given here. */
-    rc = pds_create(&s, o.where.count > 0 ? 1.0 : o.stages.radius, o.seed);
+    rc = pds_create(&s, o.where.count > 0 ? 1.0 : o.refines.radius, o.seed);
     if (rc < 0) {
         /* No handle, so no pds_errmsg(): the code's text is all there is. */
         status = cli_library_error(PROG, &o.where, rc, "cannot create a sampler with radius",
-                                   o.stages.radius, pds_strerror(rc));
+                                   o.refines.radius, pds_strerror(rc));
         goto done;
     }
-    if ((status = cli_configure(PROG, s, &o.where, o.stages.radius)) != 0)
+    if ((status = cli_configure(PROG, s, &o.where, o.refines.radius)) != 0)
         goto done;
 
-    status = cli_sample(PROG, s, &o.stages, &o.where, &maximal);
-    if (status == EXIT_INTERRUPTED) {
+    /* Caught until the points are written; a second Ctrl-C ends the program at once. */
+    cli_interrupt_begin();
+    status = cli_sample(PROG, s, &o.refines, &o.where, &maximal);
+    seconds = now_seconds() - t0;
+
+    /* Verify before writing, so a failed check leaves no plausible output. */
+    if (status == 0 && o.verify) {
+        rc = pds_verify(s);
+        if (rc != PDS_DONE && rc != PDS_MORE) {
+            fprintf(stderr, PROG ": verification failed: %s\n", pds_errmsg(s));
+            status = EXIT_LIBRARY;
+        } else {
+            verified = 1;
+            maximal = rc == PDS_DONE; /* exact, so it overrides the running answer */
+        }
+    }
+    /* The files first, the spectrum's patterns too: the points are the last output. */
+    if (status == 0 && !cli_interrupted())
+        status = cli_write_pictures(PROG, s, &o.out, &o.where);
+    if (status == 0 && !cli_interrupted())
+        status = cli_write_spectrum(PROG, s, &o.out, &o.where, &o.refines, o.seed);
+    /* From here on Ctrl-C ends the program at once; one caught before still counts. */
+    cli_interrupt_end();
+    if ((status == 0 || status == EXIT_INTERRUPTED) && cli_interrupted()) {
+        status = EXIT_INTERRUPTED;
         fprintf(stderr, PROG ": interrupted after %zu points%s\n", pds_count(s),
                 o.partial ? "; writing them" : "");
         if (o.partial && cli_write_points(PROG, s, &o.out, &o.where) != 0)
             status = EXIT_LIBRARY;
         goto done;
     }
-    if (status != 0)
-        goto done;
-    seconds = now_seconds() - t0;
-
-    /* Verify before writing, so a failed check leaves no plausible output. */
-    if (o.verify) {
-        rc = pds_verify(s);
-        if (rc != PDS_DONE && rc != PDS_MORE) {
-            fprintf(stderr, PROG ": verification failed: %s\n", pds_errmsg(s));
-            status = EXIT_LIBRARY;
-            goto done;
-        }
-        verified = 1;
-        maximal = rc == PDS_DONE; /* exact, so it overrides the running answer */
-    }
-
-    /* The points, then the pictures, then the spectrum (which may make more patterns). */
-    if ((status = cli_write_points(PROG, s, &o.out, &o.where)) != 0
-        || (status = cli_write_pictures(PROG, s, &o.out, &o.where)) != 0
-        || (status = cli_write_spectrum(PROG, s, &o.out, &o.where, &o.stages, o.seed)) != 0)
+    if (status != 0 || (status = cli_write_points(PROG, s, &o.out, &o.where)) != 0)
         goto done;
 
     if (o.stats)
@@ -425,6 +435,6 @@ int main(int argc, char **argv)
 done:
     pds_destroy(s);
     cli_field_free(&o.field);
-    free(o.stages.refine);
+    free(o.refines.refine);
     return status;
 }

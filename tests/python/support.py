@@ -7,6 +7,8 @@ import (POISSONDISK_TEST_NO_NUMPY=1), so the same tests check the list fallback.
 
 import os
 import re
+import subprocess
+import sys
 import unittest
 
 try:
@@ -58,6 +60,16 @@ class TestCase(unittest.TestCase):
         self.assertTrue(exc.message and exc.strerror, "the error carries both texts")
         self.assertIn(exc.message, str(exc))
         return exc
+
+
+def child(code, env=None):
+    """Runs code in a fresh interpreter of this venv; returns (status, out, err).
+    For what could crash the interpreter: a crash fails one test, not the run."""
+    full = dict(os.environ)
+    full.update(env or {})
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       env=full, timeout=300)
+    return p.returncode, p.stdout, p.stderr
 
 
 def _plain(pts):

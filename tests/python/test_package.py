@@ -5,20 +5,10 @@ whose numpy import is blocked, whatever this pass has)."""
 import ctypes
 import json
 import os
-import subprocess
 import sys
 import unittest
 
-from support import TestCase, numpy, poissondisk
-
-
-def child(code, env=None):
-    """Runs code in a fresh interpreter of this venv; returns (status, out, err)."""
-    full = dict(os.environ)
-    full.update(env or {})
-    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                       env=full, timeout=300)
-    return p.returncode, p.stdout, p.stderr
+from support import TestCase, child, numpy, poissondisk
 
 
 BLOCK_NUMPY = "import sys; sys.modules['numpy'] = None\n"

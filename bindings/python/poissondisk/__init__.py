@@ -23,7 +23,8 @@ from ._capi import (DONE, ECANCELED, EINTERNAL, EINVAL, ENOMEM, ERANGE, ESTATE, 
                     library_path, strerror, version, version_number)
 from ._errors import (CanceledError, InternalError, InvalidArgumentError, OutOfMemoryError,
                       PoissonDiskError, RangeError, StateError)
-from ._sampler import UNIT_SQUARE, Points, ProgressFn, Radii, RadiusFn, Sampler, random_seed
+from ._args import UNIT_SQUARE, Points, ProgressFn, Radii, RadiusFn, random_seed
+from ._sampler import Sampler
 
 __version__ = "1.3.3"  # of this package; version() is the loaded library's
 

@@ -150,9 +150,19 @@ def text(raw: Optional[bytes]) -> str:
     return raw.decode("utf-8", "replace") if raw is not None else ""
 
 
+INT_MAX = 2 ** (8 * ctypes.sizeof(ctypes.c_int) - 1) - 1
+INT_MIN = -INT_MAX - 1
+
+
 def strerror(code: int) -> str:
-    """The library's static text for an error code (unknown codes too)."""
-    return text(lib.pds_strerror(int(code)))
+    """The library's static text for an error code (unknown codes too);
+    OverflowError for an int that is no C int (ctypes would wrap it around
+    onto another code)."""
+    code = int(code)
+    if not INT_MIN <= code <= INT_MAX:
+        raise OverflowError("strerror(%d): an error code is a C int, in [%d, %d]"
+                            % (code, INT_MIN, INT_MAX))
+    return text(lib.pds_strerror(code))
 
 
 def version() -> str:

@@ -11,129 +11,12 @@ from __future__ import annotations
 import ctypes
 import math
 import operator
-import os
-from typing import TYPE_CHECKING, Any, Callable, List, Optional, Sequence, Tuple, Union, cast
+from typing import Any, Callable, List, Optional, Sequence, Tuple, cast
 
 from . import _capi
+from ._args import (UNIT_SQUARE, Bounds, Points, ProgressFn, Radii, RadiusFn, _check_bounds,
+                    _check_field, _check_seed, _map_buffer, _np, _size_arg)
 from ._errors import error_for
-
-if TYPE_CHECKING:
-    import numpy
-
-try:
-    import numpy as _np
-except ImportError:  # the list fallback
-    _np = None  # type: ignore[assignment]
-
-Bounds = Tuple[Tuple[float, float], Tuple[float, float]]
-# fn(count, done): count points exist, done in [0, 1]; a true result cancels.
-ProgressFn = Callable[[int, float], Any]
-# fn(x, y): the radius at user point (x, y), within [rmin, rmax].
-RadiusFn = Callable[[float, float], float]
-Points = Union["numpy.ndarray", List[Tuple[float, float]]]
-Radii = Union["numpy.ndarray", List[float]]
-
-UNIT_SQUARE: Bounds = ((0.0, 0.0), (1.0, 1.0))
-
-
-def random_seed() -> int:
-    """A seed in [0, 2**64) from the operating system's entropy."""
-    return int.from_bytes(os.urandom(8), "little")
-
-
-def _check_seed(seed: Optional[int]) -> int:
-    if seed is None:
-        return random_seed()
-    seed = operator.index(seed)
-    if not 0 <= seed < 2 ** 64:
-        raise ValueError("seed must be in [0, 2**64), got %d" % seed)
-    return seed
-
-
-def _check_bounds(bounds: Sequence[Sequence[float]]) -> Bounds:
-    try:
-        (x0, y0), (x1, y1) = bounds
-    except (TypeError, ValueError):
-        raise TypeError("bounds must be ((x0, y0), (x1, y1)), got %r" % (bounds,)) from None
-    return (float(x0), float(y0)), (float(x1), float(y1))
-
-
-def _check_field(radius: Optional[float], radius_map: Any, radius_fn: Optional[RadiusFn],
-                 rmin: Optional[float], rmax: Optional[float]) -> Optional[str]:
-    """Which of radius_map / radius_fn defines the radius ("radius_map",
-    "radius_fn"), or None for a constant radius; TypeError for a combination
-    that does not say which."""
-    if radius_fn is None:
-        if rmin is not None or rmax is not None:
-            raise TypeError("rmin and rmax are the bounds of radius_fn; give them with it")
-        if radius_map is None:
-            return None
-        field = "radius_map"
-    else:
-        if radius_map is not None:
-            raise TypeError("give radius_map or radius_fn, not both")
-        if not callable(radius_fn):
-            raise TypeError("radius_fn must be a callable fn(x, y) -> radius, got %r"
-                            % (radius_fn,))
-        if rmin is None or rmax is None:
-            raise TypeError("radius_fn needs rmin and rmax, the bounds of its values")
-        field = "radius_fn"
-    if radius is not None:
-        raise TypeError("give radius=None with %s: the field defines the radius" % field)
-    return field
-
-
-def _map_buffer(radius_map: Any) -> Tuple[int, int, Any]:
-    """(w, h, buffer): an (h, w) radius map as w*h C doubles, row-major, row 0
-    first. The buffer is a numpy array or a ctypes array, never empty (an
-    empty map keeps its shape, for the library to refuse with its message)."""
-    if _np is not None:
-        try:
-            arr = _np.asarray(radius_map, dtype=_np.float64)
-        except (TypeError, ValueError) as exc:
-            raise type(exc)("radius_map must be a 2-D array-like of numbers, shape (h, w): %s"
-                            % exc) from None
-        if arr.ndim == 0:
-            raise TypeError("radius_map must be a 2-D array-like (a sequence of rows of "
-                            "numbers), got %r" % (type(radius_map).__name__,))
-        if arr.ndim == 1 and arr.size == 0:
-            arr = arr.reshape(0, 0)  # [] is a map with no rows, as without numpy
-        if arr.ndim != 2:
-            raise ValueError("radius_map must be 2-D, shape (h, w) (row 0 along y0), got %d-D "
-                             "shape %r" % (arr.ndim, arr.shape))
-        h, w = arr.shape
-        if arr.size == 0:
-            arr = _np.zeros(1)  # a valid pointer; w or h 0 is the library's to refuse
-        return w, h, _np.ascontiguousarray(arr)  # row-major, copied only if need be
-    try:
-        outer = list(radius_map)
-    except TypeError:
-        raise TypeError("radius_map must be a 2-D array-like (a sequence of rows of "
-                        "numbers), got %r" % (type(radius_map).__name__,)) from None
-    rows = []
-    for j, row in enumerate(outer):
-        try:
-            rows.append(list(row))
-        except TypeError:
-            raise ValueError("radius_map must be 2-D, shape (h, w) (row 0 along y0): row %d "
-                             "is %r, not a sequence of numbers" % (j, row)) from None
-    h = len(rows)
-    w = len(rows[0]) if rows else 0
-    for j, row in enumerate(rows):
-        if len(row) != w:
-            raise ValueError("radius_map rows must all have the same length: row 0 has %d "
-                             "values, row %d has %d" % (w, j, len(row)))
-    buf = (ctypes.c_double * max(w * h, 1))()
-    k = 0
-    for row in rows:
-        for v in row:
-            try:
-                buf[k] = float(v)
-            except (TypeError, ValueError):
-                raise ValueError("radius_map must hold numbers, got %r at row %d, column %d"
-                                 % (v, k // w, k % w)) from None
-            k += 1
-    return w, h, buf
 
 
 class Sampler:
@@ -175,7 +58,7 @@ class Sampler:
             point is added; an exception raised by fn stops it too and
             comes out of run()/step(). Either way the points so far stay
             and the sampler can go on. fn may read the sampler but not
-            change it.
+            change or close it (StateError).
 
     With a field, point i gets the radius r_i = r(p_i) where it lands, and
     each later point keeps out of its closed disk: |p_j - p_i| >= r_i for
@@ -187,9 +70,13 @@ class Sampler:
     points of the plain sampler at that radius.
 
     Errors of the library raise subclasses of PoissonDiskError carrying its
-    message; misuse on the Python side raises ValueError or TypeError.
+    message; misuse on the Python side raises ValueError or TypeError, and
+    a count beyond what a C size_t holds OverflowError.
     Use it as a context manager, or call close(), to free the C sampler at
-    once. One Sampler must be used by one thread at a time.
+    once. One Sampler must be used by one thread at a time. A Sampler owns
+    its C sampler alone: copy.copy, copy.deepcopy and pickle raise
+    TypeError (a new Sampler with the same arguments and seed repeats the
+    points).
     """
 
     _handle: Optional[ctypes.c_void_p] = None  # close()/__del__ work if __init__ failed
@@ -199,6 +86,10 @@ class Sampler:
     _progress: Optional[Tuple[Any, List[BaseException]]] = None
     # The C callback of a radius function, kept alive as the library holds it.
     _radius_fn: Any = None
+    # What is running in the C sampler now, innermost last ("run()", then
+    # "the progress callback", ...): close() is refused while it is not empty,
+    # as the library is still using the handle. Shared with the callbacks.
+    _calls: Sequence[str] = ()  # the instance's own list from __init__ on
 
     def __init__(self, radius: Optional[float], *, bounds: Sequence[Sequence[float]] = UNIT_SQUARE,
                  seed: Optional[int] = None, periodic: bool = False,
@@ -208,6 +99,7 @@ class Sampler:
         # What the callbacks raised during the current run()/step(), first
         # first. Shared by them; they hold the list, not self (no cycle).
         self._errors: List[BaseException] = []
+        self._calls: List[str] = []
         self._seed = _check_seed(seed)
         self._bounds = _check_bounds(bounds)
         field = _check_field(radius, radius_map, radius_fn, rmin, rmax)
@@ -236,6 +128,8 @@ class Sampler:
                 count = operator.index(count)
                 if count < 0:
                     raise ValueError("count must be >= 1, got %d" % count)
+                # 0 is the library's to refuse, with its message.
+                count = _size_arg(count, "count", 0)
                 self._check(_capi.need("pds_set_count")(handle, count), "pds_set_count")
             if radius_map is not None:
                 self._set_radius_map(radius_map)
@@ -250,9 +144,16 @@ class Sampler:
     # -- lifetime -----------------------------------------------------------------
 
     def close(self, _destroy: Callable[[Any], None] = _capi.lib.pds_destroy) -> None:
-        """Release the C sampler. Safe to call more than once."""
+        """Release the C sampler. Safe to call more than once. Refused with
+        StateError from inside a callback of this sampler (run() is still
+        using it): close it once run() or step() has returned."""
         # _destroy is bound at definition time so this still works while the
         # interpreter shuts down and module globals are already cleared.
+        if self._calls:
+            outer, inner = self._calls[0], self._calls[-1]
+            where = "from inside %s: %s is" % (inner, outer) if inner != outer else "while %s is" % outer
+            raise error_for(_capi.ESTATE, "Sampler.close: not allowed %s still using the sampler; "
+                            "close it after %s returns" % (where, outer))
         handle, self._handle = self._handle, None
         if handle is not None:
             _destroy(handle)
@@ -272,6 +173,26 @@ class Sampler:
 
     def __exit__(self, *exc_info: Any) -> None:
         self.close()
+
+    def _refuse_copy(self, *args: Any) -> Any:
+        raise TypeError("a poissondisk.Sampler cannot be copied or pickled: it owns its C "
+                        "sampler alone; make a new Sampler with the same arguments and seed "
+                        "(.seed) to repeat the points")
+
+    __copy__ = __deepcopy__ = __reduce_ex__ = __reduce__ = _refuse_copy
+
+    def _c_call(self, what: str, name: str, *args: Any) -> int:
+        """The C function `name` called with args, a call that may run the
+        callbacks: marked as running while it does (for close()), then
+        checked as _checked_call does."""
+        fn = getattr(_capi.lib, name)
+        del self._errors[:]
+        self._calls.append(what)
+        try:
+            rc = fn(*args)
+        finally:
+            self._calls.pop()
+        return self._checked_call(rc, name)
 
     def _h(self) -> ctypes.c_void_p:
         if self._handle is None:
@@ -309,12 +230,14 @@ class Sampler:
     def _set_radius_fn(self, fn: RadiusFn, rmin: float, rmax: float) -> None:
         call = fn
         errors = self._errors  # no reference to self: no cycle through C
+        calls = self._calls
         nan = math.nan
         rmin, rmax = float(rmin), float(rmax)  # the library judges them
 
         def radius_at(user: Any, x: float, y: float) -> float:
             if errors:
                 return nan  # fn raised: refuse every point until the call returns
+            calls.append("the radius function")
             try:
                 value = call(x, y)
                 try:
@@ -327,6 +250,8 @@ class Sampler:
             except BaseException as exc:  # never let it unwind through C
                 errors.append(exc)
                 return nan  # not finite: the library stops before the point
+            finally:
+                calls.pop()
 
         callback = _capi.RADIUS_FN(radius_at)
         self._check(_capi.need("pds_set_radius_fn")(self._h(), callback, None, rmin, rmax),
@@ -347,24 +272,17 @@ class Sampler:
         value outside [rmin, rmax], and whatever a callback (progress or
         radius function) raised if it raised.
         """
-        if max_new is None:
-            limit = 0  # the C API's "no limit"
-        else:
-            limit = operator.index(max_new)
-            if limit < 1:
-                raise ValueError("max_new must be >= 1 or None (no limit), got %d" % limit)
+        # 0 is the C API's "no limit"
+        limit = 0 if max_new is None else _size_arg(max_new, "max_new", 1)
         added = ctypes.c_size_t(0)
         handle = self._h()
-        del self._errors[:]
-        rc = _capi.lib.pds_run(handle, limit, ctypes.byref(added))
-        return self._checked_call(rc, "pds_run") == _capi.DONE
+        rc = self._c_call("run()", "pds_run", handle, limit, ctypes.byref(added))
+        return rc == _capi.DONE
 
     def step(self) -> bool:
         """Add one point: True if one was added, False if the pattern is maximal.
         With a radius function, raises as run() does when it refuses a point."""
-        handle = self._h()
-        del self._errors[:]
-        return self._checked_call(_capi.lib.pds_step(handle), "pds_step") == _capi.MORE
+        return self._c_call("step()", "pds_step", self._h()) == _capi.MORE
 
     def refine(self, radius: float) -> None:
         """Go on at a smaller radius (0 < radius <= self.radius), keeping every
@@ -383,8 +301,8 @@ class Sampler:
         raised by fn stops it too and run() raises that exception (so Ctrl-C
         during a run stops it cleanly). Either way the points stay, and a
         later run() continues to exactly the pattern an uninterrupted run
-        gives. fn may read the sampler (len, points) but not change it
-        (StateError). None removes the callback.
+        gives. fn may read the sampler (len, points) but not change or close
+        it (StateError). None removes the callback.
         """
         handle = self._h()
         setter = _capi.need("pds_set_progress")
@@ -397,13 +315,17 @@ class Sampler:
             raise TypeError("set_progress() needs a callable or None, got %r" % (fn,))
         call: ProgressFn = fn
         errors = self._errors  # no reference to self: no cycle through C
+        calls = self._calls
 
         def report(user: Any, count: int, done: float) -> int:
+            calls.append("the progress callback")
             try:
                 return 1 if call(int(count), float(done)) else 0
             except BaseException as exc:  # never let it unwind through C
                 errors.append(exc)
                 return 1
+            finally:
+                calls.pop()
 
         callback = _capi.PROGRESS_FN(report)
         self._check(setter(handle, callback, None), "pds_set_progress")

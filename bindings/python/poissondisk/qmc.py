@@ -21,7 +21,11 @@ differences:
     points are the same however they are split into random() calls;
   - `radius` is in the units of the bounds, as in scipy >= 1.15, which
     samples the box [l_bounds, u_bounds] directly;
-  - integers() is not provided.
+  - integers() is not provided;
+  - copy.copy, copy.deepcopy and pickle give an independent engine that goes
+    on with exactly the points the original would give next (it regenerates
+    the points so far from the seed); unpickling needs the same library
+    version.
 Needs numpy (the results are arrays).
 """
 
@@ -31,7 +35,7 @@ import hashlib
 import math
 import numbers
 import operator
-from typing import TYPE_CHECKING, Any, Optional, Sequence, Union, cast
+from typing import TYPE_CHECKING, Any, Dict, Optional, Sequence, Union, cast
 
 try:
     import numpy as np
@@ -39,7 +43,9 @@ except ImportError as exc:  # the Sampler works without numpy, this module canno
     raise ImportError("poissondisk.qmc needs numpy (its results are numpy arrays); "
                       "poissondisk.Sampler works without it") from exc
 
-from ._sampler import Sampler, random_seed
+from . import _capi
+from ._args import _size_arg, random_seed
+from ._sampler import Sampler
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
@@ -164,8 +170,7 @@ class PoissonDisk:
         else:
             limit = operator.index(n)
         if limit is not None:
-            if limit < 0:
-                raise ValueError("n must be >= 0, got %d" % limit)
+            limit = _size_arg(limit, "n", 0)  # not wrapped around by ctypes; math.inf: all
             if limit == 0:
                 return np.empty((0, 2), dtype=np.float64)
         s = self._engine()
@@ -197,6 +202,28 @@ class PoissonDisk:
         """Skip the next n points (generating them)."""
         self.random(n)
         return self
+
+    # copy.copy, copy.deepcopy and pickle: the state is the arguments, the seed
+    # and how many points were made since the start or reset(); the C sampler is
+    # not shared but made again, as the same seed gives the same points however
+    # a run is split (one run of that many points, then the same continuation).
+    def __getstate__(self) -> Dict[str, Any]:
+        state = {k: v for k, v in self.__dict__.items() if k != "_sampler"}
+        state["_made"] = len(self._sampler) if self._sampler is not None else 0
+        state["_library"] = _capi.version()
+        return state
+
+    def __setstate__(self, state: Dict[str, Any]) -> None:
+        state = dict(state)
+        made, library = state.pop("_made"), state.pop("_library")
+        if made and library != _capi.version():
+            raise ValueError("this PoissonDisk engine was saved with libpoissondisk %s and "
+                             "the library here is %s: its points would differ"
+                             % (library, _capi.version()))
+        self.__dict__.update(state)
+        self._sampler = None
+        if made:
+            self._engine().run(made)
 
     def __repr__(self) -> str:
         return "<poissondisk.qmc.PoissonDisk radius=%g seed=%d generated=%d>" % (
