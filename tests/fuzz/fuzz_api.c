@@ -55,12 +55,13 @@
 
 static int tracing = -1;
 
-static void trace(const fz_state *st, const char *what)
+/* code: the operation's byte(s), so a trace shows how the input decoded. */
+static void trace(const fz_state *st, const char *what, unsigned code)
 {
     if (tracing < 0) tracing = getenv("PDS_FUZZ_TRACE") != NULL;
     if (tracing)
-        fprintf(stderr, "fuzz: %-14s count %zu R %.17g domain [%.17g,%.17g]x[%.17g,%.17g] "
-                "bound %.3g%s\n", what, st->count, st->radius, st->dom[0], st->dom[2],
+        fprintf(stderr, "fuzz: %-14s %04x count %zu R %.17g domain [%.17g,%.17g]x[%.17g,%.17g] "
+                "bound %.3g%s\n", what, code, st->count, st->radius, st->dom[0], st->dom[2],
                 st->dom[1], st->dom[3], fz_count_bound(st), st->s ? "" : " (no sampler)");
 }
 
@@ -94,7 +95,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             "create", "set_domain", "step", "run", "refine", "points", "verify", "free_area",
             "nulls", "strerror", "destroy", "run_to_end", "run_chunks", "create_bad",
             "version/1.2", "check/1.3"};
-        trace(&st, names[b & 15]);
+        trace(&st, names[b & 15], b);
         switch (b & 15) {
             case 0: fz_op_create(&st, &r, arg); break;
             case 1: fz_op_domain(&st, &r); break;
@@ -142,7 +143,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 break;
         }
     }
-    trace(&st, "end");
+    trace(&st, "end", 0);
     /* Whatever the sequence left: a Poisson-disk set inside the domain. */
     fz_sync(&st);
     fz_check_pattern(&st);
