@@ -13,10 +13,20 @@
  * (high 4 bits), and the operation reads its own arguments (fuzz_decode.c).
  * Operation 14 with parameter 0 is the version check; with 1-4 it is
  * pds_set_periodic, 5-9 pds_set_count, 10-15 pds_set_progress (1.2).
- * Operation 15 with parameter 0-7 is the pattern check; with 8-10 it is
+ * Operation 15 with parameter 0-6 is the pattern check; with 8-10 it is
  * pds_set_radius_map, 11-13 pds_set_radius_fn, 14 pds_radii, 15 makes the
  * radius function return bad values everywhere, or stop doing so (1.3).
  * Past the end every read gives zeros; at most 64 operations.
+ *
+ * Every byte value above has its call, so new calls go behind an escape:
+ * operation 15 with parameter 7 (the byte 0x7f, a pattern check until the
+ * escape took it; no seed used it) is "extended", and the next byte selects
+ * the call in ext_ops[] below; a selector with no call there does nothing.
+ * A new call is appended to ext_ops[] with the next selector, so every
+ * existing input, the seeds of corpus/ among them, decodes to the same calls
+ * as before (make_corpus.py's extended() writes the two bytes). Selectors:
+ *   0  replay: the determinism check of fuzz_replay.c now, mid-input, on a
+ *      sampler that then goes on (costs the read budget, as verify does)
  *
  * Checked after every call (fuzz_check.c): the code is one the header allows
  * for that call in that situation; pds_strerror and pds_errmsg are sane; a
@@ -37,12 +47,14 @@
  *
  * Bounded work (an input must run in milliseconds): calls that add points
  * follow the policy in fuzz_ops.c; the reads asked for by operations
- * (pds_verify, pds_free_area, the pair check) share a budget of FZ_READS point
- * visits per input, while the checks after "maximal" and at the end always
- * run. Under ASan and libFuzzer's tracing a maximal pattern costs some 20 us
- * per point (pds_verify on a 1e6:1 strip about ten times that).
+ * (pds_verify, pds_free_area, the pair check, the extended replay) share a
+ * budget of FZ_READS point visits per input, while the checks after "maximal"
+ * and at the end always run. Under ASan and libFuzzer's tracing a maximal
+ * pattern costs some 20 us per point (pds_verify on a 1e6:1 strip about ten
+ * times that).
  *
- * PDS_FUZZ_TRACE=1 in the environment prints each operation (for replays).
+ * PDS_FUZZ_TRACE=1 in the environment prints each operation and its byte(s)
+ * (for replays).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -74,6 +86,32 @@ static int afford_read(fz_state *st, size_t *reads)
     return 1;
 }
 
+/* ---- extended operations (the escape byte, then a selector) ---------------- */
+
+#define FZ_ESCAPE 0x7f
+
+static void ext_replay(fz_state *st, fz_reader *r, size_t *reads)
+{
+    (void)r;
+    if (afford_read(st, reads)) fz_replay_check(st);
+}
+
+/* Append only: a selector keeps its call for good (see the header comment). */
+static const struct {
+    const char *name;
+    void (*fn)(fz_state *st, fz_reader *r, size_t *reads);
+} ext_ops[] = {
+    {"ext/replay", ext_replay},
+};
+#define FZ_EXT_OPS (sizeof ext_ops / sizeof ext_ops[0])
+
+static void extended(fz_state *st, fz_reader *r, size_t *reads)
+{
+    const unsigned sel = fz_u8(r);
+    trace(st, sel < FZ_EXT_OPS ? ext_ops[sel].name : "ext/none", FZ_ESCAPE << 8 | sel);
+    if (sel < FZ_EXT_OPS) ext_ops[sel].fn(st, r, reads);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -95,6 +133,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             "create", "set_domain", "step", "run", "refine", "points", "verify", "free_area",
             "nulls", "strerror", "destroy", "run_to_end", "run_chunks", "create_bad",
             "version/1.2", "check/1.3"};
+        if (b == FZ_ESCAPE) {
+            extended(&st, &r, &reads);
+            continue;
+        }
         trace(&st, names[b & 15], b);
         switch (b & 15) {
             case 0: fz_op_create(&st, &r, arg); break;
