@@ -5,6 +5,9 @@
 #                   draw the gallery in build/gallery/ (make gallery: into docs/)
 #   make check      install what the tests need (Debian, as root), then run them all,
 #                   and the same suites again under Valgrind memcheck
+#   make check-quick  the unit, API and CLI suites (heavy loops shrunk), check-header and
+#                   check-layers: no Valgrind, fuzzing, Python, alloc or sanitizers, and
+#                   nothing installed; about a minute on an idle machine
 #   make bench      benchmark figures against two baselines (not assertions);
 #                   make bench-quick: the two smaller sizes only; make bench-phases:
 #                   where one run's time goes, stage by stage (PHASES_ARGS='N SEED')
@@ -81,7 +84,7 @@ EXAMPLE_BIN := $(EXAMPLE_SRC:tests/man_examples/%.c=$(B)/examples/%)
 # by 'make check' itself).
 CHECK_LIBS = $$(pkg-config --libs check)
 
-.PHONY: all demo check bench install uninstall clean deps abi-baseline \
+.PHONY: all demo check check-quick bench install uninstall clean deps abi-baseline \
         check-layers check-unit check-api check-header check-symbols check-abi check-man \
         check-examples check-python check-pkgconfig check-cli check-valgrind \
         bench-quick bench-phases check-bench check-threads check-sanitizers check-asan check-tsan
@@ -180,6 +183,21 @@ check: deps all
 	    check-api check-threads check-examples check-cli check-bench check-python check-pkgconfig \
 	    check-man check-valgrind check-fuzz check-alloc
 	@echo "make check: all checks passed"
+
+# check-quick: what a change is checked with before make check. The Check suites run
+# with PDS_TEST_LIGHT=1 (every behaviour, fewer seeds and smaller patterns; the unit
+# law tests keep their thresholds); it installs nothing (no deps), so it first
+# says plainly when the Check framework is missing instead of failing to link.
+check-quick:
+	@pkg-config --exists check 2>/dev/null || { echo "make check-quick: the Check unit-test" \
+	    "framework is missing (pkg-config check); install it (Debian: apt-get install check," \
+	    "or make deps as root)" >&2; exit 1; }
+	@$(MAKE) --no-print-directory all $(UNIT_BIN) $(API_BIN)
+	@$(MAKE) --no-print-directory check-header check-layers
+	PDS_TEST_LIGHT=1 $(UNIT_BIN)
+	PDS_TEST_LIGHT=1 $(API_BIN)
+	@$(MAKE) --no-print-directory check-cli
+	@echo "make check-quick: passed (make check runs the full loops and the rest)"
 
 $(UNIT_BIN): $(UNIT_SRC) $(CORE_OBJ) $(wildcard tests/unit/*.hpp)
 	@mkdir -p $(@D)

@@ -1,7 +1,7 @@
 /*
  * limits.c - tiny, huge and far-off domains: what the radius and domain allow.
  *
- * Contract (spec 1.1.1, issue 13 item 4): pds_create and pds_set_domain no
+ * Contract (spec 1.1.1): pds_create and pds_set_domain no
  * longer judge the radius against the domain. The pair is judged when first
  * used: at the first point (pds_step, pds_run), or at pds_refine once points
  * exist. PDS_ERANGE then comes before any point is added, when (a) R is below

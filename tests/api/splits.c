@@ -9,7 +9,7 @@
  * The hard cases stop exactly on the pattern's last point, where the sampler
  * has not yet seen for itself that no room is left when the refine comes. A
  * refine in the middle of a run, at count k, is also the same whatever split
- * led to k. And small chunks (issue 13 item 3): while (pds_run(s, 1, NULL) ==
+ * led to k. And small chunks, one point a call: while (pds_run(s, 1, NULL) ==
  * PDS_MORE); gives the points of one pds_run at about 10^5 points (a
  * correctness test only: the cost is measured by make bench).
  */

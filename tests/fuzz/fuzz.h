@@ -19,7 +19,7 @@
 
 #include <poissondisk.h>
 
-/* 1.1.1 judges radius and domain at the first point (spec, issue 13 item 4):
+/* 1.1.1 judges radius and domain at the first point, not when they are set:
  * pds_create and pds_set_domain no longer return PDS_ERANGE, pds_step and
  * pds_run may. The checks follow the header this harness is compiled with. */
 #ifndef FZ_SPEC_111 /* -DFZ_SPEC_111=1 tries the 1.1.1 checks on an older library */

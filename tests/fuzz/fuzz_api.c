@@ -13,10 +13,20 @@
  * (high 4 bits), and the operation reads its own arguments (fuzz_decode.c).
  * Operation 14 with parameter 0 is the version check; with 1-4 it is
  * pds_set_periodic, 5-9 pds_set_count, 10-15 pds_set_progress (1.2).
- * Operation 15 with parameter 0-7 is the pattern check; with 8-10 it is
+ * Operation 15 with parameter 0-6 is the pattern check; with 8-10 it is
  * pds_set_radius_map, 11-13 pds_set_radius_fn, 14 pds_radii, 15 makes the
  * radius function return bad values everywhere, or stop doing so (1.3).
  * Past the end every read gives zeros; at most 64 operations.
+ *
+ * Every byte value above has its call, so new calls go behind an escape:
+ * operation 15 with parameter 7 (the byte 0x7f, a pattern check until the
+ * escape took it; no seed used it) is "extended", and the next byte selects
+ * the call in ext_ops[] below; a selector with no call there does nothing.
+ * A new call is appended to ext_ops[] with the next selector, so every
+ * existing input, the seeds of corpus/ among them, decodes to the same calls
+ * as before (make_corpus.py's extended() writes the two bytes). Selectors:
+ *   0  replay: the determinism check of fuzz_replay.c now, mid-input, on a
+ *      sampler that then goes on (costs the read budget, as verify does)
  *
  * Checked after every call (fuzz_check.c): the code is one the header allows
  * for that call in that situation; pds_strerror and pds_errmsg are sane; a
@@ -37,12 +47,14 @@
  *
  * Bounded work (an input must run in milliseconds): calls that add points
  * follow the policy in fuzz_ops.c; the reads asked for by operations
- * (pds_verify, pds_free_area, the pair check) share a budget of FZ_READS point
- * visits per input, while the checks after "maximal" and at the end always
- * run. Under ASan and libFuzzer's tracing a maximal pattern costs some 20 us
- * per point (pds_verify on a 1e6:1 strip about ten times that).
+ * (pds_verify, pds_free_area, the pair check, the extended replay) share a
+ * budget of FZ_READS point visits per input, while the checks after "maximal"
+ * and at the end always run. Under ASan and libFuzzer's tracing a maximal
+ * pattern costs some 20 us per point (pds_verify on a 1e6:1 strip about ten
+ * times that).
  *
- * PDS_FUZZ_TRACE=1 in the environment prints each operation (for replays).
+ * PDS_FUZZ_TRACE=1 in the environment prints each operation and its byte(s)
+ * (for replays).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -55,12 +67,13 @@
 
 static int tracing = -1;
 
-static void trace(const fz_state *st, const char *what)
+/* code: the operation's byte(s), so a trace shows how the input decoded. */
+static void trace(const fz_state *st, const char *what, unsigned code)
 {
     if (tracing < 0) tracing = getenv("PDS_FUZZ_TRACE") != NULL;
     if (tracing)
-        fprintf(stderr, "fuzz: %-14s count %zu R %.17g domain [%.17g,%.17g]x[%.17g,%.17g] "
-                "bound %.3g%s\n", what, st->count, st->radius, st->dom[0], st->dom[2],
+        fprintf(stderr, "fuzz: %-14s %04x count %zu R %.17g domain [%.17g,%.17g]x[%.17g,%.17g] "
+                "bound %.3g%s\n", what, code, st->count, st->radius, st->dom[0], st->dom[2],
                 st->dom[1], st->dom[3], fz_count_bound(st), st->s ? "" : " (no sampler)");
 }
 
@@ -71,6 +84,32 @@ static int afford_read(fz_state *st, size_t *reads)
     if (cost > *reads) return 0;
     *reads -= cost;
     return 1;
+}
+
+/* ---- extended operations (the escape byte, then a selector) ---------------- */
+
+#define FZ_ESCAPE 0x7f
+
+static void ext_replay(fz_state *st, fz_reader *r, size_t *reads)
+{
+    (void)r;
+    if (afford_read(st, reads)) fz_replay_check(st);
+}
+
+/* Append only: a selector keeps its call for good (see the header comment). */
+static const struct {
+    const char *name;
+    void (*fn)(fz_state *st, fz_reader *r, size_t *reads);
+} ext_ops[] = {
+    {"ext/replay", ext_replay},
+};
+#define FZ_EXT_OPS (sizeof ext_ops / sizeof ext_ops[0])
+
+static void extended(fz_state *st, fz_reader *r, size_t *reads)
+{
+    const unsigned sel = fz_u8(r);
+    trace(st, sel < FZ_EXT_OPS ? ext_ops[sel].name : "ext/none", FZ_ESCAPE << 8 | sel);
+    if (sel < FZ_EXT_OPS) ext_ops[sel].fn(st, r, reads);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -94,7 +133,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             "create", "set_domain", "step", "run", "refine", "points", "verify", "free_area",
             "nulls", "strerror", "destroy", "run_to_end", "run_chunks", "create_bad",
             "version/1.2", "check/1.3"};
-        trace(&st, names[b & 15]);
+        if (b == FZ_ESCAPE) {
+            extended(&st, &r, &reads);
+            continue;
+        }
+        trace(&st, names[b & 15], b);
         switch (b & 15) {
             case 0: fz_op_create(&st, &r, arg); break;
             case 1: fz_op_domain(&st, &r); break;
@@ -142,7 +185,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 break;
         }
     }
-    trace(&st, "end");
+    trace(&st, "end", 0);
     /* Whatever the sequence left: a Poisson-disk set inside the domain. */
     fz_sync(&st);
     fz_check_pattern(&st);

@@ -14,10 +14,18 @@ NULLS, STRERROR, DESTROY, RUN_TO_END, RUN_CHUNKS, CREATE_BAD, VERSION, CHECK = r
 # 1.2: operation 14 (VERSION) with parameter 1-4, 5-9, 10-15
 EXT = VERSION
 RESUME = 2  # RUN_TO_END parameter bit: run again after PDS_ECANCELED
+# The escape (operation 15, parameter 7), then a selector: fuzz_api.c's ext_ops[]
+# (append only, so no seed changes meaning); a selector past its end does nothing.
+EXT_REPLAY = 0  # the determinism check now, on a sampler that goes on
 
 
 def op(code, param=0):
+    assert (code, param) != (CHECK, 7), "0x7f is the escape: use extended()"
     return [code | param << 4]
+
+
+def extended(selector):
+    return [CHECK | 7 << 4, selector]
 
 
 def hostile(index):  # kHostile[index]: 0 NaN, 1 inf, 3 0.0, 5 2^-1074, 10 1e300, 24 1e-5
@@ -354,6 +362,13 @@ SEEDS = {
     # rmin, 1.2e10 points) instead of PDS_DONE.
     "regress_field_run_maximal_range": radius_factor(0, 8) + [40] + radius_fn(radius_hostile(24), R_1E4, F_CONST)
     + op(RUN) + MAX_NEW_1000 + op(RUN) + MAX_NEW_0,
+    # ---- extended operations (the escape byte) ----
+    # The determinism check mid-input: after 64 points, after a refine and chunks (the
+    # sampler goes on), a selector with no call, then a radius function on the torus.
+    "extended_replay": radius_factor(0, 8) + [60] + op(RUN) + MAX_NEW_64 + extended(EXT_REPLAY)
+    + op(REFINE) + refine_by(7) + op(RUN_CHUNKS, 3) + extended(EXT_REPLAY) + extended(255)
+    + op(CREATE) + radius_factor(0, 8) + [61] + periodic() + radius_fn(radius_factor(0, 9), R_2, F_GRAD)
+    + op(RUN) + MAX_NEW_64 + extended(EXT_REPLAY) + op(RUN_TO_END) + extended(EXT_REPLAY),
 }
 
 # Reproducers of open library bugs (found/NOTES), written into found/: the harness

@@ -1,8 +1,10 @@
-// law_compare.hpp - the comparison behind the law tests (test_law.cpp on the
-// rectangle, test_law_torus.cpp on the torus): over many seeds, the final
-// count N and the number of near-contact pairs (distance < 1.2 R, measured
-// by the caller's metric) of the sampler against an independent saturated
-// dart thrower. A two-sample z test on the means and a two-sample
+// law_compare.hpp - the comparison behind every law test: a sampler
+// configuration (domain, plane or torus, one radius or a radius field, which
+// stages run) against the independent saturated dart thrower
+// (dart_throwing.hpp) under the same distance and radius rules. Over many
+// seeds it compares the final count N and the number of near-contact pairs
+// (a later point within 1.2 times an earlier one's radius, by the domain's
+// distance): a two-sample z test on the means and a two-sample
 // Kolmogorov-Smirnov test on N, with fixed seeds, so the outcome is
 // deterministic: |z| > 4.5 has probability ~7e-6 under the same law, KS
 // scaled > 1.95 ~1e-3.
@@ -14,25 +16,42 @@
 #include <cstdint>
 #include <vector>
 
+#include "dart_throwing.hpp"
+#include "radius/radius_field.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
 
 namespace law {
 
-enum class Stages { darts_then_jones, jones_only };
+enum class Stages {
+    darts_then_jones,  // as configured; both stages must place a real share
+    jones_only,        // skip_dart_stage(): the Jones loop from the first point
+    no_dart_stage,     // as configured, which has no dart stage (checked)
+};
+
+// What the sampler is given, and the dart thrower follows.
+struct Config {
+    pds::Box box{0, 0, 1, 1};
+    bool periodic = false;
+    double r = 0;                    // one radius, when there is no field
+    oracle::Field field = nullptr;   // or a radius field within [rmin, rmax]
+    double rmin = 0, rmax = 0;
+    Stages stages = Stages::darts_then_jones;
+    int runs = 0;                    // seeds 1..runs (the dart thrower: 10^6 + seed)
+};
 
 struct Sample {
     std::vector<double> count, close_pairs;
 };
 
-// Adds one pattern; d2(a, b) is the squared distance the domain uses.
-template <class Distance2>
-void add(Sample& s, const std::vector<pds::Point>& p, double r, const Distance2& d2) {
+// Adds one pattern, its pairs measured by `distance` (Plane or Torus).
+template <class Distance>
+void add(Sample& s, const oracle::Pattern& t, const Distance& distance) {
     double n = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-        for (std::size_t j = i + 1; j < p.size(); ++j)
-            if (d2(p[i], p[j]) < 1.44 * r * r) ++n;
-    s.count.push_back(static_cast<double>(p.size()));
+    for (std::size_t i = 0; i < t.p.size(); ++i)
+        for (std::size_t j = i + 1; j < t.p.size(); ++j)
+            if (distance.d2(t.p[i], t.p[j]) < 1.44 * t.r[i] * t.r[i]) ++n;
+    s.count.push_back(static_cast<double>(t.p.size()));
     s.close_pairs.push_back(n);
 }
 
@@ -70,25 +89,43 @@ inline double ks_scaled(std::vector<double> a, std::vector<double> b) {
     return d * std::sqrt(n * m / (n + m));
 }
 
-// Runs s to the end so that both stages take part (one point at a time until
-// the hand-over); adds the points the dart stage placed to *from_darts.
-inline std::vector<pds::Point> run_both_stages(pds::Sampler& s, std::size_t* from_darts) {
-    bool maximal = false;
-    while (s.in_dart_stage() && s.run(1, &maximal) == 1) {
-    }
-    *from_darts += s.in_dart_stage() ? s.count() : s.count() - (s.count() > 0 ? 1 : 0);
-    s.run(0, &maximal);
-    ck_assert(maximal);
-    std::vector<double> xy(2 * s.count());
-    s.copy_points(0, s.count(), xy.data());
-    std::vector<pds::Point> p(s.count());
-    for (std::size_t i = 0; i < p.size(); ++i) p[i] = {xy[2 * i], xy[2 * i + 1]};
-    return p;
+// s (made with radius c.r, or 1 with a field) set up as c says.
+inline void configure(pds::Sampler& s, const Config& c) {
+    s.set_domain(c.box);
+    s.set_periodic(c.periodic);
+    if (c.field) s.set_field(pds::RadiusField::function(c.field, nullptr, c.rmin, c.rmax));
+    if (c.stages == Stages::jones_only) s.skip_dart_stage();
 }
 
-// The dart stage must place a real share of the points, and leave the Jones
-// loop a real share too, or the test would not test both.
-inline void assert_both_stages(std::size_t from_darts, std::size_t total) {
+// Runs s to the end, checks it ends maximal and returns its points and radii.
+// With from_darts, one point at a time until the hand-over, adding the
+// points the dart stage placed to *from_darts.
+inline oracle::Pattern run_to_the_end(pds::Sampler& s, std::size_t* from_darts = nullptr) {
+    bool maximal = false;
+    if (from_darts) {
+        while (s.in_dart_stage() && s.run(1, &maximal) == 1) {
+        }
+        *from_darts += s.in_dart_stage() ? s.count() : s.count() - (s.count() > 0 ? 1 : 0);
+    }
+    s.run(0, &maximal);
+    ck_assert(maximal);
+    oracle::Pattern out;
+    std::vector<double> xy(2 * s.count());
+    out.r.resize(s.count());
+    s.copy_points(0, s.count(), xy.data());
+    s.copy_radii(0, s.count(), out.r.data());
+    for (std::size_t i = 0; i < s.count(); ++i) out.p.push_back({xy[2 * i], xy[2 * i + 1]});
+    return out;
+}
+
+// The stages took the part c.stages says: with both, the dart stage must
+// place a real share of the points and leave the Jones loop a real share
+// too, or the test would not test both.
+inline void assert_stages(const Config& c, std::size_t from_darts, std::size_t total) {
+    if (c.stages != Stages::darts_then_jones) {
+        ck_assert_msg(from_darts == 0, "the dart stage placed %zu points", from_darts);
+        return;
+    }
     const double share = static_cast<double>(from_darts) / static_cast<double>(total);
     ck_assert_msg(share > 0.3 && share < 0.95, "dart stage placed %.3f of the points", share);
 }
@@ -102,6 +139,56 @@ inline void assert_same_law(const Sample& sampler, const Sample& darts) {
     ck_assert_msg(std::fabs(z_pairs) < 4.5, "close pairs: sampler %.3f, dart throwing %.3f (z = %.2f)",
                   mean(sampler.close_pairs), mean(darts.close_pairs), z_pairs);
     ck_assert_msg(ks < 1.95, "distribution of N differs (KS %.3f)", ks);
+}
+
+// The reference itself keeps the rule and saturates: every later point
+// outside every earlier disk, and probes on a (probes + 1)^2 grid over the
+// box each in some closed disk (by the domain's distance, so across the seam
+// on the torus). Brute force.
+template <class Distance>
+void assert_saturated(const oracle::Pattern& t, const Distance& distance, int probes) {
+    for (std::size_t i = 0; i < t.p.size(); ++i)
+        for (std::size_t j = i + 1; j < t.p.size(); ++j)
+            ck_assert_msg(distance.d2(t.p[i], t.p[j]) >= t.r[i] * t.r[i], "point %zu inside point %zu's disk", j, i);
+    const pds::Box& b = distance.box;
+    for (int a = 0; a <= probes; ++a)
+        for (int c = 0; c <= probes; ++c) {
+            const pds::Point x{b.x0 + b.width() * a / probes, b.y0 + b.height() * c / probes};
+            bool in = false;
+            for (std::size_t i = 0; i < t.p.size() && !in; ++i) in = distance.d2(x, t.p[i]) <= t.r[i] * t.r[i];
+            ck_assert_msg(in, "the probe (%g, %g) is in no disk", x.x, x.y);
+        }
+}
+
+template <class Distance, class Radius>
+void compare_with(const Config& c, oracle::DartThrowing<Distance, Radius> reference) {
+    Sample sampler, darts;
+    std::size_t from_darts = 0, total = 0;
+    for (int seed = 1; seed <= c.runs; ++seed) {
+        pds::Sampler s(c.field ? 1.0 : c.r, static_cast<std::uint64_t>(seed));
+        configure(s, c);
+        const oracle::Pattern a = run_to_the_end(s, &from_darts);
+        total += a.p.size();
+        add(sampler, a, reference.distance());
+        add(darts, reference.run(static_cast<std::uint64_t>(1000000 + seed)), reference.distance());
+    }
+    assert_stages(c, from_darts, total);
+    assert_same_law(sampler, darts);
+}
+
+// The sampler configured as c against dart throwing under c's rules.
+inline void compare(const Config& c) {
+    using oracle::dart_throwing;
+    const oracle::ConstantRadius one{c.r};
+    const oracle::FieldRadius field{c.field, c.rmin, c.rmax};
+    if (c.periodic && c.field)
+        compare_with(c, dart_throwing(oracle::Torus{c.box}, field));
+    else if (c.periodic)
+        compare_with(c, dart_throwing(oracle::Torus{c.box}, one));
+    else if (c.field)
+        compare_with(c, dart_throwing(oracle::Plane{c.box}, field));
+    else
+        compare_with(c, dart_throwing(oracle::Plane{c.box}, one));
 }
 
 }  // namespace law

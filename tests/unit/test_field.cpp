@@ -1,6 +1,6 @@
 // test_field.cpp - the variable radius (radius_field.hpp) through the
 // sampler: its law against saturated dart throwing under the same rule
-// (field_dart_throwing.hpp) for a gradient and a step field; the rule and
+// (law_compare.hpp, dart_throwing.hpp) for a gradient and a step field; the rule and
 // maximality by brute force; the density along a linear field; and equal
 // radii through the weighted path giving the plain sampler's points.
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <cstring>
 #include <vector>
 
-#include "field_dart_throwing.hpp"
+#include "dart_throwing.hpp"
 #include "law_compare.hpp"
 #include "radius/radius_field.hpp"
 #include "sampler/sampler.hpp"
@@ -21,71 +21,21 @@ namespace {
 double gradient(void*, double x, double) { return 0.05 * (1.0 + x); }
 double step(void*, double x, double) { return x < 0.5 ? 0.04 : 0.1; }
 
-struct Pattern {
-    std::vector<pds::Point> p;
-    std::vector<double> r;
-};
-
-// Runs s to the end; adds the points its dart stage placed to *from_darts
-// (one point at a time until the hand-over, so the count is exact).
-Pattern run_to_the_end(pds::Sampler& s, std::size_t* from_darts = nullptr) {
-    bool maximal = false;
-    if (from_darts) {
-        while (s.in_dart_stage() && s.run(1, &maximal) == 1) {
-        }
-        *from_darts += s.in_dart_stage() ? s.count() : s.count() - (s.count() > 0 ? 1 : 0);
-    }
-    s.run(0, &maximal);
-    ck_assert(maximal);
-    Pattern out;
-    std::vector<double> xy(2 * s.count());
-    out.r.resize(s.count());
-    s.copy_points(0, s.count(), xy.data());
-    s.copy_radii(0, s.count(), out.r.data());
-    for (std::size_t i = 0; i < s.count(); ++i) out.p.push_back({xy[2 * i], xy[2 * i + 1]});
-    return out;
-}
-
-// Near-contact pairs: a later point within 1.2 times an earlier one's
-// radius (the nearest copy on a unit torus).
-double close_pairs(const Pattern& t, bool periodic = false) {
-    const auto wrap = [periodic](double d) {
-        d = std::fabs(d);
-        return periodic && d > 0.5 ? 1.0 - d : d;
-    };
-    double n = 0;
-    for (std::size_t i = 0; i < t.p.size(); ++i)
-        for (std::size_t j = i + 1; j < t.p.size(); ++j) {
-            const double dx = wrap(t.p[i].x - t.p[j].x), dy = wrap(t.p[i].y - t.p[j].y);
-            if (dx * dx + dy * dy < 1.44 * t.r[i] * t.r[i]) ++n;
-        }
-    return n;
-}
+using Pattern = oracle::Pattern;
+using law::run_to_the_end;
 
 // Over the unit square (its dart stage and the Jones loop both placing a
-// real share of the points), or the unit torus (the Jones loop alone).
-void compare_field_laws(FieldDartThrowing::Field field, double rmin, double rmax, int runs, bool periodic = false) {
-    law::Sample sampler, darts;
-    FieldDartThrowing reference(pds::Box{0, 0, 1, 1}, field, rmin, rmax, periodic);
-    std::size_t from_darts = 0, total = 0;
-    for (int seed = 1; seed <= runs; ++seed) {
-        pds::Sampler s(1.0, static_cast<std::uint64_t>(seed));
-        s.set_periodic(periodic);
-        s.set_field(pds::RadiusField::function(field, nullptr, rmin, rmax));
-        const Pattern a = run_to_the_end(s, &from_darts);
-        total += a.p.size();
-        sampler.count.push_back(static_cast<double>(a.p.size()));
-        sampler.close_pairs.push_back(close_pairs(a, periodic));
-        Pattern b;
-        b.p = reference.run(static_cast<std::uint64_t>(1000000 + seed), &b.r);
-        darts.count.push_back(static_cast<double>(b.p.size()));
-        darts.close_pairs.push_back(close_pairs(b, periodic));
-    }
-    law::assert_same_law(sampler, darts);
-    if (periodic)
-        ck_assert_uint_eq(from_darts, 0);
-    else
-        law::assert_both_stages(from_darts, total);
+// real share of the points), or the unit torus (which has no dart stage for
+// a varying field: the Jones loop alone).
+void compare_field_laws(oracle::Field field, double rmin, double rmax, int runs, bool periodic = false) {
+    law::Config c;
+    c.periodic = periodic;
+    c.field = field;
+    c.rmin = rmin;
+    c.rmax = rmax;
+    c.runs = runs;
+    c.stages = periodic ? law::Stages::no_dart_stage : law::Stages::darts_then_jones;
+    law::compare(c);
 }
 
 // Every later point (from `first` on) outside every earlier disk, and no
@@ -117,11 +67,17 @@ void check_rule_and_maximality(const Pattern& t, int probes) { check_rule_and_ma
 }  // namespace
 
 START_TEST(reference_is_maximal) {
-    FieldDartThrowing reference(pds::Box{0, 0, 1, 1}, step, 0.04, 0.1);
+    // The reference keeps the rule and saturates, in the plane and across
+    // the torus's seam (where the step field steps a second time).
+    const oracle::FieldRadius field{step, 0.04, 0.1};
+    const oracle::Plane plane{pds::Box{0, 0, 1, 1}};
+    const oracle::Torus torus{pds::Box{0, 0, 1, 1}};
+    auto in_plane = oracle::dart_throwing(plane, field);
+    auto on_torus = oracle::dart_throwing(torus, field);
     for (int seed = 1; seed <= 3; ++seed) {
-        Pattern t;
-        t.p = reference.run(static_cast<std::uint64_t>(seed), &t.r);
-        check_rule_and_maximality(t, test_light() ? 60 : 200);
+        law::assert_saturated(in_plane.run(static_cast<std::uint64_t>(seed)), plane, test_light() ? 60 : 200);
+        if (seed == 1 || !test_light())
+            law::assert_saturated(on_torus.run(static_cast<std::uint64_t>(seed)), torus, test_light() ? 60 : 200);
     }
 }
 END_TEST
