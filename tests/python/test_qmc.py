@@ -91,10 +91,17 @@ class PoissonDiskTest(TestCase):
     def test_arguments(self):
         with self.assertRaisesRegex(ValueError, "d must be 2"):
             qmc.PoissonDisk(3)
+        for d in (-1, 2.0, True):
+            with self.assertRaisesRegex(ValueError, "d must be a non-negative integer"):
+                qmc.PoissonDisk(d)
+        self.assertEqual(qmc.PoissonDisk(np.int64(2), radius=0.5).d, 2)
         with self.assertRaises(ValueError):
             qmc.PoissonDisk(2, hypersphere="bogus")
-        with self.assertRaisesRegex(ValueError, "optimization"):
-            qmc.PoissonDisk(2, optimization="lloyd")
+        # scipy checks optimization, then hypersphere, before anything about d
+        with self.assertRaisesRegex(ValueError, "'bogus' is not a valid optimization method"):
+            qmc.PoissonDisk(3, optimization="bogus", hypersphere="bogus")
+        with self.assertRaisesRegex(ValueError, "'bogus' is not a valid hypersphere"):
+            qmc.PoissonDisk(1, hypersphere="bogus")
         for r in (0, -0.1, math.nan):
             with self.assertRaises(ValueError):
                 qmc.PoissonDisk(2, radius=r)
