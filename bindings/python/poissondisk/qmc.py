@@ -33,7 +33,7 @@ differences:
     random() calls;
   - `radius` is in the units of the bounds, as in scipy >= 1.15, which
     samples the box [l_bounds, u_bounds] directly;
-  - integers() is not provided;
+  - integers() takes the points relative to the box [l_bounds, u_bounds];
   - copy.copy, copy.deepcopy and pickle give an independent engine that goes
     on with exactly the points the original would give next (it regenerates
     the points so far from the seed); unpickling needs the same library
@@ -215,6 +215,29 @@ class PoissonDisk:
                                          self.l_bounds, self.u_bounds)
         self.num_generated += len(out)
         return out
+
+    def integers(self, l_bounds: Any, *, u_bounds: Any = None, n: Union[int, float] = 1,
+                 endpoint: bool = False, workers: int = 1) -> "NDArray[np.int64]":
+        """The next n points as integers, shape (k, 2), as scipy's engines give them.
+
+        As in scipy: with u_bounds None the range is [0, l_bounds); endpoint=True
+        includes the upper bound; the bounds must be integers (ValueError). The
+        points of random(n), taken relative to the engine's box (the unit square
+        by default), are scaled to the range and rounded down; a point on the
+        box's upper edge gives the largest value in range (scipy's would fall
+        one past it).
+        """
+        if u_bounds is None:
+            u_bounds, l_bounds = l_bounds, 0
+        lo, hi = np.atleast_1d(l_bounds), np.atleast_1d(u_bounds)
+        if endpoint:
+            hi = hi + 1
+        if not (np.issubdtype(lo.dtype, np.integer) and np.issubdtype(hi.dtype, np.integer)):
+            raise ValueError("'u_bounds' and 'l_bounds' must be integers or array-like of "
+                             "integers")
+        unit = (self.random(n) - self.l_bounds) / (self.u_bounds - self.l_bounds)
+        values = np.floor(unit * (hi - lo) + lo).astype(np.int64)
+        return cast("NDArray[np.int64]", np.minimum(values, np.maximum(hi - 1, lo)))
 
     def fill_space(self) -> "NDArray[np.float64]":
         """Add points until the space is full; returns those added, shape (n, 2).
