@@ -91,10 +91,17 @@ class PoissonDiskTest(TestCase):
     def test_arguments(self):
         with self.assertRaisesRegex(ValueError, "d must be 2"):
             qmc.PoissonDisk(3)
+        for d in (-1, 2.0, True):
+            with self.assertRaisesRegex(ValueError, "d must be a non-negative integer"):
+                qmc.PoissonDisk(d)
+        self.assertEqual(qmc.PoissonDisk(np.int64(2), radius=0.5).d, 2)
         with self.assertRaises(ValueError):
             qmc.PoissonDisk(2, hypersphere="bogus")
-        with self.assertRaisesRegex(ValueError, "optimization"):
-            qmc.PoissonDisk(2, optimization="lloyd")
+        # scipy checks optimization, then hypersphere, before anything about d
+        with self.assertRaisesRegex(ValueError, "'bogus' is not a valid optimization method"):
+            qmc.PoissonDisk(3, optimization="bogus", hypersphere="bogus")
+        with self.assertRaisesRegex(ValueError, "'bogus' is not a valid hypersphere"):
+            qmc.PoissonDisk(1, hypersphere="bogus")
         for r in (0, -0.1, math.nan):
             with self.assertRaises(ValueError):
                 qmc.PoissonDisk(2, radius=r)
@@ -112,6 +119,24 @@ class PoissonDiskTest(TestCase):
             qmc.PoissonDisk(2, l_bounds=[0, 1], u_bounds=[1, 1])
         with self.assertRaises(ValueError):
             qmc.PoissonDisk(2, l_bounds=[0, 0, 0])
+
+    def test_integers(self):
+        pts = qmc.PoissonDisk(2, radius=0.1, seed=6).random(20)
+        e = qmc.PoissonDisk(2, radius=0.1, seed=6)
+        ints = e.integers(10, n=20)
+        self.assertEqual((ints.shape, ints.dtype), ((20, 2), np.int64))
+        self.assertTrue(same(ints, np.floor(pts * 10).astype(np.int64)), "[0, 10), floored")
+        self.assertEqual(e.num_generated, 20)
+        lo, hi = np.array([-1.0, 2.0]), np.array([3.0, 3.5])
+        box = qmc.PoissonDisk(2, radius=0.2, seed=6, l_bounds=lo, u_bounds=hi)
+        pts = box.random(15)
+        box.reset()
+        ints = box.integers([0, 5], u_bounds=[4, 8], n=15, endpoint=True)
+        want = np.floor((pts - lo) / (hi - lo) * [5, 4] + [0, 5]).astype(np.int64)
+        self.assertTrue(same(ints, want), "relative to the box, [0, 4] x [5, 8]")
+        self.assertTrue(bool((ints >= [0, 5]).all() and (ints <= [4, 8]).all()))
+        with self.assertRaisesRegex(ValueError, "must be integers"):
+            e.integers(1.5)
 
 
 @needs_numpy
@@ -151,6 +176,12 @@ class AgainstScipyTest(TestCase):
                     cls(2, **kw)
         ours, theirs = self.engines(1)
         self.assertEqual(ours.random(0).shape, theirs.random(0).shape)
+        for e in (ours, theirs):
+            ints = e.integers(3, u_bounds=7, n=4)
+            self.assertEqual((ints.shape, ints.dtype), ((4, 2), np.int64))
+            self.assertTrue(bool((ints >= 3).all() and (ints < 7).all()))
+            with self.assertRaises(ValueError):
+                e.integers(0.5)
 
     def test_bounds_as_scipy(self):
         if "l_bounds" not in inspect.signature(scipy_qmc.PoissonDisk).parameters:

@@ -11,26 +11,39 @@ differences:
     of the domain is farther than `radius` from every sample (scipy's Bridson
     fill leaves gaps and stops at about 88% of that count); each new point is
     uniform over the free area (dart throwing run to saturation);
-  - d must be 2 (ValueError otherwise);
-  - `hypersphere` and `ncandidates` are accepted (and checked as scipy does)
-    but have no effect: there are no candidates; `optimization` must be None,
-    as both of scipy's post-processing schemes would move points closer than
-    `radius`; `workers` is accepted and ignored, as scipy does for this engine;
+  - d must be 2 (ValueError otherwise, after the checks scipy makes first);
+  - `hypersphere` ("volume" or "surface") and `ncandidates` are accepted and
+    checked as scipy does but change nothing: they shape Bridson's candidates,
+    and this sampler has none (each point is drawn exactly uniformly over the
+    free area), so the law of the pattern is the same whatever they are;
+  - `optimization` ("random-cd" or "lloyd", any case) needs scipy: as in
+    scipy, each batch random() returns (fill_space() is one batch) goes
+    through scipy's optimizer, with scipy's settings. The optimizers move
+    points, so the spacing is no longer guaranteed (scipy documents the same),
+    the next batches keep their distance from the points as sampled, not as
+    moved, and the points depend on how they are split into random() calls. A
+    batch of 1 or 2 points comes back unmoved with "lloyd" (qhull needs 3;
+    scipy's engine raises there). Other bounds than the unit square are
+    mapped to it for the optimizer and back. Without scipy, "random-cd" and
+    "lloyd" raise ImportError naming scipy (None works);
+  - `workers` is accepted and ignored, as scipy does for this engine;
   - once the space is full, random() returns an empty (0, 2) array;
-  - the same seed gives other points than scipy's (another algorithm), and the
-    points are the same however they are split into random() calls;
+  - the same seed gives other points than scipy's (another algorithm), and
+    without optimization the points are the same however they are split into
+    random() calls;
   - `radius` is in the units of the bounds, as in scipy >= 1.15, which
     samples the box [l_bounds, u_bounds] directly;
-  - integers() is not provided;
+  - integers() takes the points relative to the box [l_bounds, u_bounds];
   - copy.copy, copy.deepcopy and pickle give an independent engine that goes
     on with exactly the points the original would give next (it regenerates
     the points so far from the seed); unpickling needs the same library
     version.
-Needs numpy (the results are arrays).
+Needs numpy (the results are arrays); scipy only for `optimization`.
 """
 
 from __future__ import annotations
 
+import copy
 import hashlib
 import math
 import numbers
@@ -43,7 +56,7 @@ except ImportError as exc:  # the Sampler works without numpy, this module canno
     raise ImportError("poissondisk.qmc needs numpy (its results are numpy arrays); "
                       "poissondisk.Sampler works without it") from exc
 
-from . import _capi
+from . import _capi, _qmc_optimize
 from ._args import _size_arg, random_seed
 from ._sampler import Sampler
 
@@ -101,9 +114,14 @@ class PoissonDisk:
     Args:
         d: the dimension; must be 2.
         radius: the minimum distance between points, in the units of the bounds.
-        hypersphere: "volume" or "surface"; checked, no effect here.
-        ncandidates: checked to be an int, no effect here.
-        optimization: must be None.
+        hypersphere: "volume" or "surface", checked as scipy does; it picks
+            where Bridson's candidates are drawn, and this exact sampler has
+            no candidates, so it does not change the law of the pattern.
+        ncandidates: an int, as in scipy; no effect, for the same reason.
+        optimization: None, or "random-cd" or "lloyd" (any case), which need
+            scipy: each batch random() returns then goes through scipy's
+            optimizer, as in scipy's own engine, and the points are no longer
+            guaranteed to be `radius` apart.
         l_bounds, u_bounds: the box [l_bounds, u_bounds] to fill; default the
             unit square. Scalars apply to both coordinates.
         seed: None (fresh entropy), an int, or a numpy Generator, RandomState
@@ -117,16 +135,21 @@ class PoissonDisk:
                  l_bounds: Optional[Sequence[float]] = None,
                  u_bounds: Optional[Sequence[float]] = None,
                  seed: SeedLike = None, rng: SeedLike = None) -> None:
-        if operator.index(d) != 2:
-            raise ValueError("poissondisk.qmc.PoissonDisk samples the plane only: d must be "
-                             "2, got %r (use scipy.stats.qmc.PoissonDisk for other "
-                             "dimensions)" % (d,))
+        # scipy's checks first, in scipy's order and words (d, optimization,
+        # hypersphere), so that a bad argument is reported as scipy reports it
+        # whatever d is; then this engine's own limit, d = 2.
+        if not np.issubdtype(type(d), np.integer) or d < 0:
+            raise ValueError("d must be a non-negative integer value")
+        name = _qmc_optimize.check_name(optimization)
         if hypersphere not in ("volume", "surface"):
             raise ValueError("%r is not a valid hypersphere sampling method. It must be one "
                              "of {'volume', 'surface'}" % (hypersphere,))
-        if optimization is not None:
-            raise ValueError("optimization=%r is not supported: it would move points closer "
-                             "than radius; use None" % (optimization,))
+        if d != 2:
+            raise ValueError("poissondisk.qmc.PoissonDisk samples the plane only: d must be "
+                             "2, got %r (use scipy.stats.qmc.PoissonDisk for other "
+                             "dimensions)" % (d,))
+        if name is not None:
+            _qmc_optimize.batch_engine_class(name)  # ImportError now if scipy is missing
         if seed is not None and rng is not None:
             raise TypeError("give seed or rng, not both")
         radius = float(radius)
@@ -136,7 +159,7 @@ class PoissonDisk:
         self.radius = radius
         self.hypersphere = hypersphere
         self.ncandidates = operator.index(ncandidates)
-        self.optimization = None
+        self.optimization = name
         self.l_bounds = _bounds(l_bounds, 0.0, "l_bounds")
         self.u_bounds = _bounds(u_bounds, 1.0, "u_bounds")
         if not np.all(self.l_bounds < self.u_bounds):
@@ -145,6 +168,12 @@ class PoissonDisk:
         self.num_generated = 0
         self._sampler: Optional[Sampler] = None
         self._full = False
+        self._optimizer_rng = self._new_optimizer_rng()
+
+    def _new_optimizer_rng(self) -> Optional["np.random.Generator"]:
+        # The optimizer's random stream (random-cd draws from it) comes from
+        # the same seed, so reset() and the seed repeat the optimized points.
+        return None if self.optimization is None else np.random.default_rng(self.seed)
 
     def _engine(self) -> Sampler:
         if self._sampler is None:
@@ -158,6 +187,8 @@ class PoissonDisk:
         Each point is at least `radius` from the ones returned before (since
         the last reset()). Fewer than n come back when the space fills up, and
         none (shape (0, 2)) once it is full. n may be math.inf: all the rest.
+        With `optimization`, the batch is then moved by scipy's optimizer, and
+        that spacing is no longer guaranteed.
         """
         limit: Optional[int]
         if isinstance(n, float):
@@ -178,8 +209,35 @@ class PoissonDisk:
         if not self._full and s.run(limit):
             self._full = True
         out = cast("NDArray[np.float64]", s.get_points(start))
+        if self.optimization is not None:
+            assert self._optimizer_rng is not None
+            out = _qmc_optimize.optimize(out, self.optimization, self._optimizer_rng,
+                                         self.l_bounds, self.u_bounds)
         self.num_generated += len(out)
         return out
+
+    def integers(self, l_bounds: Any, *, u_bounds: Any = None, n: Union[int, float] = 1,
+                 endpoint: bool = False, workers: int = 1) -> "NDArray[np.int64]":
+        """The next n points as integers, shape (k, 2), as scipy's engines give them.
+
+        As in scipy: with u_bounds None the range is [0, l_bounds); endpoint=True
+        includes the upper bound; the bounds must be integers (ValueError). The
+        points of random(n), taken relative to the engine's box (the unit square
+        by default), are scaled to the range and rounded down; a point on the
+        box's upper edge gives the largest value in range (scipy's would fall
+        one past it).
+        """
+        if u_bounds is None:
+            u_bounds, l_bounds = l_bounds, 0
+        lo, hi = np.atleast_1d(l_bounds), np.atleast_1d(u_bounds)
+        if endpoint:
+            hi = hi + 1
+        if not (np.issubdtype(lo.dtype, np.integer) and np.issubdtype(hi.dtype, np.integer)):
+            raise ValueError("'u_bounds' and 'l_bounds' must be integers or array-like of "
+                             "integers")
+        unit = (self.random(n) - self.l_bounds) / (self.u_bounds - self.l_bounds)
+        values = np.floor(unit * (hi - lo) + lo).astype(np.int64)
+        return cast("NDArray[np.int64]", np.minimum(values, np.maximum(hi - 1, lo)))
 
     def fill_space(self) -> "NDArray[np.float64]":
         """Add points until the space is full; returns those added, shape (n, 2).
@@ -196,6 +254,7 @@ class PoissonDisk:
         self._sampler = None
         self._full = False
         self.num_generated = 0
+        self._optimizer_rng = self._new_optimizer_rng()
         return self
 
     def fast_forward(self, n: int) -> "PoissonDisk":
@@ -210,6 +269,8 @@ class PoissonDisk:
     def __getstate__(self) -> Dict[str, Any]:
         state = {k: v for k, v in self.__dict__.items() if k != "_sampler"}
         state["_made"] = len(self._sampler) if self._sampler is not None else 0
+        # copy.copy shares what the state holds: the generator must not be shared
+        state["_optimizer_rng"] = copy.deepcopy(self._optimizer_rng)
         state["_library"] = _capi.version()
         return state
 
