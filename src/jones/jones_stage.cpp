@@ -58,22 +58,26 @@ bool JonesStage::has_room_for(std::size_t points) const {
 }
 
 void JonesStage::adopt(const std::vector<Point>& points, const std::uint32_t* order,
-                       const std::vector<double>* values) {
+                       const std::vector<double>* values, const Poll& poll) {
     if (radii_.has_value() != (values != nullptr) || (values && copies_.on()))
         throw std::logic_error("hand-over without the field's values");
     if (count() != 0 || (!copies_.on() && !has_room_for(points.size()))) throw std::logic_error("hand-over without room");
     const std::size_t n = points.size();
     order_.resize(n);
     if (copies_.on()) {
-        adopt_on_torus(points, order);
+        adopt_on_torus(points, order, poll);
         return;
     }
     if (values) values_.assign(values->begin(), values->end());  // within the reserved room
+    std::size_t inserted = 0;
     dt_.insert_in_order(
         points, order, n, [&](std::uint32_t k) { return radii_->radius_of(values_[k]); },
-        [&](std::uint32_t k, VertexIndex v) { order_.set(k, v); });
+        [&](std::uint32_t k, VertexIndex v) {
+            order_.set(k, v);
+            if (++inserted % Poll::kEvery == 0) poll();
+        });
     tree_.resize(n);
-    measure_all_cells();
+    measure_all_cells(poll);
 }
 
 void JonesStage::set_radius(double r, const PointRadii* radii) {
@@ -96,7 +100,7 @@ void JonesStage::set_radius(double r, const PointRadii* radii) {
     if (!measure_all_cells() && radii_) widen_margin();
 }
 
-bool JonesStage::measure_all_cells() {
+bool JonesStage::measure_all_cells(const Poll& poll) {
     const MeshCells cells = this->cells();
     const SiteIndex sites = dt_.vertex_count() - Delaunay::kGhosts;
     bool valid = true;
@@ -107,6 +111,7 @@ bool JonesStage::measure_all_cells() {
     for (SiteIndex site = 0; site < sites; ++site) {
         const VertexIndex v = vertex_of(site);
         if (site % kAhead == 0) {
+            if (site % Poll::kEvery == 0) poll();
             SiteIndex m = 0;
             for (SiteIndex s = site + kAhead; s < sites && m < kAhead; ++s) ahead[m++] = vertex_of(s);
             dt_.prefetch_rings(ahead, m);

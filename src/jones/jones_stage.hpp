@@ -65,6 +65,7 @@
 #include "core/indices.hpp"
 #include "jones/mesh_cells.hpp"
 #include "core/point.hpp"
+#include "core/poll.hpp"
 #include "jones/point_order.hpp"
 #include "radius/point_radii.hpp"
 #include "core/rng.hpp"
@@ -98,9 +99,10 @@ public:
     // The hand-over: inserts the dart stage's points (point k of `points`
     // is the k-th added) in the order given, measures every cell and builds
     // the tree. A varying radius: values[k] is point k's field value.
-    // Requires count() == 0 and room; never allocates.
+    // Requires count() == 0 and room; never allocates. Calls poll every
+    // Poll::kEvery points inserted and cells measured.
     void adopt(const std::vector<Point>& points, const std::uint32_t* order,
-               const std::vector<double>* values = nullptr);
+               const std::vector<double>* values = nullptr, const Poll& poll = Poll{});
     // The torus: finishes a widening of the margin that memory interrupted,
     // or that the hand-over left to do (may throw std::bad_alloc).
     void settle();
@@ -150,7 +152,7 @@ private:
 
     // Every cell's exact free area into the tree: O(N), no allocation. On
     // the torus, false when some real cell is not yet its torus cell.
-    bool measure_all_cells();
+    bool measure_all_cells(const Poll& poll = Poll{});
     void adapt_batch_size();
     void drop_queue();
     bool still_free(const Point& p) const;
@@ -174,7 +176,7 @@ private:
     // A variable radius: p in v's power cell and outside its disk (exact).
     bool in_free_power_cell(const Point& p, VertexIndex v) const;
     // The torus: the hand-over (adopt) with the points' copies.
-    void adopt_on_torus(const std::vector<Point>& points, const std::uint32_t* order);
+    void adopt_on_torus(const std::vector<Point>& points, const std::uint32_t* order, const Poll& poll);
     // The torus: p (drawn in near's cell) wrapped, inserted with its copies.
     void insert_point_on_torus(const Point& p, VertexIndex near, double value);
     // A variable radius: the mesh built anew from the points (refine).

@@ -212,7 +212,7 @@ bool JonesStage::still_free_on_torus(const Point& p) const {
     return true;
 }
 
-void JonesStage::adopt_on_torus(const std::vector<Point>& points, const std::uint32_t* order) {
+void JonesStage::adopt_on_torus(const std::vector<Point>& points, const std::uint32_t* order, const Poll& poll) {
     // The points along the curve, then their copies in the same order (so
     // each offset's walks stay short); then the margin is settled. Room
     // first, so a failure changes nothing; the margin is settled by the first
@@ -226,12 +226,15 @@ void JonesStage::adopt_on_torus(const std::vector<Point>& points, const std::uin
     for (std::size_t i = 0; i < n; ++i) {
         previous = insert_vertex(points[order[i]], previous);
         order_.set(order[i], previous);
+        if ((i + 1) % Poll::kEvery == 0) poll();
     }
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n; ++i) {
+        if ((i + 1) % Poll::kEvery == 0) poll();
         copies_.for_each_copy(points[order[i]], copies_.margin(), -1.0, [&](const Point& c, int a, int b) {
             VertexIndex& hint = copy_hint_[copies_.offset_slot(a, b)];
             hint = insert_vertex(c, hint, order_.vertex(order[i]));
         });
+    }
     widen_pending_ = true;
 }
 

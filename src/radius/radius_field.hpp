@@ -53,8 +53,24 @@ public:
     bool constant() const { return rmin_ == rmax_; }
     // The value at user point (x, y) of `domain`. Throws FieldError.
     double value(const Box& domain, double x, double y) const;
-    // The mean of 1 / r^2 over the domain, estimated (the expected count).
-    double mean_inverse_square(const Box& domain) const;
+    // A user function's field calls user code for every value.
+    bool calls_user() const { return fn_ != nullptr && !constant(); }
+
+    // The mean of 1 / r^2 over the domain, estimated from its values at a
+    // grid of kMeanGrid^2 points (the expected count, for progress reports).
+    // A function's may take long, so the estimate goes a value at a time:
+    // step() adds the next grid point's, done() says all are in.
+    static constexpr int kMeanGrid = 64;
+    class MeanInverseSquare {
+    public:
+        bool done() const { return next_ == kMeanGrid * kMeanGrid; }
+        void step(const RadiusField& field, const Box& domain);
+        double mean() const { return sum_ / (kMeanGrid * kMeanGrid); }
+
+    private:
+        int next_ = 0;
+        double sum_ = 0.0;
+    };
 
 private:
     std::vector<double> map_;

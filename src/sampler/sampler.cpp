@@ -20,12 +20,17 @@ bool Sampler::use_darts() const {
     return !frame_.torus().on() && field_->rmax() <= FieldDartStage::kMaxRatio * field_->rmin();
 }
 
-double Sampler::expected_count() const {
+std::optional<double> Sampler::expected_count(ProgressMeter& meter) {
     // A field's: as for the radius whose 1/R^2 is the mean of 1/r^2 over the domain.
     if (!varying_field()) return frame_.expected_count(frame_.user_radius());
-    // The field's mean of 1/r^2 is measured once per field and domain.
-    if (!mean_inverse_square_) mean_inverse_square_ = field_->mean_inverse_square(frame_.user_domain());
-    return frame_.expected_count(frame_.user_radius() / field_->rmax() / std::sqrt(*mean_inverse_square_));
+    // The field's mean of 1/r^2 is measured once per field and domain. A
+    // user function may be slow: the meter is polled after each value, and a
+    // stop keeps what was measured for the next run.
+    while (!mean_inverse_square_.done()) {
+        mean_inverse_square_.step(*field_, frame_.user_domain());
+        if (meter.poll(count())) return std::nullopt;
+    }
+    return frame_.expected_count(frame_.user_radius() / field_->rmax() / std::sqrt(mean_inverse_square_.mean()));
 }
 
 Frame Sampler::smallest_frame() const {
@@ -40,7 +45,7 @@ void Sampler::set_field(const RadiusField& field) {
     if (count_target_ != 0) throw std::logic_error("set_field in count mode");
     forget_stages();
     field_ = field;
-    mean_inverse_square_.reset();
+    mean_inverse_square_ = RadiusField::MeanInverseSquare{};
     frame_.set_radius(field.rmax());
 }
 
@@ -57,7 +62,7 @@ void Sampler::set_domain(const Box& domain) {
     if (count() != 0) throw std::logic_error("set_domain after the first point");
     forget_stages();
     frame_.set_domain(domain);
-    mean_inverse_square_.reset();
+    mean_inverse_square_ = RadiusField::MeanInverseSquare{};
     if (count_target_ != 0) set_count(count_target_);
 }
 
@@ -169,8 +174,18 @@ void Sampler::lower_radius_for_count() {
 
 void Sampler::hand_over() {
     // Room for the points and the order was reserved with the dart stage's:
-    // nothing here allocates.
-    darts_->hand_over_to(*jones_);
+    // nothing here allocates. Inside pds_run the meter is polled as it goes,
+    // so the reports keep coming; a stop asked for then takes effect after
+    // the hand-over (the run checks the meter after its next point).
+    Poll poll;
+    if (meter_ != nullptr && meter_->active()) {
+        poll.fn = [](void* context) {
+            Sampler* s = static_cast<Sampler*>(context);
+            s->meter_->poll(s->count());
+        };
+        poll.context = this;
+    }
+    darts_->hand_over_to(*jones_, poll);
     darts_.reset();
 }
 
@@ -203,14 +218,28 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
         const std::size_t whole = count_target_ != 0 ? std::max(count_target_, n) : std::max(bound, n) + 1;
         prepare(max_new != 0 && max_new < whole - n ? n + max_new : whole);
     }
+    // The meter reads the clock after every point when each point calls the
+    // user's radius function, whose cost the library cannot know.
+    ProgressMeter meter(progress_, field_ && field_->calls_user());
     // The estimate is needed only for reports (a field's asks the field).
-    const double expected =
-        progress_.fn == nullptr ? 1.0 : count_target_ != 0 ? static_cast<double>(count_target_) : expected_count();
-    ProgressMeter meter(progress_, expected, count_target_ != 0);
+    if (meter.active()) {
+        const std::optional<double> expected =
+            count_target_ != 0 ? std::optional<double>(static_cast<double>(count_target_)) : expected_count(meter);
+        if (!expected) return RunEnd::canceled;
+        meter.expect(*expected, count_target_ != 0);
+    }
+    // The hand-over, which may come with any point, polls the meter.
+    struct Watch {
+        ProgressMeter*& slot;
+        ~Watch() { slot = nullptr; }
+    } watch{meter_};
+    meter_ = &meter;
     while (max_new == 0 || *added < max_new) {
         if (grows) prepare(count() + 1);  // nothing to do while there is room
         if (!add_one()) {
-            // The final report; a stop asked for here changes nothing.
+            // The final report. The pattern is complete: a stop asked for
+            // here (or in a hand-over just before) has nothing left to stop,
+            // and the run says what it is (poissondisk.h, pds_progress_fn).
             meter.finish(count());
             return RunEnd::complete;
         }

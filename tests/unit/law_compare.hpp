@@ -74,10 +74,10 @@ inline double ks_scaled(std::vector<double> a, std::vector<double> b) {
 // the hand-over); adds the points the dart stage placed to *from_darts.
 inline std::vector<pds::Point> run_both_stages(pds::Sampler& s, std::size_t* from_darts) {
     bool maximal = false;
-    while (s.in_dart_stage() && s.run(1, &maximal) == 1) {
+    while (s.in_dart_stage() && s.add_points(1, &maximal) == 1) {
     }
     *from_darts += s.in_dart_stage() ? s.count() : s.count() - (s.count() > 0 ? 1 : 0);
-    s.run(0, &maximal);
+    s.add_points(0, &maximal);
     ck_assert(maximal);
     std::vector<double> xy(2 * s.count());
     s.copy_points(0, s.count(), xy.data());

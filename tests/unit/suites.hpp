@@ -25,6 +25,7 @@ Suite* law_torus_suite();
 Suite* field_suite();
 Suite* out_of_memory_suite();
 Suite* torus_suite();
+Suite* progress_suite();
 
 // Under Valgrind (PDS_TEST_LIGHT set) loops shrink; every behaviour still runs.
 inline bool test_light() { return std::getenv("PDS_TEST_LIGHT") != nullptr; }
