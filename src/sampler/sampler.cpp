@@ -96,17 +96,22 @@ void Sampler::skip_dart_stage() {
 }
 
 void Sampler::prepare(std::size_t points) {
+    const JudgedRadius smallest = field_ ? JudgedRadius::field_smallest : JudgedRadius::radius;
+    const JudgedRadius largest = field_ ? JudgedRadius::field_largest : JudgedRadius::radius;
     if (points > Frame::max_points()) throw LimitError(Limit::too_many_points, frame_.user_radius());
     if (!started()) {
         // A field: precision at the smallest radius, the torus's period at
-        // the largest.
+        // the largest (each error names the one judged). A too large radius
+        // is judged first: it is the cause when both fail (a period under
+        // 2 rmax makes the smallest radius's pattern no denser).
         const Frame low = smallest_frame();
-        const Limit limit = low.precision_limit();
-        if (limit != Limit::ok) throw LimitError(limit, low.user_radius());
         const Limit high = frame_.precision_limit();
-        if (high != Limit::ok) throw LimitError(high, frame_.user_radius());
+        if (high == Limit::radius_exceeds_period) throw LimitError(high, frame_.user_radius(), largest);
+        const Limit limit = low.precision_limit();
+        if (limit != Limit::ok) throw LimitError(limit, low.user_radius(), smallest);
+        if (high != Limit::ok) throw LimitError(high, frame_.user_radius(), largest);
         if (varying_field() && frame_.periods_beyond(Frame::kMaxFieldPeriodRatio))
-            throw LimitError(Limit::field_periods_too_unequal, frame_.user_radius());
+            throw LimitError(Limit::field_periods_too_unequal, frame_.user_radius(), largest);
         // Count mode lowers the radius as it goes: the lowest it can reach is
         // judged now, so a run never meets the limit half way.
         if (count_target_ != 0) {
@@ -114,7 +119,7 @@ void Sampler::prepare(std::size_t points) {
             lowest.set_radius(std::min(frame_.user_radius(),
                                        frame_.lowest_count_radius(static_cast<double>(count_target_))));
             const Limit at_lowest = lowest.precision_limit();
-            if (at_lowest != Limit::ok) throw LimitError(at_lowest, lowest.user_radius());
+            if (at_lowest != Limit::ok) throw LimitError(at_lowest, lowest.user_radius(), JudgedRadius::count_lowest);
         }
         // Built aside, kept only when both exist: std::bad_alloc changes nothing.
         const std::optional<PointRadii> radii = point_radii(frame_);
@@ -212,7 +217,8 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
     const std::size_t bound = smallest_frame().count_bound_points();
     if (grows) {
         const std::size_t asked = max_new == 0 ? (n == 0 ? bound : 0) : std::min(n + max_new, std::max(bound, n));
-        if (asked > Frame::max_points()) throw LimitError(Limit::too_many_points, smallest_frame().user_radius());
+        if (asked > Frame::max_points())
+            throw LimitError(Limit::too_many_points, smallest_frame().user_radius(), JudgedRadius::field_smallest);
         prepare(n + 1);
     } else {
         const std::size_t whole = count_target_ != 0 ? std::max(count_target_, n) : std::max(bound, n) + 1;
@@ -266,9 +272,10 @@ void Sampler::refine(double radius) {
     Frame next_smallest = next;
     if (field_) next_smallest.set_radius(scaled_radius(field_->rmin(), field_->rmax(), radius));
     const Limit limit = next_smallest.precision_limit();
-    if (limit != Limit::ok) throw LimitError(limit, next_smallest.user_radius());
+    if (limit != Limit::ok)
+        throw LimitError(limit, next_smallest.user_radius(), field_ ? JudgedRadius::field_smallest : JudgedRadius::radius);
     const Limit high = next.precision_limit();
-    if (high != Limit::ok) throw LimitError(high, radius);
+    if (high != Limit::ok) throw LimitError(high, radius, field_ ? JudgedRadius::field_largest : JudgedRadius::radius);
     // The generator's state at a refine must not depend on whether the caller
     // already asked for room (sampler.hpp): draw the next point, then drop it.
     next_point();

@@ -17,6 +17,7 @@
  *   periodic_suite     pds_set_periodic: the torus, spacing, law, state    (periodic.c)
  *   field_suite        a variable radius: rule, maximality, map, splits    (field.c)
  *   field_range_suite  a field on domains at the ends of the double range  (field_range.c)
+ *   messages_suite     pds_errmsg names the radius or callback at fault    (messages.c)
  */
 #ifndef PDS_TESTS_API_SUITES_H
 #define PDS_TESTS_API_SUITES_H
@@ -38,5 +39,6 @@ Suite *progress_suite(void);
 Suite *periodic_suite(void);
 Suite *field_suite(void);
 Suite *field_range_suite(void);
+Suite *messages_suite(void);
 
 #endif /* PDS_TESTS_API_SUITES_H */
