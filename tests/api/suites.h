@@ -18,6 +18,7 @@
  *   field_suite        a variable radius: rule, maximality, map, splits    (field.c)
  *   field_range_suite  a field on domains at the ends of the double range  (field_range.c)
  *   messages_suite     pds_errmsg names the radius or callback at fault    (messages.c)
+ *   documented_suite   measured facts the man pages state                  (documented.c)
  */
 #ifndef PDS_TESTS_API_SUITES_H
 #define PDS_TESTS_API_SUITES_H
@@ -40,5 +41,6 @@ Suite *periodic_suite(void);
 Suite *field_suite(void);
 Suite *field_range_suite(void);
 Suite *messages_suite(void);
+Suite *documented_suite(void);
 
 #endif /* PDS_TESTS_API_SUITES_H */
