@@ -335,17 +335,19 @@ PDS_API int pds_set_progress(pds_sampler *s, pds_progress_fn fn, void *user) PDS
  * pds_set_count (PDS_EINVAL, either way round). A varying field runs the
  * Jones loop from the first point (no dart throwing): in our measurements
  * about 1.8 times the plain sampler's time at the same number of points.
- * With a varying field the count limit is judged at the first point on
- * Oler's bound at rmin (as for a constant radius rmin); once points exist
+ * With a varying field the count limit is judged at the first point on a
+ * bound that holds for every seed: Oler's bound at rmin (as for a constant
+ * radius rmin), or for a map, when smaller, the sum of Oler's bounds over
+ * the cells between its pixel centres, each at its least corner value (since
+ * 1.3.3: one small value in a map of large ones is then no obstacle); once points exist
  * an unbounded pds_run is not judged again (a maximal pattern returns
  * PDS_DONE). Memory is not reserved for that bound, which one small value
  * can make far larger than the pattern, but grows with the run: PDS_ENOMEM
  * (or PDS_ERANGE past the index space) may then come after some points were
- * added, which stay; *added counts them. That bound refuses some small
- * patterns (one value at rmin in a map of large ones): a function's values
- * are known only where it is asked, so rmin is all that bounds its count
- * before the run. Bounded runs (max_new > 0) are judged on the count plus
- * max_new and make such a pattern.
+ * added, which stay; *added counts them. A function's values are known
+ * only where it is asked, so it is judged at rmin, which refuses some small
+ * patterns (one small value among large ones); bounded runs (max_new > 0)
+ * are judged on the count plus max_new and make such a pattern.
  * Allowed only before the first point; the last field set wins.
  */
 

@@ -84,6 +84,38 @@ double RadiusField::value(const Box& d, double x, double y) const {
     return std::min(std::max(v, rmin_), rmax_);
 }
 
+double RadiusField::map_count_bound(const Box& box, const std::function<double(double)>& radius_of) const {
+    // The lines through the pixel centres cut the domain into (w + 1) x
+    // (h + 1) rectangles (the outer ones are the clamped margins). In each,
+    // the field lies between the values at its corners (bilinear between
+    // centres, constant across a margin), so it is at least their least, m.
+    // Point i keeps every later point r_i >= m away: the points in one
+    // rectangle are pairwise at least radius_of(m) apart, and Oler's bound
+    // (frame.hpp) holds for each; the rectangles cover the domain, so the
+    // sum bounds the pattern. Neighbours share their computed edges, so
+    // rounding leaves no gap; the margin covers rounding in the radii.
+    if (fn_ != nullptr) return HUGE_VAL;
+    const auto edge = [](double lo, double hi, std::size_t k, std::size_t n) {
+        return k == 0 ? lo : k == n + 1 ? hi : between(lo, hi, (static_cast<double>(k) - 0.5) / static_cast<double>(n));
+    };
+    const auto at = [this](std::size_t i, std::size_t j) { return map_[j * w_ + i]; };
+    double sum = 0.0;
+    for (std::size_t j = 0; j <= h_; ++j) {
+        const double ylo = edge(box.y0, box.y1, j, h_), yhi = edge(box.y0, box.y1, j + 1, h_);
+        const std::size_t j0 = j == 0 ? 0 : j - 1, j1 = j == h_ ? h_ - 1 : j;
+        for (std::size_t i = 0; i <= w_; ++i) {
+            const double xlo = edge(box.x0, box.x1, i, w_), xhi = edge(box.x0, box.x1, i + 1, w_);
+            const std::size_t i0 = i == 0 ? 0 : i - 1, i1 = i == w_ ? w_ - 1 : i;
+            const double m = std::min(std::min(at(i0, j0), at(i1, j0)), std::min(at(i0, j1), at(i1, j1)));
+            const double d = radius_of(m);
+            const double cw = (xhi - xlo) / d, ch = (yhi - ylo) / d;
+            sum += 2.0 / std::sqrt(3.0) * cw * ch + (cw + ch) + 1.0;
+        }
+    }
+    constexpr double kRoundingMargin = 1.0 + 1e-9;
+    return sum * kRoundingMargin;
+}
+
 void RadiusField::MeanInverseSquare::step(const RadiusField& field, const Box& d) {
     // Pixel centres of a kMeanGrid x kMeanGrid grid, row by row: enough for
     // a progress estimate. A value out of bounds counts as rmax (no error).

@@ -18,6 +18,7 @@
 #define PDS_RADIUS_FIELD_HPP
 
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -53,6 +54,12 @@ public:
     bool constant() const { return rmin_ == rmax_; }
     // The value at user point (x, y) of `domain`. Throws FieldError.
     double value(const Box& domain, double x, double y) const;
+    // A map field: an upper bound on the number of points of any pattern
+    // over `box` (the domain, in any frame), where a point of value v has
+    // the radius radius_of(v) in that frame. Infinite for a function, whose
+    // values are known only where it is asked. See radius_field.cpp.
+    double map_count_bound(const Box& box, const std::function<double(double)>& radius_of) const;
+
     // A user function's field calls user code for every value.
     bool calls_user() const { return fn_ != nullptr && !constant(); }
 

@@ -49,6 +49,19 @@ void Sampler::set_field(const RadiusField& field) {
     frame_.set_radius(field.rmax());
 }
 
+std::size_t Sampler::field_count_bound() const {
+    // Oler's bound at rmin holds for any field. A map's own bound (cells
+    // between its pixel centres, each at its least value) is far smaller
+    // when few values are small, and is worked out only when Oler's at rmin
+    // would refuse the run (it costs O(w h)).
+    const std::size_t oler = smallest_frame().count_bound_points();
+    if (oler <= Frame::max_points()) return oler;
+    const PointRadii radii(*field_, frame_);
+    const double map = field_->map_count_bound(frame_.box(), [&](double v) { return radii.radius_of(v); });
+    const double cap = static_cast<double>(Frame::max_points()) + 1.0;
+    return map < cap ? std::min(oler, static_cast<std::size_t>(map)) : oler;
+}
+
 void Sampler::forget_stages() {
     // Without points the stages hold nothing but the old frame, and a first
     // point drawn but refused by a radius field: the generator goes back to
@@ -208,13 +221,14 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
     // prepare() refuses a total past the index space, so an unbounded run
     // whose maximal pattern might not fit fails before any point.
     // A varying field: Oler's bound at the smallest radius may exceed the
-    // pattern by any factor (one small pixel in a map). It is judged at the
+    // pattern by any factor (one small pixel in a map); a map's own bound
+    // (field_count_bound) is used when it is smaller. It is judged at the
     // first point, as a constant radius is; afterwards the pattern itself
     // says whether it is complete. Memory is not reserved for that bound but
     // grows with the run (geometrically, O(1) amortized), and a pattern that
     // truly outgrows the index space stops there (PDS_ERANGE, points kept).
     const bool grows = varying_field();
-    const std::size_t bound = smallest_frame().count_bound_points();
+    const std::size_t bound = grows ? field_count_bound() : smallest_frame().count_bound_points();
     if (grows) {
         const std::size_t asked = max_new == 0 ? (n == 0 ? bound : 0) : std::min(n + max_new, std::max(bound, n));
         if (asked > Frame::max_points())

@@ -119,6 +119,9 @@ private:
         return varying_field() ? std::optional<PointRadii>(PointRadii(*field_, frame)) : std::nullopt;
     }
     bool use_darts() const;
+    // A varying field's bound on the size of any pattern (the smaller of
+    // Oler's at rmin and the map's own), saturated as count_bound_points().
+    std::size_t field_count_bound() const;
     Stage& stage() { return darts_ ? static_cast<Stage&>(*darts_) : *jones_; }
     const Stage& stage() const { return darts_ ? static_cast<const Stage&>(*darts_) : *jones_; }
     // Judges the limits for a call that may bring the total to `points`,

@@ -33,6 +33,7 @@ int main(void)
     srunner_add_suite(runner, field_range_suite());
     srunner_add_suite(runner, messages_suite());
     srunner_add_suite(runner, documented_suite());
+    srunner_add_suite(runner, field_bound_suite());
 
     if (test_light())
         printf("PDS_TEST_LIGHT is set: heavy loops shrunk, calibration skipped\n");
