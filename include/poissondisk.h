@@ -250,12 +250,16 @@ PDS_API int pds_set_periodic(pds_sampler *s, int periodic) PDS_NOEXCEPT;
  * the pattern becomes maximal with m < n points, the radius is lowered (as
  * pds_refine) by the factor sqrt(m/n) kept between 0.99 and 0.999, and the
  * run goes on; it stops at the n-th point. Afterwards pds_radius() is the last radius: every pair is at least
- * that far apart; and if the radius was lowered at least once (always in our
- * measurements, except when the torus caps the start), no room is left for
- * a point at pds_radius()/0.99 (the pattern is maximal at the previous
- * radius, and in general not at the last one, so pds_verify returns
- * PDS_MORE). For n >= 1000, pds_radius() was at least 0.98 R(n) in every
- * test.
+ * that far apart; and if the radius was lowered at least once, no room is
+ * left for a point at pds_radius()/0.99 (the pattern is maximal at the
+ * previous radius, and in general not at the last one, so pds_verify
+ * returns PDS_MORE). It is not lowered when the run reaches n points before
+ * its first maximal pattern: when the torus caps the start, and on thin
+ * domains (shorter side not many times R(n)), where the two-dimensional
+ * estimate is too low: a 1000 x 1 torus at n = 3000 keeps its start, 0.4907,
+ * to the end, maximal at no radius. For n >= 1000, pds_radius() was at least
+ * 0.98 R(n) on squares and rectangles up to 64:1, lower on thinner ones
+ * (0.945-0.958 on a 1024 x 1 rectangle at n = 1000).
  * pds_run and pds_step return PDS_DONE once n points exist; pds_refine is
  * refused (PDS_ESTATE) while a count is set. The radius given to pds_create
  * is ignored. Works with pds_set_domain and pds_set_periodic; the same seed
@@ -275,7 +279,9 @@ PDS_API int pds_set_count(pds_sampler *s, size_t n) PDS_NOEXCEPT;
  * the whole pattern made so far (monotone within a run, in [0,1]; exact in
  * count mode: count/n; otherwise from the expected size of a maximal pattern,
  * and 1 once the pattern is complete). Return 0 to go on, nonzero to stop
- * pds_run with PDS_ECANCELED. (1.2)
+ * pds_run with PDS_ECANCELED; the final call (done == 1, the pattern
+ * complete) has nothing left to stop: its return is ignored and pds_run
+ * returns PDS_DONE. (1.2)
  */
 typedef int (*pds_progress_fn)(void *user, size_t count, double done);
 
@@ -284,11 +290,16 @@ typedef int (*pds_progress_fn)(void *user, size_t count, double done);
  *   fn    called between points: when `done` has grown by 1% since the last
  *         call, or a second has passed, and once when the run ends with the
  *         pattern complete; so at most about 100 calls per run plus one per
- *         second of work. One step cannot be interrupted: the hand-over from
- *         the dart stage to the Jones loop (about 0.3 s per million points).
+ *         second of work, whatever a point costs. Calls come also during
+ *         the steps that add no point: a field's count estimate (see
+ *         pds_radius_fn) and the hand-over from the dart stage to the
+ *         Jones loop (0.44-0.57 s per million points on our benchmark
+ *         machine, up to about 1 s on a slow one); a stop asked for in the
+ *         hand-over takes effect when it ends.
  *         NULL removes the callback (user must then be NULL too).
  *   user  passed back to fn unchanged.
- * A nonzero return from fn makes pds_run return PDS_ECANCELED at once: the
+ * A nonzero return from fn makes pds_run return PDS_ECANCELED at once (but
+ * see the hand-over and the final call above): the
  * points so far are kept (*added counts them), the sampler stays valid, and
  * a later pds_run continues to exactly the pattern an uninterrupted run gives.
  * pds_step never calls fn. fn must not call functions that change the same
@@ -324,13 +335,19 @@ PDS_API int pds_set_progress(pds_sampler *s, pds_progress_fn fn, void *user) PDS
  * pds_set_count (PDS_EINVAL, either way round). A varying field runs the
  * Jones loop from the first point (no dart throwing): in our measurements
  * about 1.8 times the plain sampler's time at the same number of points.
- * With a varying field the count limit is judged at the first point on
- * Oler's bound at rmin (as for a constant radius rmin); once points exist
+ * With a varying field the count limit is judged at the first point on a
+ * bound that holds for every seed: Oler's bound at rmin (as for a constant
+ * radius rmin), or for a map, when smaller, the sum of Oler's bounds over
+ * the cells between its pixel centres, each at its least corner value (one
+ * small value in a map of large ones is then no obstacle); once points exist
  * an unbounded pds_run is not judged again (a maximal pattern returns
  * PDS_DONE). Memory is not reserved for that bound, which one small value
  * can make far larger than the pattern, but grows with the run: PDS_ENOMEM
  * (or PDS_ERANGE past the index space) may then come after some points were
- * added, which stay; *added counts them.
+ * added, which stay; *added counts them. A function's values are known
+ * only where it is asked, so it is judged at rmin, which refuses some small
+ * patterns (one small value among large ones); bounded runs (max_new > 0)
+ * are judged on the count plus max_new and make such a pattern.
  * Allowed only before the first point; the last field set wins.
  */
 
@@ -352,7 +369,9 @@ PDS_API int pds_set_radius_map(pds_sampler *s, size_t w, size_t h, const double 
  * [rmin, rmax]. Called once per point, when it is placed, and not at all
  * when rmin == rmax (the field is then constant); with a progress callback
  * set, also 4096 times over a grid at the first pds_run, for the estimate of
- * the final count (values out of bounds there count as rmax, no error). It
+ * the final count (values out of bounds there count as rmax, no error),
+ * with progress calls during them and a stop honoured (the values asked so
+ * far are kept for the next pds_run). It
  * must not call functions that change the same sampler (they return
  * PDS_ESTATE). (1.3)
  */

@@ -23,7 +23,7 @@ struct pds_sampler {
     bool broken = false;  // an internal invariant failed: refuse changes
     pds_progress_fn progress = nullptr;
     void* progress_user = nullptr;
-    bool in_callback = false;  // a user callback is running: refuse changes
+    const char* in_callback = nullptr;  // the user callback running, by name: refuse changes
     pds_radius_fn radius_fn = nullptr;
     void* radius_user = nullptr;
     char message[256] = "no error";
@@ -46,19 +46,35 @@ __attribute__((format(printf, 3, 4))) int fail(pds_sampler* s, int code, const c
     return code;
 }
 
+// The radius a limit was judged on, as the subject of its message.
+const char* judged_text(pds::JudgedRadius judged) {
+    switch (judged) {
+        case pds::JudgedRadius::field_smallest:
+            return "the field's smallest radius";
+        case pds::JudgedRadius::field_largest:
+            return "the field's largest radius";
+        case pds::JudgedRadius::count_lowest:
+            return "the lowest radius the count may need";
+        case pds::JudgedRadius::radius:
+            break;
+    }
+    return "the radius";
+}
+
+// What is wrong; after the subject judged_text() names, where there is one.
 const char* limit_text(pds::Limit limit) {
     switch (limit) {
         case pds::Limit::too_many_points:
-            return "the radius is too small for the domain: the pattern would exceed the "
+            return "is too small for the domain: the pattern would exceed the "
                    "supported number of points";
         case pds::Limit::radius_below_precision:
-            return "the radius is too small relative to the domain's coordinates for double "
+            return "is too small relative to the domain's coordinates for double "
                    "precision (it must be at least 2^-26 of their magnitude)";
         case pds::Limit::coordinates_too_small:
             return "the domain's coordinates are too close to zero (all below 2^-900, or a nonzero "
                    "one below 2^-900 times the largest: use 0 there)";
         case pds::Limit::radius_exceeds_period:
-            return "the radius is larger than half the shorter period of the periodic domain";
+            return "is larger than half the shorter period of the periodic domain";
         case pds::Limit::field_periods_too_unequal:
             return "a radius field on a periodic domain needs the longer side at most 16 times the "
                    "shorter";
@@ -86,8 +102,12 @@ int guarded(pds_sampler* s, const char* what, F&& f, bool changes = true) PDS_NO
                     "finite; the points so far are kept",
                     what, e.value(), e.x(), e.y());
     } catch (const pds::LimitError& e) {
-        // Thrown before anything changed.
-        return fail(s, PDS_ERANGE, "%s: %s (radius %g)", what, limit_text(e.limit()), e.radius());
+        // Thrown before anything changed. A limit on a radius names it.
+        const pds::Limit l = e.limit();
+        if (l == pds::Limit::too_many_points || l == pds::Limit::radius_below_precision ||
+            l == pds::Limit::radius_exceeds_period)
+            return fail(s, PDS_ERANGE, "%s: %s %s (%g)", what, judged_text(e.judged()), limit_text(l), e.radius());
+        return fail(s, PDS_ERANGE, "%s: %s (radius %g)", what, limit_text(l), e.radius());
     } catch (const std::exception& e) {
         if (changes) s->broken = true;
         return fail(s, PDS_EINTERNAL, "%s: internal error (please report): %s", what, e.what());
@@ -98,29 +118,32 @@ int guarded(pds_sampler* s, const char* what, F&& f, bool changes = true) PDS_NO
 }
 
 int refuse_broken(pds_sampler* s, const char* what) {
-    if (s->in_callback)
-        return fail(s, PDS_ESTATE, "%s: not allowed from inside the progress callback", what);
+    if (s->in_callback != nullptr)
+        return fail(s, PDS_ESTATE, "%s: not allowed from inside %s", what, s->in_callback);
     return fail(s, PDS_ESTATE, "%s: the sampler is read-only after an internal error", what);
 }
 
 // Calls that change the sampler are refused after an internal error and
-// from inside the progress callback.
-bool refuses_changes(const pds_sampler* s) { return s->broken || s->in_callback; }
+// from inside a user callback (the progress callback, the radius function).
+bool refuses_changes(const pds_sampler* s) { return s->broken || s->in_callback != nullptr; }
 
 // The sampler calls this; it marks the handle while the user's function runs.
 int progress_trampoline(void* handle, std::size_t count, double done) {
     pds_sampler* s = static_cast<pds_sampler*>(handle);
-    s->in_callback = true;
+    s->in_callback = "the progress callback";
     const int stop = s->progress(s->progress_user, count, done);
-    s->in_callback = false;
+    s->in_callback = nullptr;
     return stop;
 }
 
 double radius_trampoline(void* handle, double x, double y) {
     pds_sampler* s = static_cast<pds_sampler*>(handle);
-    s->in_callback = true;
+    // The radius function may run inside the progress callback's run, never
+    // inside the callback itself; either way the outer name is restored.
+    const char* outer = s->in_callback;
+    s->in_callback = "the radius function";
     const double r = s->radius_fn(s->radius_user, x, y);
-    s->in_callback = false;
+    s->in_callback = outer;
     return r;
 }
 
@@ -242,7 +265,7 @@ PDS_API size_t pds_radii(const pds_sampler* s, size_t first, size_t count, doubl
 
 PDS_API int pds_set_progress(pds_sampler* s, pds_progress_fn fn, void* user) PDS_NOEXCEPT {
     if (s == nullptr) return PDS_EINVAL;
-    if (s->in_callback) return refuse_broken(s, "pds_set_progress");
+    if (s->in_callback != nullptr) return refuse_broken(s, "pds_set_progress");
     if (fn == nullptr && user != nullptr)
         return fail(s, PDS_EINVAL, "pds_set_progress: user data given without a function");
     s->progress = fn;

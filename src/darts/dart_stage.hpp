@@ -70,7 +70,11 @@ public:
     bool has_room_for(std::size_t points) const override {
         return points_.capacity() >= points && curve_.has_room_for(points);
     }
-    void hand_over_to(JonesStage& jones) override { jones.adopt(points_, handover_order()); }
+    void hand_over_to(JonesStage& jones, const Poll& poll = Poll{}) override {
+        const std::uint32_t* order = handover_order();
+        poll();
+        jones.adopt(points_, order, nullptr, poll);
+    }
 
     std::size_t count() const override { return points_.size(); }
     const Point& point(PointIndex k) const override { return points_[k]; }

@@ -246,11 +246,13 @@ void FieldDartStage::add_next() {
     queue_.take();
 }
 
-void FieldDartStage::hand_over_to(JonesStage& jones) {
+void FieldDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {
     // The grids go before the mesh is filled, so the two never peak together.
     layers_.clear();
     queue_.end();
-    jones.adopt(points_, curve_.order(points_), &values_);
+    const std::uint32_t* order = curve_.order(points_);
+    poll();
+    jones.adopt(points_, order, &values_, poll);
 }
 
 std::unique_ptr<JonesStage> FieldDartStage::jones_of_points() const {

@@ -63,7 +63,7 @@ public:
     bool has_room_for(std::size_t points) const override {
         return points_.capacity() >= points && values_.capacity() >= points && curve_.has_room_for(points);
     }
-    void hand_over_to(JonesStage& jones) override;
+    void hand_over_to(JonesStage& jones, const Poll& poll = Poll{}) override;
 
     std::size_t count() const override { return points_.size(); }
     const Point& point(PointIndex k) const override { return points_[k]; }

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 
+#include "core/poll.hpp"
 #include "jones/stage.hpp"
 
 namespace pds {
@@ -21,8 +22,9 @@ public:
     virtual bool has_room_for(std::size_t points) const = 0;
     // Inserts the points into `jones` (no points yet, room reserved for
     // these) in an order that keeps its walks short; never allocates. Ends
-    // this stage and releases its grid.
-    virtual void hand_over_to(JonesStage& jones) = 0;
+    // this stage and releases its grid. Calls poll between its steps and
+    // every Poll::kEvery points (progress reports).
+    virtual void hand_over_to(JonesStage& jones, const Poll& poll = Poll{}) = 0;
 };
 
 }  // namespace pds

@@ -82,7 +82,10 @@ void Frame::set_radius(double user_radius) {
 }
 
 bool Frame::periods_beyond(double ratio) const {
-    const double w = user_domain_.x1 - user_domain_.x0, h = user_domain_.y1 - user_domain_.y0;
+    // In the scaled frame: the user's sides may overflow (-1.7e308 to
+    // 1.7e308), their scaled copies cannot, and scaling by 2^k keeps the ratio.
+    const Box user = Rectangle(user_domain_).scaled(scale_exp_).bounds();
+    const double w = user.x1 - user.x0, h = user.y1 - user.y0;
     return periodic() && std::max(w, h) > ratio * std::min(w, h);
 }
 
@@ -129,8 +132,10 @@ double Frame::expected_count(double user_radius) const {
 
 double Frame::max_radius() const {
     if (!periodic()) return HUGE_VAL;
-    const double w = user_domain_.x1 - user_domain_.x0, h = user_domain_.y1 - user_domain_.y0;
-    return 0.5 * std::min(w, h);
+    // Scaled and back, exactly: a user side may overflow (periods_beyond).
+    const Box user = Rectangle(user_domain_).scaled(scale_exp_).bounds();
+    const double w = user.x1 - user.x0, h = user.y1 - user.y0;
+    return std::ldexp(0.5 * std::min(w, h), -scale_exp_);
 }
 
 double Frame::radius_for_count(double n) const {

@@ -40,17 +40,24 @@ enum class Limit {
     field_periods_too_unequal,  // a varying radius field on a torus longer than kMaxFieldPeriodRatio
 };
 
+// Which radius a limit was judged on: the one radius, a field's smallest or
+// largest, or the lowest radius count mode can reach (so a message can name
+// the one at fault).
+enum class JudgedRadius { radius, field_smallest, field_largest, count_lowest };
+
 // Thrown before anything changes when a call asks what the limits forbid.
 class LimitError : public std::runtime_error {
 public:
-    LimitError(Limit limit, double user_radius)
-        : std::runtime_error("limit"), limit_(limit), radius_(user_radius) {}
+    LimitError(Limit limit, double user_radius, JudgedRadius judged = JudgedRadius::radius)
+        : std::runtime_error("limit"), limit_(limit), radius_(user_radius), judged_(judged) {}
     Limit limit() const { return limit_; }
     double radius() const { return radius_; }  // the radius judged
+    JudgedRadius judged() const { return judged_; }
 
 private:
     Limit limit_;
     double radius_;
+    JudgedRadius judged_;
 };
 
 class Frame {

@@ -46,13 +46,13 @@ bool JonesLoop<Space, Rule>::has_room_for(std::size_t points) const {
 
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::adopt(const std::vector<Point>& points, const std::uint32_t* order,
-                                   const std::vector<double>* values) {
+                                   const std::vector<double>* values, const Poll& poll) {
     if (Rule::kWeighted != (values != nullptr) || (values && Space::kPeriodic))
         throw std::logic_error("hand-over without the field's values");
     if (count() != 0 || (!Space::kPeriodic && !has_room_for(points.size())))
         throw std::logic_error("hand-over without room");
     order_.resize(points.size());
-    space_.adopt(*this, points, order, values);
+    space_.adopt(*this, points, order, values, poll);
 }
 
 template <class Space, class Rule>
@@ -68,7 +68,7 @@ void JonesLoop<Space, Rule>::set_radius(double r, const PointRadii* radii) {
 }
 
 template <class Space, class Rule>
-bool JonesLoop<Space, Rule>::measure_all_cells() {
+bool JonesLoop<Space, Rule>::measure_all_cells(const Poll& poll) {
     const MeshCells cells = this->cells();
     const SiteIndex sites = dt_.vertex_count() - Delaunay::kGhosts;
     bool valid = true;
@@ -78,6 +78,7 @@ bool JonesLoop<Space, Rule>::measure_all_cells() {
     for (SiteIndex site = 0; site < sites; ++site) {
         const VertexIndex v = vertex_of(site);
         if (site % kAhead == 0) {
+            if (site % Poll::kEvery == 0) poll();
             SiteIndex m = 0;
             for (SiteIndex s = site + kAhead; s < sites && m < kAhead; ++s) ahead[m++] = vertex_of(s);
             dt_.prefetch_rings(ahead, m);

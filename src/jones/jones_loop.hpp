@@ -71,8 +71,8 @@ public:
 
     void reserve(std::size_t points) override;
     bool has_room_for(std::size_t points) const override;
-    void adopt(const std::vector<Point>& points, const std::uint32_t* order,
-               const std::vector<double>* values) override;
+    void adopt(const std::vector<Point>& points, const std::uint32_t* order, const std::vector<double>* values,
+               const Poll& poll) override;
     void settle() override { space_.settle(*this); }
     void set_radius(double r, const PointRadii* radii) override;
 
@@ -114,7 +114,7 @@ private:
 
     // Every cell's exact free area into the tree: O(N), no allocation. On
     // the torus, false when some real cell is not yet its torus cell.
-    bool measure_all_cells();
+    bool measure_all_cells(const Poll& poll = Poll{});
     // Mesh vertices (ghosts aside) that `points` points need, copies included.
     std::size_t vertices_for(std::size_t points) const { return space_.vertices_for(points); }
     void adapt_batch_size();

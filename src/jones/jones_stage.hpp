@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/point.hpp"
+#include "core/poll.hpp"
 #include "core/torus.hpp"
 #include "domain/rectangle.hpp"
 #include "jones/mesh_cells.hpp"
@@ -45,9 +46,10 @@ public:
     // The hand-over: inserts the dart stage's points (point k of `points`
     // is the k-th added) in the order given, measures every cell and builds
     // the tree. A varying radius: values[k] is point k's field value.
-    // Requires count() == 0 and room; never allocates.
+    // Requires count() == 0 and room; never allocates. Calls poll every
+    // Poll::kEvery points inserted and cells measured.
     virtual void adopt(const std::vector<Point>& points, const std::uint32_t* order,
-                       const std::vector<double>* values = nullptr) = 0;
+                       const std::vector<double>* values = nullptr, const Poll& poll = Poll{}) = 0;
     // The torus: finishes a widening of the margin that memory interrupted,
     // or that the hand-over left to do (may throw std::bad_alloc).
     virtual void settle() = 0;

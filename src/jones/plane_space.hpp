@@ -19,6 +19,7 @@
 
 #include "core/indices.hpp"
 #include "core/point.hpp"
+#include "core/poll.hpp"
 #include "core/predicates.hpp"
 #include "core/rng.hpp"
 #include "core/torus.hpp"
@@ -64,13 +65,17 @@ public:
 
     template <class Loop>
     void adopt(Loop& loop, const std::vector<Point>& points, const std::uint32_t* order,
-               const std::vector<double>* values) {
+               const std::vector<double>* values, const Poll& poll) {
         if (values) loop.rule_.assign_values(*values);  // within the reserved room
+        std::size_t inserted = 0;
         loop.dt_.insert_in_order(
             points, order, points.size(), [&](std::uint32_t k) { return loop.rule_.radius_of(loop.rule_.value(k)); },
-            [&](std::uint32_t k, VertexIndex v) { loop.order_.set(k, v); });
+            [&](std::uint32_t k, VertexIndex v) {
+                loop.order_.set(k, v);
+                if (++inserted % Poll::kEvery == 0) poll();
+            });
         loop.tree_.resize(points.size());
-        loop.measure_all_cells();
+        loop.measure_all_cells(poll);
     }
     template <class Loop>
     void insert_point(Loop& loop, const Point& p, VertexIndex near, double value) {

@@ -22,6 +22,7 @@
 
 #include "core/indices.hpp"
 #include "core/point.hpp"
+#include "core/poll.hpp"
 #include "core/predicates.hpp"
 #include "core/rng.hpp"
 #include "core/torus.hpp"
@@ -68,7 +69,7 @@ public:
 
     template <class Loop>
     void adopt(Loop& loop, const std::vector<Point>& points, const std::uint32_t* order,
-               const std::vector<double>* values);
+               const std::vector<double>* values, const Poll& poll);
     template <class Loop>
     void insert_point(Loop& loop, const Point& p, VertexIndex near, double value);
     // Whether the triangles around real vertex v, measured as m, keep the

@@ -77,7 +77,7 @@ VertexIndex TorusSpace::insert_with_copies(Loop& loop, const Point& p, VertexInd
 
 template <class Loop>
 void TorusSpace::adopt(Loop& loop, const std::vector<Point>& points, const std::uint32_t* order,
-                       const std::vector<double>* /*values: none on the torus*/) {
+                       const std::vector<double>* /*values: none on the torus*/, const Poll& poll) {
     // The points along the curve, then their copies in the same order (so
     // each offset's walks stay short); then the margin is settled. Room
     // first, so a failure changes nothing; the margin is settled by the first
@@ -91,12 +91,15 @@ void TorusSpace::adopt(Loop& loop, const std::vector<Point>& points, const std::
     for (std::size_t i = 0; i < n; ++i) {
         previous = insert_vertex(loop, points[order[i]], previous);
         loop.order_.set(order[i], previous);
+        if ((i + 1) % Poll::kEvery == 0) poll();
     }
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n; ++i) {
+        if ((i + 1) % Poll::kEvery == 0) poll();
         copies_.for_each_copy(points[order[i]], copies_.margin(), -1.0, [&](const Point& c, int a, int b) {
             VertexIndex& hint = copy_hint_[copies_.offset_slot(a, b)];
             hint = insert_vertex(loop, c, hint, loop.order_.vertex(order[i]));
         });
+    }
     widen_pending_ = true;
 }
 

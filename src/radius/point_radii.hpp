@@ -8,6 +8,8 @@
 #ifndef PDS_POINT_RADII_HPP
 #define PDS_POINT_RADII_HPP
 
+#include <stdexcept>
+
 #include "domain/frame.hpp"
 #include "core/point.hpp"
 #include "radius/radius_field.hpp"
@@ -20,9 +22,14 @@ public:
     PointRadii(const RadiusField& field, const Frame& frame) : field_(&field), frame_(frame) {}
 
     // The field's value (user units) at internal point p. Throws FieldError.
+    // Every value a stage keeps passes here: one that is not a number in
+    // [rmin, rmax] (a NaN above all, which fails every comparison a stage
+    // makes and so would leave its disk empty) is a bug, never a radius.
     double value_at(const Point& p) const {
         const Point u = frame_.to_user(p);
-        return field_->value(frame_.user_domain(), u.x, u.y);
+        const double v = field_->value(frame_.user_domain(), u.x, u.y);
+        if (!(v >= field_->rmin() && v <= field_->rmax())) throw std::logic_error("radius field value out of its bounds");
+        return v;
     }
     // The internal radius of a point whose field value is `value`.
     double radius_of(double value) const {

@@ -18,6 +18,7 @@
 #define PDS_RADIUS_FIELD_HPP
 
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -53,8 +54,30 @@ public:
     bool constant() const { return rmin_ == rmax_; }
     // The value at user point (x, y) of `domain`. Throws FieldError.
     double value(const Box& domain, double x, double y) const;
-    // The mean of 1 / r^2 over the domain, estimated (the expected count).
-    double mean_inverse_square(const Box& domain) const;
+    // A map field: an upper bound on the number of points of any pattern
+    // over `box` (the domain, in any frame), where a point of value v has
+    // the radius radius_of(v) in that frame. Infinite for a function, whose
+    // values are known only where it is asked. See radius_field.cpp.
+    double map_count_bound(const Box& box, const std::function<double(double)>& radius_of) const;
+
+    // A user function's field calls user code for every value.
+    bool calls_user() const { return fn_ != nullptr && !constant(); }
+
+    // The mean of 1 / r^2 over the domain, estimated from its values at a
+    // grid of kMeanGrid^2 points (the expected count, for progress reports).
+    // A function's may take long, so the estimate goes a value at a time:
+    // step() adds the next grid point's, done() says all are in.
+    static constexpr int kMeanGrid = 64;
+    class MeanInverseSquare {
+    public:
+        bool done() const { return next_ == kMeanGrid * kMeanGrid; }
+        void step(const RadiusField& field, const Box& domain);
+        double mean() const { return sum_ / (kMeanGrid * kMeanGrid); }
+
+    private:
+        int next_ = 0;
+        double sum_ = 0.0;
+    };
 
 private:
     std::vector<double> map_;

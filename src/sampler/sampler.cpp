@@ -20,12 +20,17 @@ bool Sampler::use_darts() const {
     return !frame_.torus().on() && field_->rmax() <= FieldDartStage::kMaxRatio * field_->rmin();
 }
 
-double Sampler::expected_count() const {
+std::optional<double> Sampler::expected_count(ProgressMeter& meter) {
     // A field's: as for the radius whose 1/R^2 is the mean of 1/r^2 over the domain.
     if (!varying_field()) return frame_.expected_count(frame_.user_radius());
-    // The field's mean of 1/r^2 is measured once per field and domain.
-    if (!mean_inverse_square_) mean_inverse_square_ = field_->mean_inverse_square(frame_.user_domain());
-    return frame_.expected_count(frame_.user_radius() / field_->rmax() / std::sqrt(*mean_inverse_square_));
+    // The field's mean of 1/r^2 is measured once per field and domain. A
+    // user function may be slow: the meter is polled after each value, and a
+    // stop keeps what was measured for the next run.
+    while (!mean_inverse_square_.done()) {
+        mean_inverse_square_.step(*field_, frame_.user_domain());
+        if (meter.poll(count())) return std::nullopt;
+    }
+    return frame_.expected_count(frame_.user_radius() / field_->rmax() / std::sqrt(mean_inverse_square_.mean()));
 }
 
 Frame Sampler::smallest_frame() const {
@@ -40,8 +45,21 @@ void Sampler::set_field(const RadiusField& field) {
     if (count_target_ != 0) throw std::logic_error("set_field in count mode");
     forget_stages();
     field_ = field;
-    mean_inverse_square_.reset();
+    mean_inverse_square_ = RadiusField::MeanInverseSquare{};
     frame_.set_radius(field.rmax());
+}
+
+std::size_t Sampler::field_count_bound() const {
+    // Oler's bound at rmin holds for any field. A map's own bound (cells
+    // between its pixel centres, each at its least value) is far smaller
+    // when few values are small, and is worked out only when Oler's at rmin
+    // would refuse the run (it costs O(w h)).
+    const std::size_t oler = smallest_frame().count_bound_points();
+    if (oler <= Frame::max_points()) return oler;
+    const PointRadii radii(*field_, frame_);
+    const double map = field_->map_count_bound(frame_.box(), [&](double v) { return radii.radius_of(v); });
+    const double cap = static_cast<double>(Frame::max_points()) + 1.0;
+    return map < cap ? std::min(oler, static_cast<std::size_t>(map)) : oler;
 }
 
 void Sampler::forget_stages() {
@@ -57,7 +75,7 @@ void Sampler::set_domain(const Box& domain) {
     if (count() != 0) throw std::logic_error("set_domain after the first point");
     forget_stages();
     frame_.set_domain(domain);
-    mean_inverse_square_.reset();
+    mean_inverse_square_ = RadiusField::MeanInverseSquare{};
     if (count_target_ != 0) set_count(count_target_);
 }
 
@@ -91,17 +109,22 @@ void Sampler::skip_dart_stage() {
 }
 
 void Sampler::prepare(std::size_t points) {
+    const JudgedRadius smallest = field_ ? JudgedRadius::field_smallest : JudgedRadius::radius;
+    const JudgedRadius largest = field_ ? JudgedRadius::field_largest : JudgedRadius::radius;
     if (points > Frame::max_points()) throw LimitError(Limit::too_many_points, frame_.user_radius());
     if (!started()) {
         // A field: precision at the smallest radius, the torus's period at
-        // the largest.
+        // the largest (each error names the one judged). A too large radius
+        // is judged first: it is the cause when both fail (a period under
+        // 2 rmax makes the smallest radius's pattern no denser).
         const Frame low = smallest_frame();
-        const Limit limit = low.precision_limit();
-        if (limit != Limit::ok) throw LimitError(limit, low.user_radius());
         const Limit high = frame_.precision_limit();
-        if (high != Limit::ok) throw LimitError(high, frame_.user_radius());
+        if (high == Limit::radius_exceeds_period) throw LimitError(high, frame_.user_radius(), largest);
+        const Limit limit = low.precision_limit();
+        if (limit != Limit::ok) throw LimitError(limit, low.user_radius(), smallest);
+        if (high != Limit::ok) throw LimitError(high, frame_.user_radius(), largest);
         if (varying_field() && frame_.periods_beyond(Frame::kMaxFieldPeriodRatio))
-            throw LimitError(Limit::field_periods_too_unequal, frame_.user_radius());
+            throw LimitError(Limit::field_periods_too_unequal, frame_.user_radius(), largest);
         // Count mode lowers the radius as it goes: the lowest it can reach is
         // judged now, so a run never meets the limit half way.
         if (count_target_ != 0) {
@@ -109,7 +132,7 @@ void Sampler::prepare(std::size_t points) {
             lowest.set_radius(std::min(frame_.user_radius(),
                                        frame_.lowest_count_radius(static_cast<double>(count_target_))));
             const Limit at_lowest = lowest.precision_limit();
-            if (at_lowest != Limit::ok) throw LimitError(at_lowest, lowest.user_radius());
+            if (at_lowest != Limit::ok) throw LimitError(at_lowest, lowest.user_radius(), JudgedRadius::count_lowest);
         }
         // Built aside, kept only when both exist: std::bad_alloc changes nothing.
         const std::optional<PointRadii> radii = point_radii(frame_);
@@ -169,8 +192,18 @@ void Sampler::lower_radius_for_count() {
 
 void Sampler::hand_over() {
     // Room for the points and the order was reserved with the dart stage's:
-    // nothing here allocates.
-    darts_->hand_over_to(*jones_);
+    // nothing here allocates. Inside pds_run the meter is polled as it goes,
+    // so the reports keep coming; a stop asked for then takes effect after
+    // the hand-over (the run checks the meter after its next point).
+    Poll poll;
+    if (meter_ != nullptr && meter_->active()) {
+        poll.fn = [](void* context) {
+            Sampler* s = static_cast<Sampler*>(context);
+            s->meter_->poll(s->count());
+        };
+        poll.context = this;
+    }
+    darts_->hand_over_to(*jones_, poll);
     darts_.reset();
 }
 
@@ -188,29 +221,45 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
     // prepare() refuses a total past the index space, so an unbounded run
     // whose maximal pattern might not fit fails before any point.
     // A varying field: Oler's bound at the smallest radius may exceed the
-    // pattern by any factor (one small pixel in a map). It is judged at the
+    // pattern by any factor (one small pixel in a map); a map's own bound
+    // (field_count_bound) is used when it is smaller. It is judged at the
     // first point, as a constant radius is; afterwards the pattern itself
     // says whether it is complete. Memory is not reserved for that bound but
     // grows with the run (geometrically, O(1) amortized), and a pattern that
     // truly outgrows the index space stops there (PDS_ERANGE, points kept).
     const bool grows = varying_field();
-    const std::size_t bound = smallest_frame().count_bound_points();
+    const std::size_t bound = grows ? field_count_bound() : smallest_frame().count_bound_points();
     if (grows) {
         const std::size_t asked = max_new == 0 ? (n == 0 ? bound : 0) : std::min(n + max_new, std::max(bound, n));
-        if (asked > Frame::max_points()) throw LimitError(Limit::too_many_points, smallest_frame().user_radius());
+        if (asked > Frame::max_points())
+            throw LimitError(Limit::too_many_points, smallest_frame().user_radius(), JudgedRadius::field_smallest);
         prepare(n + 1);
     } else {
         const std::size_t whole = count_target_ != 0 ? std::max(count_target_, n) : std::max(bound, n) + 1;
         prepare(max_new != 0 && max_new < whole - n ? n + max_new : whole);
     }
+    // The meter reads the clock after every point when each point calls the
+    // user's radius function, whose cost the library cannot know.
+    ProgressMeter meter(progress_, field_ && field_->calls_user());
     // The estimate is needed only for reports (a field's asks the field).
-    const double expected =
-        progress_.fn == nullptr ? 1.0 : count_target_ != 0 ? static_cast<double>(count_target_) : expected_count();
-    ProgressMeter meter(progress_, expected, count_target_ != 0);
+    if (meter.active()) {
+        const std::optional<double> expected =
+            count_target_ != 0 ? std::optional<double>(static_cast<double>(count_target_)) : expected_count(meter);
+        if (!expected) return RunEnd::canceled;
+        meter.expect(*expected, count_target_ != 0);
+    }
+    // The hand-over, which may come with any point, polls the meter.
+    struct Watch {
+        ProgressMeter*& slot;
+        ~Watch() { slot = nullptr; }
+    } watch{meter_};
+    meter_ = &meter;
     while (max_new == 0 || *added < max_new) {
         if (grows) prepare(count() + 1);  // nothing to do while there is room
         if (!add_one()) {
-            // The final report; a stop asked for here changes nothing.
+            // The final report. The pattern is complete: a stop asked for
+            // here (or in a hand-over just before) has nothing left to stop,
+            // and the run says what it is (poissondisk.h, pds_progress_fn).
             meter.finish(count());
             return RunEnd::complete;
         }
@@ -237,9 +286,10 @@ void Sampler::refine(double radius) {
     Frame next_smallest = next;
     if (field_) next_smallest.set_radius(scaled_radius(field_->rmin(), field_->rmax(), radius));
     const Limit limit = next_smallest.precision_limit();
-    if (limit != Limit::ok) throw LimitError(limit, next_smallest.user_radius());
+    if (limit != Limit::ok)
+        throw LimitError(limit, next_smallest.user_radius(), field_ ? JudgedRadius::field_smallest : JudgedRadius::radius);
     const Limit high = next.precision_limit();
-    if (high != Limit::ok) throw LimitError(high, radius);
+    if (high != Limit::ok) throw LimitError(high, radius, field_ ? JudgedRadius::field_largest : JudgedRadius::radius);
     // The generator's state at a refine must not depend on whether the caller
     // already asked for room (sampler.hpp): draw the next point, then drop it.
     next_point();

@@ -74,8 +74,9 @@ public:
     // complete (maximal, or the count reached; decided exactly), at the limit
     // with room left, or canceled by the progress function.
     RunEnd run(std::size_t max_new, std::size_t* added);
-    // The same, returning how many were added; *maximal: ended complete.
-    std::size_t run(std::size_t max_new, bool* maximal) {
+    // run() for callers that need only the count: returns how many points
+    // were added; *maximal: the run ended complete.
+    std::size_t add_points(std::size_t max_new, bool* maximal) {
         std::size_t added = 0;
         *maximal = run(max_new, &added) == RunEnd::complete;
         return added;
@@ -103,8 +104,10 @@ public:
 
 private:
     bool started() const { return jones_ != nullptr; }
-    // The expected size of a maximal pattern (for progress reports).
-    double expected_count() const;
+    // The expected size of a maximal pattern (for progress reports); for a
+    // field, nothing when the meter was asked to stop while the field's
+    // mean was being estimated (the estimate so far is kept).
+    std::optional<double> expected_count(ProgressMeter& meter);
     // The frame at the smallest radius in force: what the limits and the
     // bounds on the count are judged with.
     Frame smallest_frame() const;
@@ -116,6 +119,9 @@ private:
         return varying_field() ? std::optional<PointRadii>(PointRadii(*field_, frame)) : std::nullopt;
     }
     bool use_darts() const;
+    // A varying field's bound on the size of any pattern (the smaller of
+    // Oler's at rmin and the map's own), saturated as count_bound_points().
+    std::size_t field_count_bound() const;
     Stage& stage() { return darts_ ? static_cast<Stage&>(*darts_) : *jones_; }
     const Stage& stage() const { return darts_ ? static_cast<const Stage&>(*darts_) : *jones_; }
     // Judges the limits for a call that may bring the total to `points`,
@@ -135,7 +141,8 @@ private:
     std::size_t count_target_ = 0;
     ProgressHook progress_;
     std::optional<RadiusField> field_;
-    mutable std::optional<double> mean_inverse_square_;  // of the field over the domain, once asked
+    RadiusField::MeanInverseSquare mean_inverse_square_;  // of the field over the domain, once asked
+    ProgressMeter* meter_ = nullptr;  // the running pds_run's, polled by the hand-over
     std::unique_ptr<OpeningStage> darts_;  // while a dart stage runs
     std::unique_ptr<JonesStage> jones_;  // from the first point on
 };

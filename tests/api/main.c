@@ -30,6 +30,10 @@ int main(void)
     srunner_add_suite(runner, progress_suite());
     srunner_add_suite(runner, periodic_suite());
     srunner_add_suite(runner, field_suite());
+    srunner_add_suite(runner, field_range_suite());
+    srunner_add_suite(runner, messages_suite());
+    srunner_add_suite(runner, documented_suite());
+    srunner_add_suite(runner, field_bound_suite());
 
     if (test_light())
         printf("PDS_TEST_LIGHT is set: heavy loops shrunk, calibration skipped\n");

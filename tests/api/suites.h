@@ -16,6 +16,10 @@
  *   progress_suite     pds_set_progress: reports, cancel and resume        (progress.c)
  *   periodic_suite     pds_set_periodic: the torus, spacing, law, state    (periodic.c)
  *   field_suite        a variable radius: rule, maximality, map, splits    (field.c)
+ *   field_range_suite  a field on domains at the ends of the double range  (field_range.c)
+ *   messages_suite     pds_errmsg names the radius or callback at fault    (messages.c)
+ *   documented_suite   measured facts the man pages state                  (documented.c)
+ *   field_bound_suite  how an unbounded run with a radius map is judged    (field_bound.c)
  */
 #ifndef PDS_TESTS_API_SUITES_H
 #define PDS_TESTS_API_SUITES_H
@@ -36,5 +40,9 @@ Suite *count_suite(void);
 Suite *progress_suite(void);
 Suite *periodic_suite(void);
 Suite *field_suite(void);
+Suite *field_range_suite(void);
+Suite *messages_suite(void);
+Suite *documented_suite(void);
+Suite *field_bound_suite(void);
 
 #endif /* PDS_TESTS_API_SUITES_H */

@@ -103,11 +103,11 @@ inline void configure(pds::Sampler& s, const Config& c) {
 inline oracle::Pattern run_to_the_end(pds::Sampler& s, std::size_t* from_darts = nullptr) {
     bool maximal = false;
     if (from_darts) {
-        while (s.in_dart_stage() && s.run(1, &maximal) == 1) {
+        while (s.in_dart_stage() && s.add_points(1, &maximal) == 1) {
         }
         *from_darts += s.in_dart_stage() ? s.count() : s.count() - (s.count() > 0 ? 1 : 0);
     }
-    s.run(0, &maximal);
+    s.add_points(0, &maximal);
     ck_assert(maximal);
     oracle::Pattern out;
     std::vector<double> xy(2 * s.count());

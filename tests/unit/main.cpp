@@ -24,6 +24,7 @@ int main() {
     srunner_add_suite(runner, out_of_memory_suite());
     srunner_add_suite(runner, torus_suite());
     srunner_add_suite(runner, rectangle_suite());
+    srunner_add_suite(runner, progress_suite());
     srunner_run_all(runner, CK_NORMAL);
     const int failed = srunner_ntests_failed(runner);
     srunner_free(runner);

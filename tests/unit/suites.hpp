@@ -26,6 +26,7 @@ Suite* field_suite();
 Suite* out_of_memory_suite();
 Suite* torus_suite();
 Suite* rectangle_suite();
+Suite* progress_suite();
 
 // Under Valgrind (PDS_TEST_LIGHT set) loops shrink; every behaviour still runs.
 inline bool test_light() { return std::getenv("PDS_TEST_LIGHT") != nullptr; }

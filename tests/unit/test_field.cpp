@@ -173,13 +173,13 @@ START_TEST(equal_radii_through_the_weighted_path_are_the_plain_points) {
         // users never see that.)
         bool maximal = false;
         for (int i = 0; i < 50; ++i) {
-            plain.run(1, &maximal);
-            field.run(1, &maximal);
+            plain.add_points(1, &maximal);
+            field.add_points(1, &maximal);
         }
-        plain.run(100, &maximal);
-        field.run(100, &maximal);
-        plain.run(0, &maximal);
-        field.run(0, &maximal);
+        plain.add_points(100, &maximal);
+        field.add_points(100, &maximal);
+        plain.add_points(0, &maximal);
+        field.add_points(0, &maximal);
         ck_assert_uint_eq(plain.count(), field.count());
         std::vector<double> a(2 * plain.count()), b(2 * field.count()), rb(field.count());
         plain.copy_points(0, plain.count(), a.data());

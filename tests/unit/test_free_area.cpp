@@ -48,7 +48,7 @@ START_TEST(area_matches_integration) {
         s.set_domain(cs.box);
         s.skip_dart_stage();  // partial patterns: the Jones loop from the start keeps a mesh
         bool maximal = false;
-        s.run(cs.points, &maximal);
+        s.add_points(cs.points, &maximal);
         ck_assert_uint_eq(real_points(s).size(), cs.points);
         const std::vector<pds::Point> pts = real_points(s);
         const double r_int = s.frame().r();
@@ -119,7 +119,7 @@ START_TEST(float_classification_is_certified) {
             // come from the dart stage handing over to the Jones loop.
             if (stop != 0) s.skip_dart_stage();
             bool maximal = false;
-            s.run(stop, &maximal);
+            s.add_points(stop, &maximal);
             for (std::size_t i = 0; i < s.count(); ++i) {
                 const std::vector<pds::Point> ring = s.jones().cells().ring_points(pds::vertex_of(i));
                 const pds::CellMeasure m = pds::measure_cell(s.jones().cells().query(pds::vertex_of(i)), [&](const auto& visit) {
@@ -236,7 +236,7 @@ START_TEST(draws_are_uniform_in_free_regions) {
         pds::Sampler s(stop == 12 ? 0.12 : 0.03, 33);
         s.skip_dart_stage();
         bool maximal = false;
-        s.run(stop, &maximal);
+        s.add_points(stop, &maximal);
         ck_assert(!maximal);
         // The cells with the largest free areas.
         std::vector<double> area(s.count());

@@ -126,7 +126,7 @@ START_TEST(maximal_patterns_over_seeds_and_domains) {
             pds::Sampler s(cs.r, static_cast<std::uint64_t>(seed * 7919));
             s.set_domain(cs.box);
             bool maximal = false;
-            s.run(0, &maximal);
+            s.add_points(0, &maximal);
             ck_assert(maximal);
             ck_assert(!s.step());
             check_pattern(s, true);
@@ -138,7 +138,7 @@ END_TEST
 START_TEST(partial_patterns_are_valid) {
     pds::Sampler s(0.02, 5);
     bool maximal = true;
-    s.run(700, &maximal);
+    s.add_points(700, &maximal);
     ck_assert(!maximal);
     ck_assert_uint_eq(s.count(), 700);
     ck_assert_double_gt(s.free_area(), 0.0);
@@ -159,7 +159,7 @@ START_TEST(dart_stage_and_hand_over) {
     pds::Sampler s(0.02, 11);
     s.set_domain(pds::Box{0, 0, 1.5, 0.8});
     bool maximal = true;
-    s.run(800, &maximal);
+    s.add_points(800, &maximal);
     ck_assert(s.in_dart_stage());
     ck_assert(!maximal);
     // Free area against the fraction of a fine probe grid farther than R.
@@ -176,7 +176,7 @@ START_TEST(dart_stage_and_hand_over) {
     ck_assert(s.in_dart_stage());  // the queries changed nothing
     // Hand over (somewhere in the next points) and run to the end: the
     // first 800 points are the same, in the same order.
-    s.run(0, &maximal);
+    s.add_points(0, &maximal);
     ck_assert(maximal);
     ck_assert(!s.in_dart_stage());
     const std::vector<double> all = user_points(s);
@@ -189,11 +189,11 @@ START_TEST(refine_continues_at_the_smaller_radius) {
     pds::Sampler s(0.06, 17);
     s.set_domain(pds::Box{0, 0, 2, 1});
     bool maximal = false;
-    s.run(0, &maximal);
+    s.add_points(0, &maximal);
     const std::vector<double> before = user_points(s);
     s.refine(0.03);
     ck_assert_double_gt(s.free_area(), 0.0);
-    s.run(0, &maximal);
+    s.add_points(0, &maximal);
     ck_assert(maximal);
     const std::vector<double> after = user_points(s);
     ck_assert_uint_gt(after.size(), before.size());
@@ -201,11 +201,11 @@ START_TEST(refine_continues_at_the_smaller_radius) {
     check_pattern(s, true);
     // Refine in the middle of a run, then again.
     pds::Sampler t(0.05, 18);
-    t.run(30, &maximal);
+    t.add_points(30, &maximal);
     t.refine(0.04);
-    t.run(100, &maximal);
+    t.add_points(100, &maximal);
     t.refine(0.021);
-    t.run(0, &maximal);
+    t.add_points(0, &maximal);
     ck_assert(maximal);
     check_pattern(t, true);
 }
@@ -216,7 +216,7 @@ START_TEST(same_seed_same_bytes) {
         pds::Sampler s(0.015, seed);
         s.set_domain(pds::Box{-1, 0, 1, 1});
         bool maximal = false;
-        do s.run(chunk, &maximal);
+        do s.add_points(chunk, &maximal);
         while (!maximal);
         return user_points(s);
     };
@@ -255,20 +255,20 @@ START_TEST(limits_judged_at_first_use) {
     // without the dart stage (its grid would be huge).
     pds::Sampler huge(1e-5, 1);
     try {
-        huge.run(0, &maximal);
+        huge.add_points(0, &maximal);
         ck_abort_msg("an unbounded run at R = 1e-5 must throw LimitError");
     } catch (const pds::LimitError& e) {
         ck_assert(e.limit() == pds::Limit::too_many_points);
     }
     ck_assert_uint_eq(huge.count(), 0);
-    ck_assert_uint_eq(huge.run(100, &maximal), 100);
+    ck_assert_uint_eq(huge.add_points(100, &maximal), 100);
     ck_assert(!maximal);
     ck_assert(!huge.in_dart_stage());
     ck_assert(huge.verify().valid);
     // The same radius for a domain it suits, given in either order.
     pds::Sampler tiny(1e-5, 2);
     tiny.set_domain(pds::Box{0, 0, 4e-4, 4e-4});
-    tiny.run(0, &maximal);
+    tiny.add_points(0, &maximal);
     ck_assert(maximal);
     ck_assert_uint_gt(tiny.count(), 500);
     // Precision: refused at the first point, with nothing changed.

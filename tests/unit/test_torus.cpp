@@ -47,7 +47,7 @@ std::vector<pds::Point> maximal_torus_points(double r, std::uint64_t seed) {
     pds::Sampler s(r, seed);
     s.set_periodic(true);
     bool maximal = false;
-    s.run(0, &maximal);
+    s.add_points(0, &maximal);
     ck_assert(maximal);
     std::vector<pds::Point> pts(s.count());
     for (std::size_t k = 0; k < pts.size(); ++k) pts[k] = s.jones().point(k);
@@ -138,7 +138,7 @@ START_TEST(margin_widens_from_the_first_point) {
     ck_assert(s.step());
     ck_assert(s.jones().torus_copies().margin() > 4.0 * r);
     bool maximal = false;
-    s.run(0, &maximal);
+    s.add_points(0, &maximal);
     ck_assert(maximal);
     const pds::VerifyReport rep = s.verify();
     ck_assert_msg(rep.valid && rep.maximal, "%s", rep.failure.c_str());
@@ -153,11 +153,11 @@ START_TEST(dart_stage_sees_across_the_wrap) {
         pds::Sampler s(0.09, seed);
         s.set_periodic(true);
         bool maximal = false;
-        s.run(20, &maximal);
+        s.add_points(20, &maximal);
         ck_assert(s.in_dart_stage());
         pds::VerifyReport rep = s.verify();
         ck_assert_msg(rep.valid, "seed %llu: %s", static_cast<unsigned long long>(seed), rep.failure.c_str());
-        s.run(0, &maximal);
+        s.add_points(0, &maximal);
         rep = s.verify();
         ck_assert_msg(rep.valid && rep.maximal, "seed %llu: %s", static_cast<unsigned long long>(seed),
                       rep.failure.c_str());

@@ -48,7 +48,7 @@ START_TEST(missing_point_is_not_maximal) {
     // own position), so maximality must fail.
     pds::Sampler s(0.07, 3);
     bool maximal = false;
-    s.run(0, &maximal);
+    s.add_points(0, &maximal);
     const pds::Box& box = s.frame().box();
     const double r = s.frame().r();
     const auto& all = s.jones().mesh().points();
