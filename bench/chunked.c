@@ -1,7 +1,7 @@
 /*
  * chunked.c - the cost of splitting a run into one-point calls.
  *
- * Spec 1.1.1: small chunks are O(1) amortized, so
+ * The header promises (since 1.1.1) that small chunks are O(1) amortized, so
  *     while (pds_run(s, 1, NULL) == PDS_MORE);
  * costs within about 3 times one pds_run(s, 0, NULL) at 10^5 points, and
  * gives the same points. This section of make bench times three ways of
