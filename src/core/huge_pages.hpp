@@ -12,6 +12,12 @@
 // Only arrays of 128 MiB and more ask: below that the kernel's compaction
 // to find huge pages costs more than the TLB misses it saves
 // (docs/performance.md has the measurements).
+//
+// An array written sparsely (a dart grid over the whole domain early in a
+// run, or a bounded run's prefix) asks only once the writes expected would
+// make most of its small pages resident anyway (huge_pages_worth): before
+// that, each scattered write would make a whole 2 MiB page resident, and
+// memory would follow the array's size instead of what is written.
 #ifndef PDS_HUGE_PAGES_HPP
 #define PDS_HUGE_PAGES_HPP
 
@@ -27,6 +33,14 @@ std::size_t advise_huge_pages(const void* p, std::size_t bytes);
 template <class T>
 std::size_t advise_huge_pages(const std::vector<T>& v) {
     return advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+}
+
+// Whether `writes` writes scattered at random over an array of `bytes` make
+// huge pages worth asking for: at least one write per 4 KiB page on average
+// (then at most 1.6 times the bytes small pages would hold are resident).
+inline bool huge_pages_worth(std::size_t bytes, std::size_t writes) {
+    constexpr std::size_t kSmallPage = 4096;
+    return writes >= bytes / kSmallPage;
 }
 
 }  // namespace pds

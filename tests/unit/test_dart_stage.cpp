@@ -1,11 +1,16 @@
 // test_dart_stage.cpp - the dart stage on its own: its points are valid (every
-// pair checked exactly, on the plane and the torus), and the hand-over order
+// pair checked exactly, on the plane and the torus), the hand-over order
 // is a permutation that follows the Hilbert curve, also on grids wider than
-// 2^16 cells (where 32-bit curve keys overflowed).
+// 2^16 cells (where 32-bit curve keys overflowed), and its grid asks for huge
+// pages only once the points reserved fill it.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include "darts/dart_stage.hpp"
 #include "core/predicates.hpp"
@@ -132,6 +137,30 @@ START_TEST(handover_order_follows_the_curve_on_a_square) {
 }
 END_TEST
 
+START_TEST(huge_pages_follow_the_points) {
+    // A grid of 141 MB (R = 3.4e-4 over the unit square, 17.7 million
+    // cells): on 2 MiB pages each scattered point would make 2 MiB resident,
+    // so a short run's points (1000: 4 MB on small pages) must not ask for
+    // them; points enough to write every small page of the grid once on
+    // average (34,000 and more) must, as a full run's reservation does.
+    pds::DartStage stage(pds::Box{0, 0, 1, 1}, 3.4e-4);
+    stage.reserve(1000);
+    ck_assert_uint_eq(stage.grid().cells().advised_bytes(), 0);
+    stage.reserve(30000);
+    ck_assert_uint_eq(stage.grid().cells().advised_bytes(), 0);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    stage.reserve(1000000);
+    ck_assert_uint_gt(stage.grid().cells().advised_bytes(), std::size_t{128} << 20);
+#endif
+    // The stage runs as before on either pages.
+    pds::Rng rng(3);
+    for (int k = 0; k < 1000; ++k) {
+        ck_assert(stage.next(rng) != nullptr);
+        stage.add_next();
+    }
+}
+END_TEST
+
 Suite* dart_stage_suite() {
     Suite* s = suite_create("dart_stage");
     TCase* t = tcase_create("hand-over");
@@ -139,6 +168,7 @@ Suite* dart_stage_suite() {
     tcase_add_test(t, handover_order_on_a_wide_grid);
     tcase_add_test(t, dart_points_keep_their_distance);
     tcase_add_test(t, handover_order_follows_the_curve_on_a_square);
+    tcase_add_test(t, huge_pages_follow_the_points);
     suite_add_tcase(s, t);
     return s;
 }
