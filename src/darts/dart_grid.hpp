@@ -90,7 +90,15 @@ public:
 private:
     using Word = std::uint64_t;  // bits 0-31: index + 1; 32-47, 48-63: the offset along x, y
 
-    std::size_t writes_per_point() const { return torus_.on() ? 9 : 1; }
+    // Cells a point and its copies may take: on the torus a copy one period
+    // away along x when the point lies within kPad columns of a side (both
+    // ways only on a grid under 2 kPad columns), the same along y, and the
+    // diagonal ones.
+    std::size_t writes_per_point() const {
+        if (!torus_.on()) return 1;
+        const std::size_t x = cols_ < 2 * darts::kPad ? 3 : 2, y = rows_ < 2 * darts::kPad ? 3 : 2;
+        return x * y;
+    }
     // The lower left corner of the cell in column col, row row (the padding's
     // are negative or past the last): one formula, for writing and reading.
     double cell_x0(std::int64_t col) const { return box_.x0 + static_cast<double>(col) * side_x_; }

@@ -4,6 +4,7 @@
 namespace pds {
 
 template class DartStageOf<DartGrid<DenseCells>>;
+template class DartStageOf<DartGrid<SparseCells>>;
 template class DartStageOf<LayeredGrid>;
 
 }  // namespace pds

@@ -143,10 +143,14 @@ private:
 
 // One radius on the plane or the torus, on a dense grid.
 using DartStage = DartStageOf<DartGrid<DenseCells>>;
+// One radius where the whole grid would not fit the address space: the
+// same decisions, on a grid that keeps only its taken cells.
+using SparseDartStage = DartStageOf<DartGrid<SparseCells>>;
 // A varying radius, on the plane.
 using FieldDartStage = DartStageOf<LayeredGrid>;
 
 extern template class DartStageOf<DartGrid<DenseCells>>;
+extern template class DartStageOf<DartGrid<SparseCells>>;
 extern template class DartStageOf<LayeredGrid>;
 
 }  // namespace pds

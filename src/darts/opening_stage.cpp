@@ -10,7 +10,7 @@ namespace pds {
 
 namespace {
 
-enum class Opening { none, dense, field };
+enum class Opening { none, dense, sparse, field };
 
 Opening opening_for(const Frame& frame, double count_bound, const RadiusField* field) {
     const bool fits = count_bound <= static_cast<double>(Frame::max_points());
@@ -23,9 +23,13 @@ Opening opening_for(const Frame& frame, double count_bound, const RadiusField* f
         const bool few_layers = field->rmax() <= LayeredGrid::kMaxRatio * field->rmin();
         return fits && few_layers && !frame.torus().on() ? Opening::field : Opening::none;
     }
-    // One radius: a grid over the domain while a maximal pattern fits the
-    // index; beyond, only bounded runs are possible, and the loop runs alone.
-    return fits ? Opening::dense : Opening::none;
+    // One radius: a dense grid while a maximal pattern fits the index (its
+    // address space then stays within a few words a point). Beyond, only
+    // bounded runs are possible (the sampler refuses the others), and their
+    // darts go to a sparse grid whose memory follows the points: the Jones
+    // loop alone would start from a sparse mesh whose cells span the domain
+    // (on a torus, with copies across whole periods).
+    return fits ? Opening::dense : Opening::sparse;
 }
 
 }  // namespace
@@ -38,6 +42,8 @@ std::unique_ptr<OpeningStage> make_opening_stage(const Frame& frame, double coun
     switch (opening_for(frame, count_bound, field)) {
     case Opening::dense:
         return std::make_unique<DartStage>(frame.box(), frame.r(), frame.torus());
+    case Opening::sparse:
+        return std::make_unique<SparseDartStage>(frame.box(), frame.r(), frame.torus());
     case Opening::field:
         return std::make_unique<FieldDartStage>(frame.box(), PointRadii(*field, frame));
     case Opening::none:
