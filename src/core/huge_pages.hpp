@@ -9,9 +9,15 @@
 // "madvise" (Debian's default), so the large reservations ask. A hint only:
 // it never changes a result, and where it is unsupported it does nothing.
 //
-// Only arrays of 128 MiB and more ask: at 10^6 points (arrays of tens of
-// MiB) the hint cost more than it saved (the kernel compacts memory to find
-// huge pages: 1.40 s became 1.52 s), at 10^7 it saved 6% (22.0 s to 20.7 s).
+// Only arrays of 128 MiB and more ask: below that the kernel's compaction
+// to find huge pages costs more than the TLB misses it saves
+// (docs/performance.md has the measurements).
+//
+// An array written sparsely (a dart grid over the whole domain early in a
+// run, or a bounded run's prefix) asks only once the writes expected would
+// make most of its small pages resident anyway (huge_pages_worth): before
+// that, each scattered write would make a whole 2 MiB page resident, and
+// memory would follow the array's size instead of what is written.
 #ifndef PDS_HUGE_PAGES_HPP
 #define PDS_HUGE_PAGES_HPP
 
@@ -21,12 +27,20 @@
 namespace pds {
 
 // Advises huge pages for the 2 MiB-aligned part of [p, p + bytes), when
-// bytes is at least 128 MiB.
-void advise_huge_pages(const void* p, std::size_t bytes);
+// bytes is at least 128 MiB. Returns the bytes advised (0: none).
+std::size_t advise_huge_pages(const void* p, std::size_t bytes);
 
 template <class T>
-void advise_huge_pages(const std::vector<T>& v) {
-    advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+std::size_t advise_huge_pages(const std::vector<T>& v) {
+    return advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+}
+
+// Whether `writes` writes scattered at random over an array of `bytes` make
+// huge pages worth asking for: at least one write per 4 KiB page on average
+// (then at most 1.6 times the bytes small pages would hold are resident).
+inline bool huge_pages_worth(std::size_t bytes, std::size_t writes) {
+    constexpr std::size_t kSmallPage = 4096;
+    return writes >= bytes / kSmallPage;
 }
 
 }  // namespace pds

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "darts/grid_cells.hpp"
+#include "darts/grid_arithmetic.hpp"
 
 namespace pds {
 

@@ -1,6 +1,6 @@
-// dart_queue.hpp - what the two dart stages (dart_stage.hpp,
-// field_dart_stage.hpp) share: darts drawn a batch at a time, the dart
-// next() returned kept until added, and the rule that ends the stage.
+// dart_queue.hpp - the sequencing every dart stage (dart_stage.hpp) shares,
+// whatever its grid: darts drawn a batch at a time, the dart next() returned
+// kept until added, and the rule that ends the stage.
 //
 // The rule: the stage ends once fewer than a given share of the darts of a
 // window landed free. It is decided from the darts' own history, so it is a

@@ -1,18 +1,21 @@
 // opening_stage.hpp - the stage that opens a run (stage.hpp): darts thrown
-// over the whole domain while most of it is free (dart_stage.hpp for one
-// radius, field_dart_stage.hpp for a varying one), then its points handed
-// over to the Jones stage, once.
+// over the whole domain while most of it is free (dart_stage.hpp), then its
+// points handed over to the Jones stage, once; and the one place that
+// chooses which opening stage a run gets (make_opening_stage).
 #ifndef PDS_OPENING_STAGE_HPP
 #define PDS_OPENING_STAGE_HPP
 
 #include <cstddef>
+#include <memory>
 
 #include "core/poll.hpp"
 #include "jones/stage.hpp"
 
 namespace pds {
 
+class Frame;
 class JonesStage;
+class RadiusField;
 
 class OpeningStage : public Stage {
 public:
@@ -26,6 +29,16 @@ public:
     // every Poll::kEvery points (progress reports).
     virtual void hand_over_to(JonesStage& jones, const Poll& poll = Poll{}) = 0;
 };
+
+// Whether a run with these settings opens with darts: frame at the radius in
+// force; count_bound: Oler's bound at the smallest radius; field: a varying
+// field (null for one radius, or a constant field, which runs as one radius).
+// Decided from the settings alone, never from the points asked for, so a
+// run split into calls opens as one call does.
+bool opening_stage_suits(const Frame& frame, double count_bound, const RadiusField* field);
+// The opening stage for those settings, or nullptr when the Jones loop runs
+// alone (opening_stage_suits false). Throws std::bad_alloc.
+std::unique_ptr<OpeningStage> make_opening_stage(const Frame& frame, double count_bound, const RadiusField* field);
 
 }  // namespace pds
 

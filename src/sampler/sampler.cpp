@@ -11,13 +11,8 @@ Sampler::Sampler(double radius, std::uint64_t seed)
     : frame_(Box{0.0, 0.0, 1.0, 1.0}, radius), seed_(seed), rng_(seed) {}
 
 bool Sampler::use_darts() const {
-    if (skip_darts_ || smallest_frame().count_bound() > static_cast<double>(Frame::max_points())) return false;
-    if (!varying_field()) return true;
-    // A varying field: a grid per layer of radii (field_dart_stage.hpp), in
-    // the plane, while the layers stay few. On the torus the loop runs alone:
-    // the copies of a point would go into every layer's padding, and the
-    // torus's mesh widens its margin as the points come (torus_space.hpp).
-    return !frame_.torus().on() && field_->rmax() <= FieldDartStage::kMaxRatio * field_->rmin();
+    return !skip_darts_ &&
+           opening_stage_suits(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr);
 }
 
 std::optional<double> Sampler::expected_count(ProgressMeter& meter) {
@@ -138,12 +133,8 @@ void Sampler::prepare(std::size_t points) {
         const std::optional<PointRadii> radii = point_radii(frame_);
         auto jones = make_jones_stage(frame_.domain(), frame_.r(), frame_.torus(), radii ? &*radii : nullptr);
         std::unique_ptr<OpeningStage> darts;
-        if (use_darts()) {
-            if (radii)
-                darts = std::make_unique<FieldDartStage>(frame_.box(), *radii);
-            else
-                darts = std::make_unique<DartStage>(frame_.box(), frame_.r(), frame_.torus());
-        }
+        if (use_darts())
+            darts = make_opening_stage(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr);
         jones_ = std::move(jones);
         darts_ = std::move(darts);
     }

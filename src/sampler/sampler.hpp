@@ -5,9 +5,9 @@
 // Stages (stage.hpp): a run opens with dart throwing (dart_stage.hpp), which
 // adds points with the Jones loop's law while most of the domain is free,
 // and hands its points to the Jones stage (jones_stage.hpp) once darts
-// mostly miss. The hand-over happens once, here (hand_over). The dart stage
-// is skipped when a maximal pattern could not fit the index type: its grid
-// would be too large to be worth it, and only bounded runs are possible.
+// mostly miss. The hand-over happens once, here (hand_over). Which opening
+// stage a run gets, if any, is decided from its settings alone
+// (make_opening_stage, opening_stage.hpp).
 //
 // Determinism: the generator's state depends only on the operations done,
 // never on how a caller split them into calls. A stage draws its next point
@@ -34,8 +34,7 @@
 #include <memory>
 #include <optional>
 
-#include "darts/dart_stage.hpp"
-#include "darts/field_dart_stage.hpp"
+#include "darts/opening_stage.hpp"
 #include "domain/frame.hpp"
 #include "jones/jones_stage.hpp"
 #include "core/point.hpp"

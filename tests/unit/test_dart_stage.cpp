@@ -1,13 +1,21 @@
 // test_dart_stage.cpp - the dart stage on its own: its points are valid (every
-// pair checked exactly, on the plane and the torus), and the hand-over order
+// pair checked exactly, on the plane and the torus), the hand-over order
 // is a permutation that follows the Hilbert curve, also on grids wider than
-// 2^16 cells (where 32-bit curve keys overflowed).
+// 2^16 cells (where 32-bit curve keys overflowed), its grid asks for huge
+// pages only once the points reserved fill it, and a grid keeping only its
+// taken cells decides every dart as the whole grid does, so bounded runs on
+// domains too large for the whole grid throw darts too.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include "darts/dart_stage.hpp"
+#include "sampler/sampler.hpp"
 #include "core/predicates.hpp"
 #include "verify/spatial_hash.hpp"
 #include "suites.hpp"
@@ -15,7 +23,8 @@
 namespace {
 
 // Runs the stage to its end (room for `room` points), seeded with `seed`.
-void fill(pds::DartStage& stage, std::uint64_t seed, std::size_t room) {
+template <class Stage>
+void fill(Stage& stage, std::uint64_t seed, std::size_t room) {
     pds::Rng rng(seed);
     stage.reserve(room);
     while (stage.next(rng) != nullptr) stage.add_next();
@@ -132,6 +141,108 @@ START_TEST(handover_order_follows_the_curve_on_a_square) {
 }
 END_TEST
 
+START_TEST(huge_pages_follow_the_points) {
+    // A grid of 141 MB (R = 3.4e-4 over the unit square, 17.7 million
+    // cells): on 2 MiB pages each scattered point would make 2 MiB resident,
+    // so a short run's points (1000: 4 MB on small pages) must not ask for
+    // them; points enough to write every small page of the grid once on
+    // average (34,000 and more) must, as a full run's reservation does.
+    pds::DartStage stage(pds::Box{0, 0, 1, 1}, 3.4e-4);
+    stage.reserve(1000);
+    ck_assert_uint_eq(stage.grid().cells().advised_bytes(), 0);
+    stage.reserve(30000);
+    ck_assert_uint_eq(stage.grid().cells().advised_bytes(), 0);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    stage.reserve(1000000);
+    ck_assert_uint_gt(stage.grid().cells().advised_bytes(), std::size_t{128} << 20);
+#endif
+    // The stage runs as before on either pages.
+    pds::Rng rng(3);
+    for (int k = 0; k < 1000; ++k) {
+        ck_assert(stage.next(rng) != nullptr);
+        stage.add_next();
+    }
+}
+END_TEST
+
+START_TEST(sparse_grid_decides_as_the_dense_one) {
+    // The filter and the exact predicate decide every dart exactly, so a
+    // grid keeping only its taken cells (a hash table) gives the points of
+    // the whole grid, dart for dart, to the stage's end: on the plane, and on
+    // a small torus where a third of the cells border the padding (copies
+    // read with their shift). A copy written to the wrong cell, or a probe
+    // that stops early, changes the points.
+    const double r = 0.004;
+    const pds::Box plane{1.0, -1.5, 2.0, -0.5};
+    const pds::Box small{1.0, -1.5, 1.2, -1.3};
+    pds::Torus t;
+    t.px = 0.2, t.py = 0.2, t.x0 = small.x0, t.y0 = small.y0;
+    const std::uint64_t seeds = test_light() ? 2 : 6;
+    for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+        const bool on_torus = seed % 2 == 0;
+        const pds::Box& box = on_torus ? small : plane;
+        const pds::Torus torus = on_torus ? t : pds::Torus{};
+        pds::DartStage dense(box, r, torus);
+        pds::SparseDartStage sparse(box, r, torus);
+        fill(dense, seed, 60000);
+        fill(sparse, seed, 60000);
+        ck_assert_uint_gt(sparse.count(), 1000);
+        ck_assert_uint_eq(sparse.count(), dense.count());
+        ck_assert_uint_eq(sparse.darts_thrown(), dense.darts_thrown());
+        ck_assert_uint_eq(sparse.exact_checks(), dense.exact_checks());
+        for (std::size_t k = 0; k < dense.count(); ++k)
+            ck_assert(sparse.point(k).x == dense.point(k).x && sparse.point(k).y == dense.point(k).y);
+        ck_assert_uint_ge(sparse.grid().cells().taken(), sparse.count());
+    }
+}
+END_TEST
+
+namespace {
+
+void thin_torus(pds::Sampler& s) {
+    s.set_domain(pds::Box{0, 0, 1024, 1});
+    s.set_periodic(true);
+}
+
+}  // namespace
+
+START_TEST(bounded_run_on_a_thin_torus_throws_darts) {
+    // A 1024 x 1 torus at R = 4e-4: a maximal pattern (billions of points)
+    // would not fit the index, so only bounded runs are possible, and the
+    // whole grid would be 100 GB of address space. Their darts go to the
+    // sparse grid, and the Jones loop does no work: alone, it would start
+    // from a sparse torus whose cells and copies span whole periods. A run
+    // split into calls gives the same points.
+    pds::Sampler one(4e-4, 9);
+    thin_torus(one);
+    ck_assert(one.in_dart_stage());
+    bool maximal = true;
+    ck_assert_uint_eq(one.add_points(1000, &maximal), 1000);
+    ck_assert(!maximal);
+    ck_assert(one.in_dart_stage());
+    ck_assert_uint_eq(one.jones().mesh().vertex_count(), pds::Delaunay::kGhosts);
+    pds::Sampler split(4e-4, 9);
+    thin_torus(split);
+    ck_assert_uint_eq(split.add_points(1, &maximal), 1);
+    for (int k = 0; k < 299; ++k) ck_assert(split.step());
+    ck_assert_uint_eq(split.add_points(700, &maximal), 700);
+    std::vector<double> a(2000), b(2000);
+    ck_assert_uint_eq(one.copy_points(0, 1000, a.data()), 1000);
+    ck_assert_uint_eq(split.copy_points(0, 1000, b.data()), 1000);
+    ck_assert(a == b);
+    // Inside the domain, and every pair at least R apart across the seam.
+    for (std::size_t i = 0; i < 1000; ++i) {
+        ck_assert(a[2 * i] >= 0 && a[2 * i] < 1024 && a[2 * i + 1] >= 0 && a[2 * i + 1] < 1);
+        for (std::size_t j = 0; j < i; ++j) {
+            double dx = std::fabs(a[2 * i] - a[2 * j]), dy = std::fabs(a[2 * i + 1] - a[2 * j + 1]);
+            dx = std::min(dx, 1024 - dx);
+            dy = std::min(dy, 1 - dy);
+            ck_assert_double_ge(dx * dx + dy * dy, 4e-4 * 4e-4 * (1 - 1e-9));
+        }
+    }
+}
+END_TEST
+
 Suite* dart_stage_suite() {
     Suite* s = suite_create("dart_stage");
     TCase* t = tcase_create("hand-over");
@@ -139,6 +250,9 @@ Suite* dart_stage_suite() {
     tcase_add_test(t, handover_order_on_a_wide_grid);
     tcase_add_test(t, dart_points_keep_their_distance);
     tcase_add_test(t, handover_order_follows_the_curve_on_a_square);
+    tcase_add_test(t, huge_pages_follow_the_points);
+    tcase_add_test(t, sparse_grid_decides_as_the_dense_one);
+    tcase_add_test(t, bounded_run_on_a_thin_torus_throws_darts);
     suite_add_tcase(s, t);
     return s;
 }

@@ -1,14 +1,14 @@
 // test_field_dart_stage.cpp - the dart stage of a varying radius
-// (field_dart_stage.hpp): every pair of its points keeps the field's rule,
-// checked exactly; the cells its bitmap marks lie inside their disk
-// (covered_cells.hpp); and its hand-over gives the Jones stage the same
+// (dart_stage.hpp over layered_grid.hpp): every pair of its points keeps the
+// field's rule, checked exactly; the cells its bitmap marks lie inside their
+// disk (covered_bitmap.hpp); and its hand-over gives the Jones stage the same
 // points and values, which then ends maximal.
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
-#include "darts/covered_cells.hpp"
-#include "darts/field_dart_stage.hpp"
+#include "darts/covered_bitmap.hpp"
+#include "darts/dart_stage.hpp"
 #include "jones/jones_stage.hpp"
 #include "core/predicates.hpp"
 #include "radius/radius_field.hpp"
@@ -75,16 +75,16 @@ START_TEST(field_dart_points_keep_the_rule) {
         std::size_t near_pairs = 0, exact = 0;
         for (std::uint64_t seed = 1; seed <= 3; ++seed) {
             pds::FieldDartStage stage(f.frame.box(), f.radii);
-            ck_assert_uint_ge(stage.layer_count(), fn == gradient ? 5 : 3);
+            ck_assert_uint_ge(stage.grid().layer_count(), fn == gradient ? 5 : 3);
             fill(stage, seed);
             ck_assert_uint_gt(stage.count(), 500);
             near_pairs += check_rule(stage, f.radii, f.frame.box());
             // The bitmap marks exactly what the points' own disks mark.
-            pds::CoveredCells again = stage.covered_cells();
+            pds::CoveredBitmap again = stage.grid().covered();
             again.clear();
             for (std::size_t k = 0; k < stage.count(); ++k)
                 again.cover_disk(stage.point(k), f.radii.radius_of(stage.value(k)));
-            ck_assert(again == stage.covered_cells());
+            ck_assert(again == stage.grid().covered());
             exact += stage.exact_checks();
         }
         ck_assert_uint_gt(near_pairs, 100);
@@ -93,7 +93,7 @@ START_TEST(field_dart_points_keep_the_rule) {
 }
 END_TEST
 
-START_TEST(covered_cells_lie_inside_their_disk) {
+START_TEST(covered_bitmap_cells_lie_inside_their_disk) {
     // Each marked cell's corners strictly inside the disk (a dart there is
     // covered); and the marks are nearly all the cells wholly inside, found
     // by brute force (a mark test on the nearer edge of a row, or no margin,
@@ -103,7 +103,7 @@ START_TEST(covered_cells_lie_inside_their_disk) {
     pds::Rng rng(7);
     std::size_t marked_total = 0, inside_total = 0;
     for (int disk = 0; disk < 300; ++disk) {
-        pds::CoveredCells cells(x0, y0, side, cols, rows);
+        pds::CoveredBitmap cells(x0, y0, side, cols, rows);
         const pds::Point c{x0 + rng.next_double() * static_cast<double>(cols) * side,
                            y0 + rng.next_double() * static_cast<double>(rows) * side};
         const double r = side * (0.5 + 8.0 * rng.next_double());
@@ -168,7 +168,7 @@ Suite* field_dart_stage_suite() {
     TCase* t = tcase_create("layers");
     tcase_set_timeout(t, 120);
     tcase_add_test(t, field_dart_points_keep_the_rule);
-    tcase_add_test(t, covered_cells_lie_inside_their_disk);
+    tcase_add_test(t, covered_bitmap_cells_lie_inside_their_disk);
     tcase_add_test(t, field_hand_over_keeps_points_and_values);
     suite_add_tcase(s, t);
     return s;

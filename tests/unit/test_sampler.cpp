@@ -252,7 +252,8 @@ END_TEST
 START_TEST(limits_judged_at_first_use) {
     bool maximal = true;
     // A maximal pattern would not fit 32-bit indices: only bounded runs, and
-    // without the dart stage (its grid would be huge).
+    // their darts on a grid that keeps only its taken cells (the whole grid
+    // would be huge).
     pds::Sampler huge(1e-5, 1);
     try {
         huge.add_points(0, &maximal);
@@ -263,7 +264,7 @@ START_TEST(limits_judged_at_first_use) {
     ck_assert_uint_eq(huge.count(), 0);
     ck_assert_uint_eq(huge.add_points(100, &maximal), 100);
     ck_assert(!maximal);
-    ck_assert(!huge.in_dart_stage());
+    ck_assert(huge.in_dart_stage());
     ck_assert(huge.verify().valid);
     // The same radius for a domain it suits, given in either order.
     pds::Sampler tiny(1e-5, 2);

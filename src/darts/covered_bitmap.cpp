@@ -1,25 +1,25 @@
-// covered_cells.cpp - see covered_cells.hpp.
-#include "darts/covered_cells.hpp"
+// covered_bitmap.cpp - see covered_bitmap.hpp.
+#include "darts/covered_bitmap.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "darts/grid_cells.hpp"
+#include "darts/grid_arithmetic.hpp"
 
 namespace pds {
 
-CoveredCells::CoveredCells(double x0, double y0, double side, std::size_t cols, std::size_t rows)
+CoveredBitmap::CoveredBitmap(double x0, double y0, double side, std::size_t cols, std::size_t rows)
     : x0_(x0), y0_(y0), inv_side_(1.0 / side), cols_(cols), rows_(rows), words_((cols + 63) / 64) {
     bits_.assign(words_ * rows_, 0);
 }
 
-std::size_t CoveredCells::cell_of(const Point& p) const {
+std::size_t CoveredBitmap::cell_of(const Point& p) const {
     const std::size_t col = clamped_cell((p.x - x0_) * inv_side_, cols_);
     const std::size_t row = clamped_cell((p.y - y0_) * inv_side_, rows_);
     return row * words_ * 64 + col;
 }
 
-void CoveredCells::cover_disk(const Point& c, double r) {
+void CoveredBitmap::cover_disk(const Point& c, double r) {
     // In cell units, where cell (i, j) is [i, i + 1] x [j, j + 1]: the same
     // arithmetic that places a dart in its cell (cell_of), so a margin far
     // above its rounding keeps every mark certain.

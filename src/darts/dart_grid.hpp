@@ -1,0 +1,265 @@
+// dart_grid.hpp - the background grid of dart throwing with one radius R, on
+// the plane or the torus: is this dart at least R from every point? record a
+// point.
+//
+// Cells of side s = 0.99 R / sqrt 2, so a cell's diagonal is under R and no
+// two points can share one; a point closer than R to a dart lies at most two
+// cells away, and only in the 3 or 4 columns and rows that the dart's own
+// disk reaches, so one dart reads at most a 4 x 4 block.
+// A cell is 8 bytes: its point's index (plus one: 0 is an empty cell) and the
+// point's offset in the cell rounded to 16 bits a side. Distances from the
+// rounded offsets decide all but the pairs within 2^-12 of R (rounding moves
+// a point by under 2^-17 of a cell, under 10^-5 R); those read the exact
+// point and go to the exact predicate. So every decision is exact, whatever
+// store holds the words (grid_storage.hpp): a dense and a sparse grid decide
+// every dart alike. Half the bytes of whole coordinates: half the lines a
+// dart misses, half the pages the kernel zeroes.
+//
+// On the torus the grid wraps: its cells divide the periods exactly and the
+// padding holds the copies of the points along the opposite edges, so a
+// dart's block sees every copy near it.
+//
+// Darts are drawn a batch at a time and their blocks prefetched before any
+// is tested (throw_darts), so the cache misses of a batch overlap.
+#ifndef PDS_DART_GRID_HPP
+#define PDS_DART_GRID_HPP
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <new>
+#include <vector>
+
+#include "core/point.hpp"
+#include "core/predicates.hpp"
+#include "core/rng.hpp"
+#include "core/torus.hpp"
+#include "darts/curve_order.hpp"
+#include "darts/dart_constants.hpp"
+#include "darts/grid_arithmetic.hpp"
+#include "darts/grid_storage.hpp"
+
+namespace pds {
+
+class PointRadii;
+
+template <class Cells>
+class DartGrid {
+public:
+    static constexpr bool kVarying = false;  // one radius: no per-point values
+
+    struct Dart {
+        Point p;
+        std::size_t cell;
+        std::int64_t col, row;  // its cell's column and row, without the padding
+        // The cells the dart's disk reaches, relative to its own: columns
+        // x_lo..x_hi and rows y_lo..y_hi, each within -kPad..kPad.
+        int x_lo, x_hi, y_lo, y_hi;
+    };
+
+    // domain and radius in the internal frame; throws std::bad_alloc.
+    DartGrid(const Box& domain, double radius, const Torus& torus = Torus{});
+
+    // Room for `points` points and their copies; strong guarantee.
+    void reserve(std::size_t points) { cells_.reserve(points, points * writes_per_point()); }
+    bool has_room_for(std::size_t points) const { return cells_.has_room_for(points, points * writes_per_point()); }
+
+    // n darts uniform over the grid's cells (on the torus, on its grid inside
+    // the fundamental domain), aimed, their blocks prefetched.
+    void throw_darts(Dart* batch, std::size_t n, Rng& rng) const;
+    // Whether d is at least R from every point; points[k] is point k.
+    bool is_free(const Dart& d, const std::vector<Point>& points, const std::vector<double>&) const;
+    // Records point `index` at d (and its copies on the torus).
+    void record(const Dart& d, std::uint32_t index);
+    // Frees the cells: the stage is over.
+    void release() { cells_.release(); }
+
+    // The sampling rule's scale: the grid's cells.
+    std::size_t cell_count() const { return cols_ * rows_; }
+    // The hand-over's curve over the grid's cells.
+    CurveOrder curve(const Box& domain) const { return CurveOrder(domain, side_x_, side_y_, cols_, rows_); }
+    double radius() const { return r_; }
+    const Torus& torus() const { return torus_; }
+    const PointRadii* radii() const { return nullptr; }
+    const Cells& cells() const { return cells_; }
+    // Distances the rounded offsets left undecided, sent to the exact
+    // predicate (for tests: the path must be taken).
+    std::size_t exact_checks() const { return exact_checks_; }
+
+private:
+    using Word = std::uint64_t;  // bits 0-31: index + 1; 32-47, 48-63: the offset along x, y
+
+    // Cells a point and its copies may take: on the torus a copy one period
+    // away along x when the point lies within kPad columns of a side (both
+    // ways only on a grid under 2 kPad columns), the same along y, and the
+    // diagonal ones.
+    std::size_t writes_per_point() const {
+        if (!torus_.on()) return 1;
+        const std::size_t x = cols_ < 2 * darts::kPad ? 3 : 2, y = rows_ < 2 * darts::kPad ? 3 : 2;
+        return x * y;
+    }
+    // The lower left corner of the cell in column col, row row (the padding's
+    // are negative or past the last): one formula, for writing and reading.
+    double cell_x0(std::int64_t col) const { return box_.x0 + static_cast<double>(col) * side_x_; }
+    double cell_y0(std::int64_t row) const { return box_.y0 + static_cast<double>(row) * side_y_; }
+    // Point `index` (or its copy) p into the cell in column col, row row.
+    void write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index);
+    // The exact point of a nonempty cell (its copy, in the padding of a torus).
+    Point exact(std::size_t cell, Word word, const std::vector<Point>& points) const;
+    void aim(Dart& d) const;  // fills d's cell, column, row and block from d.p
+
+    Box box_;
+    double r_;
+    double r2_low_, r2_high_;  // R^2 bracketing the rounding of a squared distance
+    double side_x_, side_y_;   // s, or on the torus the periods divided evenly
+    double inv_side_x_, inv_side_y_;
+    double step_x_, step_y_;    // an offset step: side / kOffsetSteps
+    double reach_x_, reach_y_;  // R in cells, with a little slack
+    Torus torus_;
+    std::size_t cols_ = 0, rows_ = 0;  // real cells; the padded row has cols_ + 2 kPad
+    std::size_t stride_ = 0;
+    Cells cells_;
+    mutable std::size_t exact_checks_ = 0;
+};
+
+template <class Cells>
+DartGrid<Cells>::DartGrid(const Box& domain, double radius, const Torus& torus)
+    : box_(domain),
+      r_(radius),
+      r2_low_(radius * radius * (1.0 - darts::kFilterSlack)),
+      r2_high_(radius * radius * (1.0 + darts::kFilterSlack)),
+      torus_(torus) {
+    using namespace darts;
+    const double side = kCellShrink * radius / std::sqrt(2.0);
+    cols_ = cells_along(domain.width(), side);
+    rows_ = cells_along(domain.height(), side);
+    side_x_ = side_y_ = side;
+    if (torus_.on()) {
+        // Cells divide the periods: then a copy one period away sits exactly
+        // cols_ (rows_) cells away. With R at most half a period the cells
+        // stay wider than R/2 (at least 0.518 R), so the 5 x 5 block still
+        // holds every point within R.
+        cols_ = cells_along(torus_.px, side);
+        rows_ = cells_along(torus_.py, side);
+        side_x_ = torus_.px / static_cast<double>(cols_);
+        side_y_ = torus_.py / static_cast<double>(rows_);
+    }
+    inv_side_x_ = 1.0 / side_x_;
+    inv_side_y_ = 1.0 / side_y_;
+    step_x_ = side_x_ / kOffsetSteps;
+    step_y_ = side_y_ / kOffsetSteps;
+    reach_x_ = radius * inv_side_x_ + kReachSlack;
+    reach_y_ = radius * inv_side_y_ + kReachSlack;
+    stride_ = cols_ + 2 * kPad;
+    const std::size_t padded_rows = rows_ + 2 * kPad;
+    if (padded_rows > static_cast<std::size_t>(-1) / stride_) throw std::bad_alloc();
+    cells_ = Cells(stride_ * padded_rows);
+}
+
+template <class Cells>
+void DartGrid<Cells>::write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index) {
+    using darts::kPad;
+    const std::size_t cell = static_cast<std::size_t>(row + kPad) * stride_ + static_cast<std::size_t>(col + kPad);
+    const std::uint64_t sx = offset_steps(p.x - cell_x0(col), step_x_);
+    const std::uint64_t sy = offset_steps(p.y - cell_y0(row), step_y_);
+    cells_.set(cell, (sy << 48) | (sx << 32) | (std::uint64_t{index} + 1));
+}
+
+template <class Cells>
+Point DartGrid<Cells>::exact(std::size_t cell, Word word, const std::vector<Point>& points) const {
+    using darts::kPad;
+    const Point& p = points[static_cast<std::uint32_t>(word) - 1];
+    if (!torus_.on()) return p;
+    // A copy sits in the padding, shifted toward the side it pads.
+    const std::size_t col = cell % stride_, row = cell / stride_;
+    const int i = col < kPad ? -1 : col >= cols_ + kPad ? 1 : 0;
+    const int j = row < kPad ? -1 : row >= rows_ + kPad ? 1 : 0;
+    return torus_.shifted(p, i, j);
+}
+
+template <class Cells>
+void DartGrid<Cells>::record(const Dart& d, std::uint32_t index) {
+    using darts::kPad;
+    write(d.col, d.row, d.p, index);
+    if (!torus_.on()) return;
+    // The copies into the padding.
+    const auto cols = static_cast<std::int64_t>(cols_), rows = static_cast<std::int64_t>(rows_);
+    for (int i = -1; i <= 1; ++i) {
+        for (int j = -1; j <= 1; ++j) {
+            if (i == 0 && j == 0) continue;
+            const std::int64_t x = d.col + i * cols, y = d.row + j * rows;
+            if (x < -kPad || x >= cols + kPad || y < -kPad || y >= rows + kPad) continue;
+            write(x, y, torus_.shifted(d.p, i, j), index);
+        }
+    }
+}
+
+template <class Cells>
+void DartGrid<Cells>::throw_darts(Dart* batch, std::size_t n, Rng& rng) const {
+    const double w = static_cast<double>(cols_) * side_x_, h = static_cast<double>(rows_) * side_y_;
+    for (std::size_t k = 0; k < n; ++k) {
+        Dart& d = batch[k];
+        if (torus_.on()) {
+            // On the torus grid, inside the fundamental domain (torus.hpp).
+            const double u = rng.next_double(), v = rng.next_double();
+            d.p = torus_.wrap(Point{Torus::snap(torus_.x0 + u * torus_.px), Torus::snap(torus_.y0 + v * torus_.py)});
+        } else {
+            d.p.x = box_.x0 + rng.next_double() * w;
+            d.p.y = box_.y0 + rng.next_double() * h;
+        }
+        aim(d);
+        // The block: 3 or 4 rows of at most 32 bytes, a line or two each.
+        std::size_t row = d.cell + static_cast<std::size_t>(d.y_lo * static_cast<std::ptrdiff_t>(stride_));
+        for (int i = d.y_lo; i <= d.y_hi; ++i, row += stride_) {
+            cells_.prefetch(row + static_cast<std::size_t>(d.x_lo));
+            cells_.prefetch(row + static_cast<std::size_t>(d.x_hi));
+        }
+    }
+}
+
+template <class Cells>
+void DartGrid<Cells>::aim(Dart& d) const {
+    using darts::kPad;
+    // Its cell (clamped: rounding may put a point on the far edge of the
+    // last cell), and the columns and rows within R.
+    const double fx = (d.p.x - box_.x0) * inv_side_x_, fy = (d.p.y - box_.y0) * inv_side_y_;
+    const std::size_t cx = clamped_cell(fx, cols_), cy = clamped_cell(fy, rows_);
+    d.col = static_cast<std::int64_t>(cx);
+    d.row = static_cast<std::int64_t>(cy);
+    d.cell = (cy + kPad) * stride_ + cx + kPad;
+    d.x_lo = block_offset(fx - reach_x_, d.col, kPad);
+    d.x_hi = block_offset(fx + reach_x_, d.col, kPad);
+    d.y_lo = block_offset(fy - reach_y_, d.row, kPad);
+    d.y_hi = block_offset(fy + reach_y_, d.row, kPad);
+}
+
+template <class Cells>
+bool DartGrid<Cells>::is_free(const Dart& d, const std::vector<Point>& points, const std::vector<double>&) const {
+    // An occupied cell is covered whole (its diagonal is under R).
+    if (cells_.get(d.cell) != 0) return false;
+    const Point& p = d.p;
+    const auto stride = static_cast<std::ptrdiff_t>(stride_);
+    // Whether the point in the cell i rows and j columns from the dart's
+    // (if there is one) lies within R.
+    const auto covers = [&](int i, int j) {
+        const std::size_t cell = d.cell + static_cast<std::size_t>(i * stride + j);
+        const Word word = cells_.get(cell);
+        if (word == 0) return false;
+        const double qx = cell_x0(d.col + j) + (static_cast<double>((word >> 32) & 0xFFFF) + 0.5) * step_x_;
+        const double qy = cell_y0(d.row + i) + (static_cast<double>(word >> 48) + 0.5) * step_y_;
+        const double dx = qx - p.x, dy = qy - p.y;
+        const double d2 = dx * dx + dy * dy;
+        if (d2 < r2_low_) return true;
+        if (!(d2 < r2_high_)) return false;
+        ++exact_checks_;
+        return compare_distance(p, exact(cell, word, points), r_) < 0;
+    };
+    // R spans more than one cell, so the block holds the eight around the
+    // dart's own cell (grid_arithmetic.hpp reads those first).
+    return !block_covers(d.x_lo, d.x_hi, d.y_lo, d.y_hi, covers);
+}
+
+}  // namespace pds
+
+#endif

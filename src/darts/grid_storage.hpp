@@ -1,0 +1,135 @@
+// grid_storage.hpp - where a dart grid (dart_grid.hpp) keeps its cells' 8-byte
+// words (0: an empty cell): two stores behind the same calls (get, set,
+// prefetch, reserve), chosen at compile time, so a dart's test is the same
+// code over either.
+//
+// DenseCells: one zeroed array over the whole padded grid. A dart's block is
+// a few lines of it, prefetched a batch ahead. Zeroed memory is address
+// space until points land; huge pages are asked for only once the points
+// reserved would make most of its small pages resident anyway
+// (huge_pages_worth): on 2 MiB pages each scattered point of a short run
+// would make a whole huge page resident, so memory would follow the grid
+// (the pattern that could be made) instead of the points made, while a full
+// run still gets the large pages its random reads need.
+//
+// SparseCells: the taken cells only, in an open-addressing table kept at
+// most half full, reserved with the points (a write never allocates). For
+// domains whose whole grid would not fit the address space: memory follows
+// the points, at a probe or two per cell read.
+#ifndef PDS_GRID_STORAGE_HPP
+#define PDS_GRID_STORAGE_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <vector>
+
+#include "core/huge_pages.hpp"
+
+namespace pds {
+
+class DenseCells {
+public:
+    DenseCells() = default;
+    // `cells` zeroed words; throws std::bad_alloc.
+    explicit DenseCells(std::size_t cells) : bytes_(cells * sizeof(std::uint64_t)) {
+        if (cells > static_cast<std::size_t>(-1) / sizeof(std::uint64_t)) throw std::bad_alloc();
+        words_.reset(static_cast<std::uint64_t*>(std::calloc(cells, sizeof(std::uint64_t))));
+        if (!words_) throw std::bad_alloc();
+    }
+
+    std::uint64_t get(std::size_t cell) const { return words_[cell]; }
+    void set(std::size_t cell, std::uint64_t word) { words_[cell] = word; }
+    void prefetch(std::size_t cell) const { __builtin_prefetch(words_.get() + cell); }
+
+    // Room for `points` points writing `writes` cells in all (never fails:
+    // the array is whole); asks for huge pages once the points are worth
+    // them (copies on a torus are few: they are not counted).
+    void reserve(std::size_t points, std::size_t) {
+        if (advised_ == 0 && words_ && huge_pages_worth(bytes_, points))
+            advised_ = advise_huge_pages(words_.get(), bytes_);
+    }
+    bool has_room_for(std::size_t, std::size_t) const { return true; }
+    // Bytes under the huge-page hint (0: none asked; tests).
+    std::size_t advised_bytes() const { return advised_; }
+    void release() { words_.reset(); }
+
+private:
+    struct Free {
+        void operator()(std::uint64_t* p) const { std::free(p); }
+    };
+    std::unique_ptr<std::uint64_t[], Free> words_;
+    std::size_t bytes_ = 0;
+    std::size_t advised_ = 0;
+};
+
+class SparseCells {
+public:
+    SparseCells() { reserve(0, 1); }
+    explicit SparseCells(std::size_t) : SparseCells() {}
+
+    std::uint64_t get(std::size_t cell) const {
+        for (std::size_t i = slot_of(cell);; i = (i + 1) & mask_) {
+            const Slot& s = slots_[i];
+            if (s.word == 0 || s.cell == cell) return s.word;
+        }
+    }
+    // word != 0; requires room (reserve).
+    void set(std::size_t cell, std::uint64_t word) {
+        std::size_t i = slot_of(cell);
+        while (slots_[i].word != 0 && slots_[i].cell != cell) i = (i + 1) & mask_;
+        if (slots_[i].word == 0) ++used_;
+        slots_[i] = Slot{cell, word};
+    }
+    void prefetch(std::size_t cell) const { __builtin_prefetch(&slots_[slot_of(cell)]); }
+
+    // Room for `writes` taken cells in all (the points' and their copies');
+    // strong guarantee (std::bad_alloc).
+    void reserve(std::size_t, std::size_t writes) {
+        if (has_room_for(0, writes)) return;
+        std::size_t size = 16;
+        while (size / 2 < writes) size *= 2;
+        std::vector<Slot> fresh(size, Slot{0, 0});
+        const std::size_t mask = size - 1;
+        for (const Slot& s : slots_) {
+            if (s.word == 0) continue;
+            std::size_t i = mix(s.cell) & mask;
+            while (fresh[i].word != 0) i = (i + 1) & mask;
+            fresh[i] = s;
+        }
+        slots_.swap(fresh);
+        mask_ = mask;
+    }
+    bool has_room_for(std::size_t, std::size_t writes) const { return slots_.size() / 2 >= writes && !slots_.empty(); }
+    std::size_t advised_bytes() const { return 0; }
+    // Taken cells (tests).
+    std::size_t taken() const { return used_; }
+    void release() {
+        slots_ = std::vector<Slot>();
+        mask_ = 0;
+        used_ = 0;
+    }
+
+private:
+    struct Slot {
+        std::size_t cell;
+        std::uint64_t word;  // 0: a free slot
+    };
+    // splitmix64's finalizer: spreads neighbouring cells over the table.
+    static std::size_t mix(std::uint64_t x) {
+        x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+        x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+        return static_cast<std::size_t>(x ^ (x >> 31));
+    }
+    std::size_t slot_of(std::size_t cell) const { return mix(cell) & mask_; }
+
+    std::vector<Slot> slots_;
+    std::size_t mask_ = 0;
+    std::size_t used_ = 0;
+};
+
+}  // namespace pds
+
+#endif

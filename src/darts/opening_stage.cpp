@@ -1,0 +1,55 @@
+// opening_stage.cpp - which opening stage a run gets (see opening_stage.hpp).
+#include "darts/opening_stage.hpp"
+
+#include "darts/dart_stage.hpp"
+#include "domain/frame.hpp"
+#include "radius/point_radii.hpp"
+#include "radius/radius_field.hpp"
+
+namespace pds {
+
+namespace {
+
+enum class Opening { none, dense, sparse, field };
+
+Opening opening_for(const Frame& frame, double count_bound, const RadiusField* field) {
+    const bool fits = count_bound <= static_cast<double>(Frame::max_points());
+    if (field) {
+        // A grid per layer of radii (layered_grid.hpp), in the plane, while
+        // the layers stay few and a maximal pattern fits the index. On the
+        // torus the loop runs alone: the copies of a point would go into
+        // every layer's padding, and the torus's mesh widens its margin as
+        // the points come (jones_stage.hpp).
+        const bool few_layers = field->rmax() <= LayeredGrid::kMaxRatio * field->rmin();
+        return fits && few_layers && !frame.torus().on() ? Opening::field : Opening::none;
+    }
+    // One radius: a dense grid while a maximal pattern fits the index (its
+    // address space then stays within a few words a point). Beyond, only
+    // bounded runs are possible (the sampler refuses the others), and their
+    // darts go to a sparse grid whose memory follows the points: the Jones
+    // loop alone would start from a sparse mesh whose cells span the domain
+    // (on a torus, with copies across whole periods).
+    return fits ? Opening::dense : Opening::sparse;
+}
+
+}  // namespace
+
+bool opening_stage_suits(const Frame& frame, double count_bound, const RadiusField* field) {
+    return opening_for(frame, count_bound, field) != Opening::none;
+}
+
+std::unique_ptr<OpeningStage> make_opening_stage(const Frame& frame, double count_bound, const RadiusField* field) {
+    switch (opening_for(frame, count_bound, field)) {
+    case Opening::dense:
+        return std::make_unique<DartStage>(frame.box(), frame.r(), frame.torus());
+    case Opening::sparse:
+        return std::make_unique<SparseDartStage>(frame.box(), frame.r(), frame.torus());
+    case Opening::field:
+        return std::make_unique<FieldDartStage>(frame.box(), PointRadii(*field, frame));
+    case Opening::none:
+        break;
+    }
+    return nullptr;
+}
+
+}  // namespace pds
