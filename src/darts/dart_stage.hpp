@@ -40,6 +40,7 @@
 #include "darts/dart_constants.hpp"
 #include "darts/dart_grid.hpp"
 #include "darts/dart_queue.hpp"
+#include "domain/rectangle.hpp"
 #include "darts/jones_of_points.hpp"
 #include "darts/layered_grid.hpp"
 #include "darts/opening_stage.hpp"
@@ -52,12 +53,14 @@ class DartStageOf final : public OpeningStage {
 public:
     using Dart = typename Grid::Dart;
 
-    // The grid's arguments (domain first, in the internal frame); allocates
-    // the grid (zeroed: address space until points land), throws
-    // std::bad_alloc and changes nothing else.
+    // The domain (internal frame), then the grid's other arguments; the grid
+    // covers the domain's bounds. Allocates the grid (zeroed: address space
+    // until points land), throws std::bad_alloc and changes nothing else.
     template <class... Args>
-    explicit DartStageOf(const Box& domain, Args&&... args)
-        : box_(domain), grid_(domain, std::forward<Args>(args)...), curve_(grid_.curve(domain)) {
+    explicit DartStageOf(const Rectangle& domain, Args&&... args)
+        : domain_(domain),
+          grid_(domain.bounds(), std::forward<Args>(args)...),
+          curve_(grid_.curve(domain.bounds())) {
         // A window long enough that its acceptance rate is a fair estimate,
         // short enough that the stage ends soon after the rate falls.
         queue_.set_rule(std::max<std::size_t>(darts::kMinWindow, grid_.cell_count() / 16), darts::kMinAcceptance);
@@ -90,7 +93,7 @@ public:
     // the stage is over (the acceptance rate over a window of darts fell
     // below kMinAcceptance), and from then on.
     const Point* next(Rng& rng) override {
-        const Dart* d = queue_.next([&](const Dart& x) { return box_.contains(x.p); },
+        const Dart* d = queue_.next([&](const Dart& x) { return domain_.contains(x.p); },
                                     [&](Dart* batch, std::size_t n) { grid_.throw_darts(batch, n, rng); },
                                     [&](const Dart& x) { return grid_.is_free(x, points_, values_); });
         return d ? &d->p : nullptr;
@@ -130,11 +133,11 @@ public:
 
 private:
     std::unique_ptr<JonesStage> jones_of_points() const {
-        return pds::jones_of_points(box_, grid_.radius(), grid_.torus(), grid_.radii(), points_,
+        return pds::jones_of_points(domain_, grid_.radius(), grid_.torus(), grid_.radii(), points_,
                                     Grid::kVarying ? &values_ : nullptr, curve_);
     }
 
-    Box box_;
+    Rectangle domain_;
     Grid grid_;
     std::vector<Point> points_;
     std::vector<double> values_;  // a field: point k's value

@@ -5,10 +5,10 @@
 
 namespace pds {
 
-std::unique_ptr<JonesStage> jones_of_points(const Box& box, double r, const Torus& torus, const PointRadii* radii,
+std::unique_ptr<JonesStage> jones_of_points(const Rectangle& domain, double r, const Torus& torus, const PointRadii* radii,
                                             const std::vector<Point>& points, const std::vector<double>* values,
                                             const CurveOrder& curve) {
-    std::unique_ptr<JonesStage> stage = make_jones_stage(box, r, torus, radii);
+    std::unique_ptr<JonesStage> stage = make_jones_stage(domain, r, torus, radii);
     stage->reserve(points.size());
     const std::vector<std::uint32_t> order = curve.fresh_order(points);
     stage->adopt(points, order.data(), values);

@@ -10,16 +10,17 @@
 
 #include "core/point.hpp"
 #include "core/torus.hpp"
+#include "domain/rectangle.hpp"
 #include "darts/curve_order.hpp"
 #include "jones/jones_stage.hpp"
 #include "radius/point_radii.hpp"
 
 namespace pds {
 
-// box and r in the internal frame (r: the largest radius with a field);
+// The domain and r in the internal frame (r: the largest radius with a field);
 // radii and values for a varying radius (values[k]: point k's), else null;
 // curve: the stage's hand-over order. Allocates; may throw std::bad_alloc.
-std::unique_ptr<JonesStage> jones_of_points(const Box& box, double r, const Torus& torus, const PointRadii* radii,
+std::unique_ptr<JonesStage> jones_of_points(const Rectangle& domain, double r, const Torus& torus, const PointRadii* radii,
                                             const std::vector<Point>& points, const std::vector<double>* values,
                                             const CurveOrder& curve);
 
