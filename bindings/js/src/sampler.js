@@ -354,8 +354,13 @@ export class Sampler {
   }
 
   get disposed() { return this.#handle === 0; }
+}
 
-  [Symbol.dispose]() { this.dispose(); }
+// `using s = await Sampler.create(...)` where the runtime knows Symbol.dispose.
+if (typeof Symbol.dispose === 'symbol') {
+  Object.defineProperty(Sampler.prototype, Symbol.dispose, {
+    value() { this.dispose(); }, writable: true, configurable: true,
+  });
 }
 
 /** A maximal pattern in one call: the points, x and y interleaved. */
