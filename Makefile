@@ -483,7 +483,7 @@ $(WASM_B)/obj/glue.o: bindings/js/wasm/glue.c include/poissondisk.h
 	@mkdir -p $(dir $@)
 	$(WASM_CC) $(WASM_TARGET) $(WASM_OPT) $(PDS_CFLAGS) -c $< -o $@
 $(WASM_OUT): $(WASM_OBJ)
-	$(WASM_CXX) $(WASM_TARGET) -mexec-model=reactor -fuse-ld=lld -o $@ $(WASM_OBJ) \
+	$(WASM_CXX) $(WASM_TARGET) $(WASM_OPT) -mexec-model=reactor -fuse-ld=lld -o $@ $(WASM_OBJ) \
 	    -Wl,--strip-debug,--max-memory=4294967296 $(addprefix -Wl$(comma)--export=,$(WASM_EXPORTS))
 -include $(WASM_OBJ:.o=.d)
 
