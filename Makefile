@@ -461,7 +461,8 @@ uninstall:
 # Debian's clang, wasm-ld, wasi-libc and wasm32 libc++ (tests/install-deps.sh). Their
 # libc++abi has no exception support, so bindings/js/wasm/cxx_eh.cpp supplies the
 # runtime for clang's -fwasm-exceptions code (the engine unwinds). The mandatory flags
-# are the native build's (-fPIC aside): the points are the same, byte for byte.
+# are the native build's (-fPIC aside): the points are the same, byte for byte. The
+# 1 MiB stack comes first in memory, so an overflow traps instead of overwriting data.
 WASM_CXX    ?= clang++
 WASM_CC     ?= clang
 WASM_OPT    ?= -O3
@@ -484,7 +485,7 @@ $(WASM_B)/obj/glue.o: bindings/js/wasm/glue.c include/poissondisk.h
 	$(WASM_CC) $(WASM_TARGET) $(WASM_OPT) $(PDS_CFLAGS) -c $< -o $@
 $(WASM_OUT): $(WASM_OBJ)
 	$(WASM_CXX) $(WASM_TARGET) $(WASM_OPT) -mexec-model=reactor -fuse-ld=lld -o $@ $(WASM_OBJ) \
-	    -Wl,--strip-debug,--max-memory=4294967296 $(addprefix -Wl$(comma)--export=,$(WASM_EXPORTS))
+	    -Wl,--strip-debug,--max-memory=4294967296,--stack-first,-z,stack-size=1048576 $(addprefix -Wl$(comma)--export=,$(WASM_EXPORTS))
 -include $(WASM_OBJ:.o=.d)
 
 # check-js: the package's Node tests (npm test), then the demo page in headless

@@ -227,7 +227,8 @@ export class Sampler {
     try {
       return fn(...args);
     } catch (e) {
-      if (e instanceof WebAssembly.RuntimeError || e instanceof (WebAssembly.Exception ?? Error)) {
+      if (e instanceof WebAssembly.RuntimeError
+          || (WebAssembly.Exception !== undefined && e instanceof WebAssembly.Exception)) {
         this.#api.broken = e;
         throw this.#trapped(e);
       }
