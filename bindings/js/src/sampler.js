@@ -20,12 +20,14 @@ function cString(api, ptr) {
 
 function strerrorOf(api, code) { return cString(api, api.exports.pds_strerror(code)); }
 
+// A random seed (Node 18 has Web Crypto only as node:crypto's webcrypto).
+async function randomSeed() {
+  const crypto = globalThis.crypto ?? (await import('node:crypto')).webcrypto;
+  const words = crypto.getRandomValues(new Uint32Array(2));
+  return (BigInt(words[0]) << 32n) | BigInt(words[1]);
+}
+
 function toSeed(seed) {
-  if (seed === undefined || seed === null) {
-    const words = new Uint32Array(2);
-    globalThis.crypto.getRandomValues(words);
-    return (BigInt(words[0]) << 32n) | BigInt(words[1]);
-  }
   const value = typeof seed === 'bigint' ? seed : Number.isSafeInteger(seed) ? BigInt(seed) : null;
   if (value === null || value < 0n || value >= 1n << 64n) {
     throw new TypeError(`seed must be an integer in [0, 2**64) (a number or a BigInt), got ${seed}`);
@@ -102,7 +104,8 @@ export class Sampler {
   static async create(radius, options = {}) {
     const api = await init();
     const s = new Sampler(Sampler.#key);
-    s.#setup(api, radius, options);
+    const seed = options.seed ?? await randomSeed();
+    s.#setup(api, radius, { ...options, seed });
     return s;
   }
 

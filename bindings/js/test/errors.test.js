@@ -19,6 +19,17 @@ test('invalid arguments: InvalidArgumentError with the library message', async (
   await assert.rejects(Sampler.create(0.1, { seed: 2 ** 60 }), TypeError);  // not exact: use a BigInt
 });
 
+test('no seed: a random one, read back from .seed, repeats the pattern', async () => {
+  const a = await Sampler.create(0.05);
+  const b = await Sampler.create(0.05);
+  assert.equal(typeof a.seed, 'bigint');
+  assert.notEqual(a.seed, b.seed);
+  a.run();
+  assert.deepEqual(await poissonDisk(0.05, { seed: a.seed }), a.points());
+  a.dispose();
+  b.dispose();
+});
+
 test('a radius too small for the domain: RangeError at the first point, nothing added', async () => {
   const s = await Sampler.create(1e-9, { seed: 1 });
   assert.throws(() => s.run(), (e) => e instanceof RangeError && e.code === -4 && /pds_run/.test(e.message));
