@@ -487,10 +487,15 @@ $(WASM_OUT): $(WASM_OBJ)
 	$(WASM_CXX) $(WASM_TARGET) $(WASM_OPT) -mexec-model=reactor -fuse-ld=lld -o $@ $(WASM_OBJ) \
 	    -Wl,--strip-debug,--max-memory=4294967296,--stack-first,-z,stack-size=1048576 $(addprefix -Wl$(comma)--export=,$(WASM_EXPORTS))
 -include $(WASM_OBJ:.o=.d)
+# The exception runtime's own cases (bindings/js/test/eh.test.js runs them).
+WASM_EH_TEST := $(WASM_B)/eh_cases.wasm
+$(WASM_EH_TEST): bindings/js/wasm/test/eh_cases.cpp $(WASM_B)/obj/cxx_eh.o
+	$(WASM_CXX) $(WASM_TARGET) $(WASM_OPT) -std=c++17 $(PDS_WARN) -mexec-model=reactor -fuse-ld=lld \
+	    -o $@ $< $(WASM_B)/obj/cxx_eh.o -Wl,--max-memory=4294967296
 
 # check-js: the package's Node tests (npm test), then the demo page in headless
 # Debian chromium driven by puppeteer-core (npm install fetches it, a dev dependency).
-check-js: $(WASM_OUT) $(CLI)
+check-js: $(WASM_OUT) $(WASM_EH_TEST) $(CLI)
 	cd bindings/js && npm install --no-audit --no-fund --loglevel=error
 	cd bindings/js && npm test
 	cd bindings/js && npm run test:browser
