@@ -181,7 +181,7 @@ deps:
 check: deps all
 	@$(MAKE) --no-print-directory check-header check-layers check-symbols check-abi check-unit \
 	    check-api check-threads check-examples check-cli check-bench check-python check-pkgconfig \
-	    check-man check-valgrind check-fuzz check-alloc
+	    check-man check-js check-valgrind check-fuzz check-alloc
 	@echo "make check: all checks passed"
 
 # check-quick: what a change is checked with before make check. The Check suites run
@@ -474,6 +474,49 @@ uninstall:
 	for f in man/*.1; do rm -f $(DESTDIR)$(MANDIR)/man1/$${f#man/}; done
 	for f in man/*.3; do rm -f $(DESTDIR)$(MANDIR)/man3/$${f#man/}; done
 	while read -r name page; do rm -f "$(DESTDIR)$(MANDIR)/man3/$$name"; done < man/links.txt
+
+# ---- make js: the library as WebAssembly, in the npm package bindings/js ------------
+# Debian's clang, wasm-ld, wasi-libc and wasm32 libc++ (tests/install-deps.sh). Their
+# libc++abi has no exception support, so bindings/js/wasm/cxx_eh.cpp supplies the
+# runtime for clang's -fwasm-exceptions code (the engine unwinds). The mandatory flags
+# are the native build's (-fPIC aside): the points are the same, byte for byte. The
+# 1 MiB stack comes first in memory, so an overflow traps instead of overwriting data.
+WASM_CXX    ?= clang++
+WASM_CC     ?= clang
+WASM_OPT    ?= -O3
+WASM_TARGET := --target=wasm32-wasi -fwasm-exceptions
+WASM_B      := $(B)/wasm
+WASM_OBJ    := $(LIB_SRC:src/%.cpp=$(WASM_B)/obj/%.o) $(WASM_B)/obj/cxx_eh.o $(WASM_B)/obj/glue.o
+WASM_OUT    := bindings/js/poissondisk.wasm
+comma := ,
+WASM_EXPORTS := $(shell sed -n 's/^ *\(pds_[a-z0-9_]*\);.*/\1/p' $(MAPFILE)) malloc free
+.PHONY: js check-js
+js: $(WASM_OUT)
+$(WASM_B)/obj/%.o: src/%.cpp
+	@mkdir -p $(dir $@)
+	$(WASM_CXX) $(WASM_TARGET) $(WASM_OPT) $(filter-out -fPIC,$(PDS_CXXFLAGS)) $(PDS_DEPFLAGS) -c $< -o $@
+$(WASM_B)/obj/cxx_eh.o: bindings/js/wasm/cxx_eh.cpp
+	@mkdir -p $(dir $@)
+	$(WASM_CXX) $(WASM_TARGET) $(WASM_OPT) -std=c++17 $(PDS_WARN) -c $< -o $@
+$(WASM_B)/obj/glue.o: bindings/js/wasm/glue.c include/poissondisk.h
+	@mkdir -p $(dir $@)
+	$(WASM_CC) $(WASM_TARGET) $(WASM_OPT) $(PDS_CFLAGS) -c $< -o $@
+$(WASM_OUT): $(WASM_OBJ)
+	$(WASM_CXX) $(WASM_TARGET) $(WASM_OPT) -mexec-model=reactor -fuse-ld=lld -o $@ $(WASM_OBJ) \
+	    -Wl,--strip-debug,--max-memory=4294967296,--stack-first,-z,stack-size=1048576 $(addprefix -Wl$(comma)--export=,$(WASM_EXPORTS))
+-include $(WASM_OBJ:.o=.d)
+# The exception runtime's own cases (bindings/js/test/eh.test.js runs them).
+WASM_EH_TEST := $(WASM_B)/eh_cases.wasm
+$(WASM_EH_TEST): bindings/js/wasm/test/eh_cases.cpp $(WASM_B)/obj/cxx_eh.o
+	$(WASM_CXX) $(WASM_TARGET) $(WASM_OPT) -std=c++17 $(PDS_WARN) -mexec-model=reactor -fuse-ld=lld \
+	    -o $@ $< $(WASM_B)/obj/cxx_eh.o -Wl,--max-memory=4294967296
+
+# check-js: the package's Node tests (npm test), then the demo page in headless
+# Debian chromium driven by puppeteer-core (npm install fetches it, a dev dependency).
+check-js: $(WASM_OUT) $(WASM_EH_TEST) $(CLI)
+	cd bindings/js && npm install --no-audit --no-fund --loglevel=error
+	cd bindings/js && npm test
+	cd bindings/js && npm run test:browser
 
 clean:
 	rm -rf $(B)

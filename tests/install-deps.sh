@@ -10,6 +10,10 @@
 #   python3-venv, -setuptools, -wheel, -pip, -numpy, -scipy : make check-python (the
 #                               package is pip-installed offline into a venv of Debian's
 #                               /usr/bin/python3, which alone sees Debian's numpy/scipy)
+#   lld, wasi-libc, libc++-N-dev-wasm32, libc++abi-N-dev-wasm32, libclang-rt-N-dev-wasm32
+#                             : make js (the library in WebAssembly, with clang)
+#   nodejs (>= 18), npm, chromium : make check-js (node --test; the demo page in headless
+#                               chromium through puppeteer-core, which npm installs)
 set -eu
 
 missing=""
@@ -43,6 +47,22 @@ if ! command -v clang >/dev/null 2>&1; then
 elif ! fuzzer_links; then
     missing="$missing libclang-rt-$(clang -dumpversion | cut -d. -f1)-dev"
 fi
+
+# make js: clang for wasm32 needs wasm-ld and the wasm32 C and C++ libraries of the
+# same major version as clang (Debian 12: 14).
+clang_major=$(clang -dumpversion 2>/dev/null | cut -d. -f1)
+clang_major=${clang_major:-14}
+command -v wasm-ld >/dev/null 2>&1 || missing="$missing lld"
+[ -f /usr/lib/wasm32-wasi/libc.a ] || missing="$missing wasi-libc"
+[ -f /usr/lib/llvm-$clang_major/lib/wasm32-wasi/libc++.a ] || \
+    missing="$missing libc++-$clang_major-dev-wasm32"
+[ -f /usr/lib/llvm-$clang_major/lib/wasm32-wasi/libc++abi.a ] || \
+    missing="$missing libc++abi-$clang_major-dev-wasm32"
+ls /usr/lib/llvm-$clang_major/lib/clang/*/lib/wasi/libclang_rt.builtins-wasm32.a \
+    >/dev/null 2>&1 || missing="$missing libclang-rt-$clang_major-dev-wasm32"
+command -v node >/dev/null 2>&1 || missing="$missing nodejs"
+command -v npm >/dev/null 2>&1 || missing="$missing npm"
+command -v chromium >/dev/null 2>&1 || missing="$missing chromium"
 
 [ -z "$missing" ] && exit 0
 

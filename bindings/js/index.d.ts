@@ -1,0 +1,96 @@
+// Type declarations of the poissondisk package.
+
+/** A radius map over the domain: radii in user units, row 0 along y0, or the
+ *  grey levels of an image (top row first, along y1), linear from rmin (0,
+ *  black) to rmax (maxval, white), as the CLI's --radius-map. */
+export type RadiusMap =
+  | { width: number; height: number; radii: ArrayLike<number> }
+  | { width: number; height: number; grey: ArrayLike<number>; rmin: number; rmax: number; maxval?: number };
+
+export interface SamplerOptions {
+  /** 0 <= seed < 2**64 (a BigInt beyond 2**53); random when omitted (read it back from `.seed`). */
+  seed?: number | bigint;
+  /** [x0, y0, x1, y1]; the unit square by default. */
+  bounds?: [number, number, number, number] | ArrayLike<number>;
+  /** Sample the rectangle as a flat torus: the pattern tiles the plane. */
+  periodic?: boolean;
+  /** Exactly this many points; the library chooses the radius (radius may then be null). */
+  count?: number;
+  /** A variable radius from a map (radius null). */
+  radiusMap?: RadiusMap;
+  /** A variable radius from a function, with the bounds of its values (radius null). */
+  radiusFn?: (x: number, y: number) => number;
+  rmin?: number;
+  rmax?: number;
+  /** Called between points by run(): `done` in [0, 1]; return true to stop it (CanceledError). */
+  progress?: (count: number, done: number) => boolean | void;
+  /** Checked at each progress call and before run(): aborting stops run() with CanceledError. */
+  signal?: AbortSignal;
+}
+
+export class Sampler {
+  private constructor();
+  /** A sampler; `radius` may be a function (x, y) => r (then give rmin and rmax). */
+  static create(radius: number | null | ((x: number, y: number) => number),
+    options?: SamplerOptions): Promise<Sampler>;
+  readonly seed: bigint;
+  readonly bounds: number[];
+  readonly periodic: boolean;
+  /** Add points until maximal (true) or until maxNew were added (false). Synchronous. */
+  run(maxNew?: number): boolean;
+  /** run() in slices of about sliceMs, yielding to the event loop between them: the same points. */
+  runAsync(options?: { sliceMs?: number }): Promise<boolean>;
+  /** Add one point: true if one was added, false if the pattern is maximal. */
+  step(): boolean;
+  /** Continue at a smaller radius, keeping every point. */
+  refine(radius: number): void;
+  /** Re-check from scratch: true if valid and maximal, false if valid with room left. */
+  verify(): boolean;
+  /** The points in insertion order, x and y interleaved (a new array). */
+  points(first?: number, count?: number): Float64Array;
+  /** Each point's radius in force. */
+  radii(first?: number, count?: number): Float64Array;
+  setProgress(fn: ((count: number, done: number) => boolean | void) | null): void;
+  readonly count: number;
+  /** The current radius (the largest in force with a field). */
+  readonly radius: number;
+  /** Area where a point could still go; 0 once maximal. */
+  readonly freeArea: number;
+  /** Free the sampler's memory now; later calls throw StateError. */
+  dispose(): void;
+  readonly disposed: boolean;
+}
+
+/** A maximal pattern in one call: the points, x and y interleaved. */
+export function poissonDisk(radius: number | null | ((x: number, y: number) => number),
+  options?: SamplerOptions): Promise<Float64Array>;
+/** The library's version, "MAJOR.MINOR.PATCH". */
+export function version(): Promise<string>;
+/** The radii a RadiusMap stands for, row 0 along y0 (as pds_set_radius_map takes them). */
+export function radiusMapValues(map: RadiusMap): Float64Array;
+/** Load the module from elsewhere (a URL, bytes or a WebAssembly.Module), e.g. for bundlers. */
+export function init(source?: URL | string | BufferSource | WebAssembly.Module): Promise<unknown>;
+
+export class PoissonDiskError extends Error {
+  /** The negative PDS_E* code. */
+  readonly code: number;
+  /** The library's own message (pds_errmsg), starting with the C function's name. */
+  readonly libraryMessage: string;
+  /** The code's generic text (pds_strerror). */
+  readonly strerror: string;
+}
+export class InvalidArgumentError extends PoissonDiskError {}
+export class OutOfMemoryError extends PoissonDiskError {}
+export class StateError extends PoissonDiskError {}
+export class RangeError extends PoissonDiskError {}
+export class InternalError extends PoissonDiskError {}
+export class CanceledError extends PoissonDiskError {}
+
+export const EINVAL: -1;
+export const ENOMEM: -2;
+export const ESTATE: -3;
+export const ERANGE: -4;
+export const EINTERNAL: -5;
+export const ECANCELED: -6;
+export const DONE: 0;
+export const MORE: 1;

@@ -1,0 +1,7 @@
+// poissondisk: exact maximal Poisson-disk sampling (libpoissondisk in WebAssembly).
+export { Sampler, poissonDisk, version, radiusMapValues } from './sampler.js';
+export { init } from './wasm.js';
+export {
+  PoissonDiskError, InvalidArgumentError, OutOfMemoryError, StateError, RangeError,
+  InternalError, CanceledError, EINVAL, ENOMEM, ESTATE, ERANGE, EINTERNAL, ECANCELED, DONE, MORE,
+} from './errors.js';

@@ -1,0 +1,82 @@
+// The WebAssembly build gives the native library's points, byte for byte.
+import assert from 'node:assert/strict';
+import { test } from 'node:test';
+import { Sampler, poissonDisk } from '../src/index.js';
+import { bytesOf, cliPoints, writePgm } from './cli.js';
+
+function sameBytes(actual, expected, what) {
+  const a = bytesOf(actual);
+  assert.ok(expected.length > 0, `${what}: the CLI wrote no points`);
+  assert.equal(a.length, expected.length, `${what}: ${a.length / 16} points, the CLI ${expected.length / 16}`);
+  const first = a.findIndex((v, i) => v !== expected[i]);
+  assert.equal(first, -1, `${what}: first differing byte at ${first} (point ${Math.floor(first / 16)})`);
+}
+
+test('rectangle: the points of the CLI', async () => {
+  const pts = await poissonDisk(0.013, { seed: 7, bounds: [-1, -0.5, 1.5, 1] });
+  sameBytes(pts, cliPoints(['--radius', '0.013', '--seed', '7', '--domain', '-1', '-0.5', '1.5', '1']), 'rectangle');
+});
+
+test('a 64-bit seed beyond 2**53', async () => {
+  const seed = 18446744073709551557n;
+  const pts = await poissonDisk(0.02, { seed });
+  sameBytes(pts, cliPoints(['--radius', '0.02', '--seed', seed.toString()]), 'seed 2**64-59');
+});
+
+test('torus: the points of the CLI', async () => {
+  const pts = await poissonDisk(0.02, { seed: 11, periodic: true, bounds: [0, 0, 2, 1] });
+  sameBytes(pts, cliPoints(['--radius', '0.02', '--seed', '11', '--periodic', '--domain', '0', '0', '2', '1']), 'torus');
+});
+
+test('count: the points of the CLI, exactly n', async () => {
+  const pts = await poissonDisk(null, { seed: 5, count: 3000 });
+  assert.equal(pts.length, 6000);
+  sameBytes(pts, cliPoints(['--count', '3000', '--seed', '5']), 'count');
+});
+
+test('refine: the points of the CLI', async () => {
+  const s = await Sampler.create(0.03, { seed: 9 });
+  assert.equal(s.run(), true);
+  s.refine(0.015);
+  assert.equal(s.run(), true);
+  sameBytes(s.points(), cliPoints(['--radius', '0.03', '--refine', '0.015', '--seed', '9']), 'refine');
+  s.dispose();
+});
+
+test('radius map from grey levels: the points of the CLI --radius-map', async () => {
+  const width = 23;
+  const height = 17;
+  const grey = new Uint8Array(width * height).map((_, i) => ((i % width) * 11 + Math.floor(i / width) * 5) % 256);
+  const path = writePgm(width, height, grey);
+  const pts = await poissonDisk(null, { seed: 3, radiusMap: { width, height, grey, rmin: 0.006, rmax: 0.03 } });
+  sameBytes(pts, cliPoints(['--radius-map', path, '--rmin', '0.006', '--rmax', '0.03', '--seed', '3']), 'radius map');
+});
+
+test('the same points however the run is split (steps, batches, runAsync)', async () => {
+  const whole = await poissonDisk(0.02, { seed: 21 });
+  const a = await Sampler.create(0.02, { seed: 21 });
+  while (a.step()) { /* one point at a time */ }
+  sameBytes(a.points(), bytesOf(whole), 'steps');
+  const b = await Sampler.create(0.02, { seed: 21 });
+  while (!b.run(97)) { /* batches */ }
+  sameBytes(b.points(), bytesOf(whole), 'batches');
+  const c = await Sampler.create(0.02, { seed: 21 });
+  assert.equal(await c.runAsync({ sliceMs: 0 }), true);
+  sameBytes(c.points(), bytesOf(whole), 'runAsync');
+  for (const s of [a, b, c]) s.dispose();
+});
+
+test('maximal, and verify() says so; freeArea falls to 0', async () => {
+  const s = await Sampler.create(0.01, { seed: 2 });
+  assert.equal(s.freeArea, 1);
+  s.run(500);
+  assert.equal(s.verify(), false, 'room is left after 500 points');
+  assert.ok(s.freeArea > 0);
+  assert.equal(s.run(), true);
+  assert.equal(s.verify(), true);
+  assert.equal(s.freeArea, 0);
+  const r = s.radii();
+  assert.equal(r.length, s.count);
+  assert.ok(r.every((v) => v === 0.01));
+  s.dispose();
+});
