@@ -48,7 +48,7 @@ extern "C" {
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
 #define PDS_VERSION_MINOR 3
-#define PDS_VERSION_PATCH 3
+#define PDS_VERSION_PATCH 4
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
 
@@ -338,8 +338,8 @@ PDS_API int pds_set_progress(pds_sampler *s, pds_progress_fn fn, void *user) PDS
  * With a varying field the count limit is judged at the first point on a
  * bound that holds for every seed: Oler's bound at rmin (as for a constant
  * radius rmin), or for a map, when smaller, the sum of Oler's bounds over
- * the cells between its pixel centres, each at its least corner value (one
- * small value in a map of large ones is then no obstacle); once points exist
+ * the cells between its pixel centres, each at its least corner value (since
+ * 1.3.4: one small value in a map of large ones is then no obstacle); once points exist
  * an unbounded pds_run is not judged again (a maximal pattern returns
  * PDS_DONE). Memory is not reserved for that bound, which one small value
  * can make far larger than the pattern, but grows with the run: PDS_ENOMEM
