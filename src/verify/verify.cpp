@@ -35,6 +35,7 @@ bool check_points(const Delaunay& dt, const Box& box, double r, const std::vecto
     for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
         bool close = false;
         grid.for_each_near(pts[i], [&](std::uint32_t j, int, int) {
+            ++rep.pairs_examined;
             if (rank ? (*rank)[j] < (*rank)[i] && compare_distance(pts[i], pts[j], dt.radius(j)) < 0
                      : j < i && compare_distance(pts[i], pts[j], r) < 0)
                 close = true;

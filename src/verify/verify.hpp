@@ -15,6 +15,7 @@
 #ifndef PDS_VERIFY_HPP
 #define PDS_VERIFY_HPP
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,9 @@ struct VerifyReport {
     // The mesh vertex a failure is about, if any: the caller names it in the
     // user's point order (indices.hpp), which only it knows.
     VertexIndex vertex = kNoVertex;
+    // The candidate pairs the spacing check examined (each a distance test or
+    // less): the measure of its work, which tests bound.
+    std::uint64_t pairs_examined = 0;
 };
 
 // Checks the pattern of dt's real vertices. A failure about one point sets

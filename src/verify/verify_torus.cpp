@@ -41,6 +41,7 @@ bool check_distances(const Delaunay& dt, const Torus& t, const std::vector<Verte
         bool close = false;
         grid.for_each_near(pts[i], [&](std::uint32_t j, int sx, int sy) {
             if (close || (j == i && sx == 0 && sy == 0)) return;
+            ++rep.pairs_examined;
             if (rank) {
                 // A variable radius: only earlier points' disks, each its own size.
                 if ((*rank)[real[j]] < (*rank)[real[i]])
