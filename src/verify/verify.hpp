@@ -10,8 +10,10 @@
 //     within R of its sites, and every side of the domain covered by the disks
 //     (decided on the lower envelope of the distance parabolas along the side,
 //     independently of the mesh).
-// O(N) expected time for the first three, O(N + S log S) for maximality with S
-// the points within R of a side. May allocate; never called mid-mutation.
+// O(N) expected time for the first three (with a variable radius, a constant
+// times the radii's binary orders of magnitude a point: radius_layers.hpp),
+// O(N + S log S) for maximality with S the points within R of a side. May
+// allocate; never called mid-mutation.
 #ifndef PDS_VERIFY_HPP
 #define PDS_VERIFY_HPP
 
