@@ -189,6 +189,18 @@ START_TEST(earlier_radius_decides) {
 }
 END_TEST
 
+START_TEST(radius_must_be_positive_and_finite) {
+    // A radius of NaN or 0 has no disk the rule could use: reported, not
+    // passed (NaN compares false with every distance).
+    for (double bad : {std::nan(""), 0.0}) {
+        const pds::VerifyReport rep = verify_plane({{{0.25, 0.25}, {0.75, 0.75}}, {0.1, bad}}, 0.1);
+        ck_assert(!rep.valid);
+        ck_assert_msg(std::strstr(rep.failure.c_str(), "positive finite") != nullptr, "%s", rep.failure.c_str());
+        ck_assert_uint_eq(rep.vertex, pds::Delaunay::kGhosts + 1);
+    }
+}
+END_TEST
+
 START_TEST(earlier_radius_decides_across_the_wrap) {
     // 2^-8 from each side of the wrap: 2^-7 apart across it.
     const double q = pds::Torus::kQuantum, r = 0x1.0p-7, big = 0.125;
@@ -327,6 +339,7 @@ Suite* verify_field_suite() {
     TCase* rule = tcase_create("rule");
     tcase_set_timeout(rule, 120);
     tcase_add_test(rule, earlier_radius_decides);
+    tcase_add_test(rule, radius_must_be_positive_and_finite);
     tcase_add_test(rule, earlier_radius_decides_across_the_wrap);
     tcase_add_test(rule, layers_find_every_close_pair);
     tcase_add_test(rule, verdicts_match_brute_force);
