@@ -11,6 +11,7 @@
 #include "mesh/mesh_invariants.hpp"
 #include "core/roundoff.hpp"
 #include "core/predicates.hpp"
+#include "verify/radius_layers.hpp"
 #include "verify/spatial_hash.hpp"
 #include "domain/rectangle.hpp"
 
@@ -19,6 +20,40 @@ namespace pds {
 namespace {
 
 using E = Expansion;
+
+// A variable radius: each point outside every earlier point's disk, by that
+// disk's radius (rank: the order the points were added). The radii classes
+// find each pair that could break it from the side of its smaller radius.
+bool check_rule(const Delaunay& dt, const std::vector<std::size_t>& rank, VerifyReport& rep) {
+    const std::vector<Point>& pts = dt.points();
+    for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
+        if (!RadiusLayers::usable(dt.radius(static_cast<VertexIndex>(i)))) {
+            rep.failure = "a point's radius is not a positive finite number";
+            rep.vertex = static_cast<VertexIndex>(i);
+            return false;
+        }
+    }
+    const RadiusLayers layers(pts, Delaunay::kGhosts,
+                              [&](std::size_t v) { return dt.radius(static_cast<VertexIndex>(v)); });
+    for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
+        const double ri = dt.radius(static_cast<VertexIndex>(i));
+        VertexIndex inside = kNoVertex;  // the later point of a pair that breaks the rule
+        layers.for_each_near(pts[i], ri, [&](std::uint32_t j, int, int, bool same) {
+            if (j == i || inside != kNoVertex) return;
+            ++rep.pairs_examined;
+            const bool j_first = rank[j] < rank[i];
+            if (same && !j_first) return;  // j's own visit checks this pair
+            if (compare_distance(pts[i], pts[j], j_first ? dt.radius(j) : ri) < 0)
+                inside = static_cast<VertexIndex>(j_first ? i : j);
+        });
+        if (inside != kNoVertex) {
+            rep.failure = "a point lies inside an earlier point's disk";
+            rep.vertex = inside;
+            return false;
+        }
+    }
+    return true;
+}
 
 bool check_points(const Delaunay& dt, const Box& box, double r, const std::vector<std::size_t>* rank,
                   VerifyReport& rep) {
@@ -30,18 +65,16 @@ bool check_points(const Delaunay& dt, const Box& box, double r, const std::vecto
             return false;
         }
     }
-    // A variable radius: each point outside every earlier point's disk, by
-    // that disk's radius (r: the largest).
+    if (rank) return check_rule(dt, *rank, rep);
     const SpatialHash grid(pts, Delaunay::kGhosts, box, r);
     for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
         bool close = false;
         grid.for_each_near(pts[i], [&](std::uint32_t j, int, int) {
-            if (rank ? (*rank)[j] < (*rank)[i] && compare_distance(pts[i], pts[j], dt.radius(j)) < 0
-                     : j < i && compare_distance(pts[i], pts[j], r) < 0)
-                close = true;
+            ++rep.pairs_examined;
+            if (j < i && compare_distance(pts[i], pts[j], r) < 0) close = true;
         });
         if (close) {
-            rep.failure = rank ? "a point lies inside an earlier point's disk" : "two points are closer than the radius";
+            rep.failure = "two points are closer than the radius";
             rep.vertex = static_cast<VertexIndex>(i);
             return false;
         }

@@ -10,11 +10,14 @@
 //     within R of its sites, and every side of the domain covered by the disks
 //     (decided on the lower envelope of the distance parabolas along the side,
 //     independently of the mesh).
-// O(N) expected time for the first three, O(N + S log S) for maximality with S
-// the points within R of a side. May allocate; never called mid-mutation.
+// O(N) expected time for the first three (with a variable radius, a constant
+// times the radii's binary orders of magnitude a point: radius_layers.hpp),
+// O(N + S log S) for maximality with S the points within R of a side. May
+// allocate; never called mid-mutation.
 #ifndef PDS_VERIFY_HPP
 #define PDS_VERIFY_HPP
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,6 +34,9 @@ struct VerifyReport {
     // The mesh vertex a failure is about, if any: the caller names it in the
     // user's point order (indices.hpp), which only it knows.
     VertexIndex vertex = kNoVertex;
+    // The candidate pairs the spacing check examined (each a distance test or
+    // less): the measure of its work, which tests bound.
+    std::uint64_t pairs_examined = 0;
 };
 
 // Checks the pattern of dt's real vertices. A failure about one point sets

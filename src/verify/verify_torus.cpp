@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "core/predicates.hpp"
+#include "verify/radius_layers.hpp"
 #include "verify/spatial_hash.hpp"
 
 namespace pds {
@@ -31,27 +32,56 @@ bool check_real_points(const Delaunay& dt, const Torus& t, const std::vector<Ver
     return true;
 }
 
+// A variable radius: each point outside every copy of every earlier point's
+// disk (rank: the order the points were added), each pair that could break
+// it found from the side of its smaller radius (radius_layers.hpp).
+bool check_rule(const Delaunay& dt, const Torus& t, const std::vector<VertexIndex>& real,
+                const std::vector<Point>& pts, const std::vector<std::size_t>& rank, VerifyReport& rep) {
+    for (VertexIndex v : real) {
+        if (!RadiusLayers::usable(dt.radius(v))) {
+            rep.failure = "a point's radius is not a positive finite number";
+            rep.vertex = v;
+            return false;
+        }
+    }
+    const RadiusLayers layers(pts, 0, t, [&](std::size_t k) { return dt.radius(real[k]); });
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const double ri = dt.radius(real[i]);
+        VertexIndex inside = kNoVertex;  // the later point of a pair that breaks the rule
+        layers.for_each_near(pts[i], ri, [&](std::uint32_t j, int sx, int sy, bool same) {
+            // A point's own copies are not earlier than it.
+            if (j == i || inside != kNoVertex) return;
+            ++rep.pairs_examined;
+            const bool j_first = rank[real[j]] < rank[real[i]];
+            if (same && !j_first) return;  // j's own visit checks this pair
+            if (compare_distance(pts[i], t.shifted(pts[j], sx, sy), j_first ? dt.radius(real[j]) : ri) < 0)
+                inside = j_first ? real[i] : real[j];
+        });
+        if (inside != kNoVertex) {
+            rep.failure = "a point lies inside an earlier point's disk on the torus";
+            rep.vertex = inside;
+            return false;
+        }
+    }
+    return true;
+}
+
 bool check_distances(const Delaunay& dt, const Torus& t, const std::vector<VertexIndex>& real, double r,
                      const std::vector<std::size_t>* rank, VerifyReport& rep) {
     std::vector<Point> pts;
     pts.reserve(real.size());
     for (VertexIndex v : real) pts.push_back(dt.point(v));
+    if (rank) return check_rule(dt, t, real, pts, *rank, rep);
     const SpatialHash grid(pts, 0, t, r);
     for (std::size_t i = 0; i < pts.size(); ++i) {
         bool close = false;
         grid.for_each_near(pts[i], [&](std::uint32_t j, int sx, int sy) {
             if (close || (j == i && sx == 0 && sy == 0)) return;
-            if (rank) {
-                // A variable radius: only earlier points' disks, each its own size.
-                if ((*rank)[real[j]] < (*rank)[real[i]])
-                    close = compare_distance(pts[i], t.shifted(pts[j], sx, sy), dt.radius(real[j])) < 0;
-                return;
-            }
+            ++rep.pairs_examined;
             close = compare_distance(pts[i], t.shifted(pts[j], sx, sy), r) < 0;
         });
         if (close) {
-            rep.failure = rank ? "a point lies inside an earlier point's disk on the torus"
-                               : "two points are closer than the radius on the torus";
+            rep.failure = "two points are closer than the radius on the torus";
             rep.vertex = real[i];
             return false;
         }
