@@ -147,7 +147,7 @@ Disks random_disks(std::uint64_t seed, int arrangement, bool torus) {
 // Runs s to the end and checks it; returns the report.
 pds::VerifyReport run_and_verify(pds::Sampler& s) {
     bool maximal = false;
-    s.run(0, &maximal);
+    s.add_points(0, &maximal);
     ck_assert(maximal);
     const pds::VerifyReport rep = s.verify();
     ck_assert_msg(rep.valid && rep.maximal, "%s", rep.failure.c_str());
