@@ -99,7 +99,7 @@ public:
     bool pending() const { return false; }
 
     VerifyReport verify(const Delaunay& dt, double r, const std::vector<std::size_t>* rank) const {
-        return verify_pattern(dt, domain_.bounds(), r, rank);
+        return verify_pattern(dt, domain_, r, rank);
     }
 
 private:

@@ -55,11 +55,12 @@ bool check_rule(const Delaunay& dt, const std::vector<std::size_t>& rank, Verify
     return true;
 }
 
-bool check_points(const Delaunay& dt, const Box& box, double r, const std::vector<std::size_t>* rank,
+bool check_points(const Delaunay& dt, const Rectangle& domain, double r, const std::vector<std::size_t>* rank,
                   VerifyReport& rep) {
     const std::vector<Point>& pts = dt.points();
+    const Box& box = domain.bounds();
     for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
-        if (!box.contains(pts[i])) {
+        if (!domain.contains(pts[i])) {
             rep.failure = "a point lies outside the domain";
             rep.vertex = static_cast<VertexIndex>(i);
             return false;
@@ -162,9 +163,9 @@ bool voronoi_vertices_covered(const Delaunay& dt, const Box& box, double r, Veri
 
 // ---- maximality: the sides of the domain -------------------------------------------
 
-bool sides_covered(const Delaunay& dt, const Box& box, double r, VerifyReport& rep) {
+bool sides_covered(const Delaunay& dt, const Rectangle& domain, double r, VerifyReport& rep) {
     // The domain type certifies its own boundary.
-    if (const char* side = Rectangle(box).uncovered_side(dt, r)) {
+    if (const char* side = domain.uncovered_side(dt, r)) {
         rep.failure = std::string("the ") + side + " side of the domain is not covered";
         return false;
     }
@@ -190,7 +191,7 @@ void name_point(VerifyReport& rep, PointIndex k) {
     rep.failure += " (point " + std::to_string(k) + ")";
 }
 
-VerifyReport verify_pattern(const Delaunay& dt, const Box& domain, double radius,
+VerifyReport verify_pattern(const Delaunay& dt, const Rectangle& domain, double radius,
                             const std::vector<std::size_t>* rank) {
     VerifyReport rep;
     if (!check_points(dt, domain, radius, rank, rep) || !check_mesh(dt, rep)) {
@@ -199,7 +200,7 @@ VerifyReport verify_pattern(const Delaunay& dt, const Box& domain, double radius
     }
     VerifyReport gap;
     rep.maximal = dt.vertex_count() > Delaunay::kGhosts &&
-                  voronoi_vertices_covered(dt, domain, radius, gap) &&
+                  voronoi_vertices_covered(dt, domain.bounds(), radius, gap) &&
                   sides_covered(dt, domain, radius, gap);
     if (!rep.maximal) rep.failure = gap.failure.empty() ? "no points yet" : gap.failure;
     return rep;

@@ -24,6 +24,7 @@
 #include "mesh/delaunay.hpp"
 #include "core/indices.hpp"
 #include "core/point.hpp"
+#include "domain/rectangle.hpp"
 
 namespace pds {
 
@@ -44,7 +45,7 @@ struct VerifyReport {
 // A weighted mesh (a variable radius): radius is the largest, rank[v] is
 // vertex v's place in the order the points were added (the spacing rule
 // depends on it), and maximality is judged on the power diagram.
-VerifyReport verify_pattern(const Delaunay& dt, const Box& domain, double radius,
+VerifyReport verify_pattern(const Delaunay& dt, const Rectangle& domain, double radius,
                             const std::vector<std::size_t>* rank = nullptr);
 // Exact: the circumcentre of the counterclockwise triangle (a, b, c) lies in
 // the closed box and farther than r from the corners.
