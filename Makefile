@@ -115,7 +115,7 @@ $(LIB_A): $(LIB_OBJ)
 CLI_SRC := tools/poissondisk.c tools/cli_options.c tools/cli_progress.c tools/cli_report.c \
            tools/cli_field.c tools/pgm.c \
            tools/cli_sample.c tools/cli_outputs.c tools/cli_output_args.c tools/cli_spectrum.c \
-           tools/out_formats.c tools/pattern_svg.c tools/pattern_png.c tools/pattern_stats.c \
+           tools/out_formats.c tools/pattern_svg.c tools/pattern_png.c tools/pattern_stats.c tools/pattern_layers.c \
            tools/png.c tools/points_in.c tools/spectrum.c tools/spectrum_out.c \
            tools/spectrum_plot.c
 $(CLI): $(CLI_SRC) $(wildcard tools/*.h) include/poissondisk.h $(LIB_A)

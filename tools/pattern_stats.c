@@ -3,6 +3,7 @@
  * (see pattern_stats.h).
  */
 #include "pattern_stats.h"
+#include "pattern_layers.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -182,22 +183,53 @@ int pattern_field_stats(const double *xy, const double *radii, size_t n, const d
                         double rmin, double rmax, double *min_rule, double *mean_nn)
 {
     struct grid g;
-    double sum = 0.0, least = HUGE_VAL;
+    double sum = 0.0, rule2, *nn_d2;
+    unsigned char *exact;
     size_t k;
+    int built = 0, rc = -1;
 
     *min_rule = *mean_nn = NAN;
     if (n < 2)
         return 1;
-    if (grid_build(&g, xy, n, box, 0, rmin) != 0)
-        return -1;
-    for (k = 0; k < n; k++) {
-        double rule = nearest(&g, k, radii, rmax);
-        sum += nearest(&g, k, NULL, 1.0) / radii[k];
-        least = rule < least ? rule : least;
+    nn_d2 = malloc(n * sizeof *nn_d2);
+    exact = malloc(n);
+    if (nn_d2 == NULL || exact == NULL
+        || pattern_layers_nearest(xy, radii, n, nn_d2, exact, &rule2) != 0)
+        goto out;
+    /* The near pairs by groups of radii decide nearly everything in O(N); the
+       rest (a point far from all others, a pattern breaking the rule by no
+       margin) is searched in one grid ring by ring, exact at any cost. */
+    if (rule2 >= 3.99) {
+        if (grid_build(&g, xy, n, box, 0, rmin) != 0)
+            goto out;
+        built = 1;
+        rule2 = HUGE_VAL;
+        for (k = 0; k < n; k++) {
+            double rule = nearest(&g, k, radii, rmax);
+            rule2 = rule * rule < rule2 ? rule * rule : rule2;
+        }
     }
-    free(g.start);
-    free(g.order);
-    *min_rule = least;
+    for (k = 0; k < n; k++) {
+        double d;
+        if (exact[k]) {
+            d = sqrt(nn_d2[k]);
+        } else {
+            if (!built && grid_build(&g, xy, n, box, 0, rmin) != 0)
+                goto out;
+            built = 1;
+            d = nearest(&g, k, NULL, 1.0);
+        }
+        sum += d / radii[k];
+    }
+    *min_rule = sqrt(rule2);
     *mean_nn = sum / (double)n;
-    return 0;
+    rc = 0;
+out:
+    if (built) {
+        free(g.start);
+        free(g.order);
+    }
+    free(nn_d2);
+    free(exact);
+    return rc;
 }
