@@ -114,6 +114,20 @@ below=$(awk '$2 < 0.5' "$tmp/bottom.out" | wc -l)
 expect "a map dark at the bottom: more points in the lower half ($below against $above)" \
     eval '[ "$rc" -eq 0 ] && [ "$below" -gt $((3 * above)) ]'
 
+# ---- --stats when the radii span a wide ratio ---------------------------------------------
+# One black pixel of four: radii 7e-4 in a quarter, 0.3 elsewhere (about 90000 points).
+# The nearest neighbours are searched per group of radii, linear in the points whatever
+# the ratio; one grid for all radii searched about (0.3 / 0.0033)^2 cells for each point
+# (tens of seconds). The limit is only there to end such a run, far above the work.
+printf 'P2\n2 2\n255\n0 255\n255 255\n' > "$img/corner.pgm"
+rc=0
+timeout 20 "$cli" --radius-map "$img/corner.pgm" --rmin 7e-4 --rmax 0.3 --radii --stats \
+    > "$tmp/wide.out" 2> "$tmp/wide.err" || rc=$?
+expect "--radius-map with radii 7e-4..0.3 --stats ends (exit $rc; 124 is the 20 s limit)" \
+    [ "$rc" -eq 0 ]
+expect "--radius-map with radii 7e-4..0.3: --stats matches a k-d tree's nearest neighbours" \
+    py stats "$tmp/wide.err" "$tmp/wide.out" map 0 0 1 1 0
+
 # ---- the map spans --domain ---------------------------------------------------------------
 run dom --radius-map "$img/blob.pgm" --rmin 0.05 --rmax 0.2 --domain -2 1 2 4 --radii --verify --stats
 expect "--radius-map with --domain -2 1 2 4 exits 0 (got $rc)" [ "$rc" -eq 0 ]
