@@ -30,7 +30,9 @@ int pattern_nn_stats(const double *xy, size_t n, const double box[4], int period
  * (the variable-radius rule asks at least 1: a later point keeps out of
  * every earlier point's disk), *mean_nn the mean over the points of the
  * nearest-neighbour distance divided by the point's own radius. With equal
- * radii R both are pattern_nn_stats's values over R. Returns as
+ * radii R both are pattern_nn_stats's values over R. The near pairs are found
+ * by groups of radii (pattern_layers.h), O(N) at any ratio rmax / rmin; the
+ * ring search above only decides what they leave open. Returns as
  * pattern_nn_stats.
  */
 int pattern_field_stats(const double *xy, const double *radii, size_t n, const double box[4],
