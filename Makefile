@@ -112,7 +112,7 @@ $(LIB_A): $(LIB_OBJ)
 
 # ---- command-line program: public API only, linked against the static library --------
 # The pictures (PNG included: tools/png.c writes it) need nothing beyond libc and libm.
-CLI_SRC := tools/poissondisk.c tools/cli_options.c tools/cli_progress.c tools/cli_report.c \
+CLI_SRC := tools/poissondisk.c tools/cli_args.c tools/cli_options.c tools/cli_progress.c tools/cli_report.c \
            tools/cli_field.c tools/pgm.c \
            tools/cli_sample.c tools/cli_outputs.c tools/cli_output_args.c tools/cli_spectrum.c \
            tools/out_formats.c tools/pattern_svg.c tools/pattern_png.c tools/pattern_stats.c tools/pattern_layers.c \
