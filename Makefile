@@ -519,4 +519,4 @@ check-js: $(WASM_OUT) $(WASM_EH_TEST) $(CLI)
 	cd bindings/js && npm run test:browser
 
 clean:
-	rm -rf $(B)
+	rm -rf $(B) $(WASM_OUT)

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/point.hpp"
+#include "core/prefetch.hpp"
 
 namespace pds {
 
@@ -32,7 +33,7 @@ public:
     // The cell of p, as the layered grid finds it (clamped to the grid).
     std::size_t cell_of(const Point& p) const;
     bool covered(std::size_t cell) const { return (bits_[cell / 64] >> (cell % 64)) & 1; }
-    void prefetch(std::size_t cell) const { __builtin_prefetch(&bits_[cell / 64]); }
+    void prefetch(std::size_t cell) const { pds::prefetch(&bits_[cell / 64]); }
     // Whether cell (col, row) is marked (tests).
     bool covered(std::size_t col, std::size_t row) const { return covered(row * words_ * 64 + col); }
     // Unmarks every cell (tests).

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "core/huge_pages.hpp"
+#include "core/prefetch.hpp"
 
 namespace pds {
 
@@ -42,7 +43,7 @@ public:
 
     std::uint64_t get(std::size_t cell) const { return words_[cell]; }
     void set(std::size_t cell, std::uint64_t word) { words_[cell] = word; }
-    void prefetch(std::size_t cell) const { __builtin_prefetch(words_.get() + cell); }
+    void prefetch(std::size_t cell) const { pds::prefetch(words_.get() + cell); }
 
     // Room for `points` points writing `writes` cells in all (never fails:
     // the array is whole); asks for huge pages once the points are worth
@@ -83,7 +84,7 @@ public:
         if (slots_[i].word == 0) ++used_;
         slots_[i] = Slot{cell, word};
     }
-    void prefetch(std::size_t cell) const { __builtin_prefetch(&slots_[slot_of(cell)]); }
+    void prefetch(std::size_t cell) const { pds::prefetch(&slots_[slot_of(cell)]); }
 
     // Room for `writes` taken cells in all (the points' and their copies');
     // strong guarantee (std::bad_alloc).

@@ -36,6 +36,7 @@
 
 #include "core/point.hpp"
 #include "core/predicates.hpp"
+#include "core/prefetch.hpp"
 #include "core/rng.hpp"
 #include "core/torus.hpp"
 #include "darts/covered_bitmap.hpp"
@@ -252,7 +253,7 @@ inline void LayeredGrid::throw_darts(Dart* batch, std::size_t n, Rng& rng) const
         d.p.y = box_.y0 + rng.next_double() * h;
         d.tile = tile_of(d.p);
         d.cover_cell = covered_.cell_of(d.p);
-        __builtin_prefetch(&tiles_[d.tile]);
+        pds::prefetch(&tiles_[d.tile]);
         covered_.prefetch(d.cover_cell);
     }
     for (std::size_t at = 0; at < n; ++at) {
@@ -271,8 +272,8 @@ inline void LayeredGrid::throw_darts(Dart* batch, std::size_t n, Rng& rng) const
             }
             for (int i = b.y_lo; i <= b.y_hi; ++i) {
                 const std::size_t y = b.y + static_cast<std::size_t>(i);
-                __builtin_prefetch(L.cells.get() + L.at(b.x + static_cast<std::size_t>(b.x_lo), y));
-                __builtin_prefetch(L.cells.get() + L.at(b.x + static_cast<std::size_t>(b.x_hi), y));
+                pds::prefetch(L.cells.get() + L.at(b.x + static_cast<std::size_t>(b.x_lo), y));
+                pds::prefetch(L.cells.get() + L.at(b.x + static_cast<std::size_t>(b.x_hi), y));
             }
         }
     }

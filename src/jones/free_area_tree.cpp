@@ -6,6 +6,7 @@
 
 #include "core/batch.hpp"
 #include "core/huge_pages.hpp"
+#include "core/prefetch.hpp"
 
 namespace pds {
 
@@ -135,7 +136,7 @@ void FreeAreaTree::select_many(const double* u, std::size_t n, std::size_t* leav
             // Ask for every group of this level first, then descend: the
             // loads are independent, so their misses overlap.
             for (std::size_t k = 0; k < m; ++k)
-                __builtin_prefetch(nodes_.get() + offset_[level - 1] + kFanout * leaves[done + k]);
+                pds::prefetch(nodes_.get() + offset_[level - 1] + kFanout * leaves[done + k]);
             for (std::size_t k = 0; k < m; ++k) leaves[done + k] = pick_child(level, leaves[done + k], rest[k]);
         }
     }

@@ -7,6 +7,7 @@
 #include "core/batch.hpp"
 #include "core/huge_pages.hpp"
 #include "core/predicates.hpp"
+#include "core/prefetch.hpp"
 
 namespace pds {
 
@@ -80,9 +81,9 @@ void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) cons
     EdgeRef edge[kMaxBatch], first[kMaxBatch];
     if (n > kMaxBatch) n = kMaxBatch;
     for (std::size_t k = 0; k < n; ++k) {
-        __builtin_prefetch(&vertex_edge_[vertices[k]]);
-        __builtin_prefetch(&points_[vertices[k]]);
-        if (weighted_) __builtin_prefetch(&radii_[vertices[k]]);
+        pds::prefetch(&vertex_edge_[vertices[k]]);
+        pds::prefetch(&points_[vertices[k]]);
+        if (weighted_) pds::prefetch(&radii_[vertices[k]]);
     }
     for (std::size_t k = 0; k < n; ++k) edge[k] = first[k] = vertex_edge_[vertices[k]];
     // One step of every ring per round: the loads of a round are independent.
@@ -90,10 +91,10 @@ void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) cons
         bool any = false;
         for (std::size_t k = 0; k < n; ++k) {
             if (edge[k] == kNoEdge) continue;
-            __builtin_prefetch(&points_[mesh_.dest(edge[k])]);
-            if (weighted_) __builtin_prefetch(&radii_[mesh_.dest(edge[k])]);
+            pds::prefetch(&points_[mesh_.dest(edge[k])]);
+            if (weighted_) pds::prefetch(&radii_[mesh_.dest(edge[k])]);
             const EdgeRef next = mesh_.onext(edge[k]);
-            __builtin_prefetch(mesh_.record_address(next));
+            pds::prefetch(mesh_.record_address(next));
             edge[k] = next == first[k] ? kNoEdge : next;
             any = true;
         }
@@ -112,7 +113,7 @@ void Delaunay::prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t 
         EdgeRef e = first;
         do {
             const EdgeRef link = mesh_.lnext(e);
-            __builtin_prefetch(mesh_.record_address(link));
+            pds::prefetch(mesh_.record_address(link));
             edge[m++] = link;
             e = mesh_.onext(e);
         } while (e != first && m < kMax);
@@ -121,12 +122,12 @@ void Delaunay::prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t 
     // triangle on its other side (what the flip test reads).
     for (std::size_t i = 0; i < m; ++i) {
         edge[i] = mesh_.oprev(edge[i]);
-        __builtin_prefetch(mesh_.record_address(edge[i]));
+        pds::prefetch(mesh_.record_address(edge[i]));
     }
     // Round 3: the far corners themselves (and their radii).
     for (std::size_t i = 0; i < m; ++i) {
-        __builtin_prefetch(&points_[mesh_.dest(edge[i])]);
-        if (weighted_) __builtin_prefetch(&radii_[mesh_.dest(edge[i])]);
+        pds::prefetch(&points_[mesh_.dest(edge[i])]);
+        if (weighted_) pds::prefetch(&radii_[mesh_.dest(edge[i])]);
     }
 }
 

@@ -38,6 +38,7 @@
 #include "core/indices.hpp"
 #include "core/point.hpp"
 #include "core/predicates.hpp"
+#include "core/prefetch.hpp"
 #include "mesh/quadedge.hpp"
 
 namespace pds {
@@ -89,10 +90,10 @@ public:
         // The points are stored in the order they were drawn, so reading them
         // in spatial order is a cache miss each: ask for them well ahead.
         constexpr std::size_t kAhead = 16;
-        for (std::size_t i = 0; i < n && i < kAhead; ++i) __builtin_prefetch(&points[order[i]]);
+        for (std::size_t i = 0; i < n && i < kAhead; ++i) pds::prefetch(&points[order[i]]);
         VertexIndex previous = 0;
         for (std::size_t i = 0; i < n; ++i) {
-            if (i + kAhead < n) __builtin_prefetch(&points[order[i + kAhead]]);
+            if (i + kAhead < n) pds::prefetch(&points[order[i + kAhead]]);
             const std::uint32_t k = order[i];
             previous = weighted_ ? insert(points[k], radius_of(k), previous) : insert(points[k], previous);
             inserted(k, previous);
