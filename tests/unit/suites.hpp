@@ -28,6 +28,7 @@ Suite* out_of_memory_suite();
 Suite* torus_suite();
 Suite* rectangle_suite();
 Suite* progress_suite();
+Suite* polygon_suite();
 
 // Under Valgrind (PDS_TEST_LIGHT set) loops shrink; every behaviour still runs.
 inline bool test_light() { return std::getenv("PDS_TEST_LIGHT") != nullptr; }

@@ -1,0 +1,173 @@
+// polygon_index.cpp - see polygon_index.hpp.
+#include "domain/polygon_index.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/predicates.hpp"
+
+namespace pds {
+
+namespace {
+
+double min_x(const Point& a, const Point& b) { return std::min(a.x, b.x); }
+double max_x(const Point& a, const Point& b) { return std::max(a.x, b.x); }
+
+// p on the closed segment ab (exact).
+bool on_segment(const Point& p, const Point& a, const Point& b) {
+    return p.x >= min_x(a, b) && p.x <= max_x(a, b) && p.y >= std::min(a.y, b.y) && p.y <= std::max(a.y, b.y) &&
+           orient2d(a, b, p) == 0;
+}
+
+// About four cells per edge, at least 1024 and at most 2^24.
+constexpr double kCellsPerEdge = 4.0;
+constexpr double kMinCells = 1024.0;
+constexpr double kMaxCells = 16777216.0;
+// A cell stays wider than this share of the largest coordinate, so that the
+// one-cell margin of the marking dwarfs the rounding of an interpolation.
+constexpr double kMinCellShare = 0x1p-40;
+
+}  // namespace
+
+std::size_t PolygonIndex::column_of(double x) const {
+    const double c = std::floor((x - box_.x0) * col_scale_);
+    if (!(c > 0.0)) return 0;
+    return c >= static_cast<double>(cols_) ? cols_ - 1 : static_cast<std::size_t>(c);
+}
+
+std::size_t PolygonIndex::row_of(double y) const {
+    const double r = std::floor((y - box_.y0) * row_scale_);
+    if (!(r > 0.0)) return 0;
+    return r >= static_cast<double>(rows_) ? rows_ - 1 : static_cast<std::size_t>(r);
+}
+
+PolygonIndex::PolygonIndex(const PolygonRings& rings) : rings_(rings), box_(rings.bounds()) {
+    const double w = box_.width(), h = box_.height();
+    const double cells = std::min(kMaxCells, std::max(kMinCells, kCellsPerEdge * static_cast<double>(rings.vertices())));
+    const double magnitude = std::max(std::max(std::fabs(box_.x0), std::fabs(box_.x1)),
+                                      std::max(std::fabs(box_.y0), std::fabs(box_.y1)));
+    const double smallest = kMinCellShare * magnitude;
+    double rows = std::max(1.0, std::round(std::sqrt(cells * h / w)));
+    double cols = std::max(1.0, std::round(cells / rows));
+    rows = std::max(1.0, std::min(rows, std::floor(h / smallest)));
+    cols = std::max(1.0, std::min(cols, std::floor(w / smallest)));
+    rows_ = static_cast<std::size_t>(rows);
+    cols_ = static_cast<std::size_t>(cols);
+    col_scale_ = static_cast<double>(cols_) / w;
+    row_scale_ = static_cast<double>(rows_) / h;
+    cell_.assign(rows_ * cols_, static_cast<std::int8_t>(kInside));  // settled below
+
+    // The rows' edge lists: count, then fill.
+    const std::size_t edges = rings.vertices();
+    row_begin_.assign(rows_ + 1, 0);
+    for (std::size_t e = 0; e < edges; ++e) {
+        const Point a = rings.edge_start(e), b = rings.edge_end(e);
+        for (std::size_t r = row_of(std::min(a.y, b.y)); r <= row_of(std::max(a.y, b.y)); ++r) ++row_begin_[r + 1];
+    }
+    for (std::size_t r = 0; r < rows_; ++r) row_begin_[r + 1] += row_begin_[r];
+    by_right_.resize(row_begin_[rows_]);
+    std::vector<std::size_t> fill(row_begin_.begin(), row_begin_.end() - 1);
+    for (std::size_t e = 0; e < edges; ++e) {
+        const Point a = rings.edge_start(e), b = rings.edge_end(e);
+        for (std::size_t r = row_of(std::min(a.y, b.y)); r <= row_of(std::max(a.y, b.y)); ++r)
+            by_right_[fill[r]++] = static_cast<std::uint32_t>(e);
+        mark_edge_cells(e);
+    }
+    by_left_ = by_right_;
+    for (std::size_t r = 0; r < rows_; ++r) {
+        const auto begin = static_cast<std::ptrdiff_t>(row_begin_[r]), end = static_cast<std::ptrdiff_t>(row_begin_[r + 1]);
+        std::sort(by_right_.begin() + begin, by_right_.begin() + end, [&](std::uint32_t i, std::uint32_t j) {
+            return max_x(rings_.edge_start(i), rings_.edge_end(i)) > max_x(rings_.edge_start(j), rings_.edge_end(j));
+        });
+        std::sort(by_left_.begin() + begin, by_left_.begin() + end, [&](std::uint32_t i, std::uint32_t j) {
+            return min_x(rings_.edge_start(i), rings_.edge_end(i)) < min_x(rings_.edge_start(j), rings_.edge_end(j));
+        });
+    }
+    settle_clean_cells();
+}
+
+void PolygonIndex::mark_edge_cells(std::size_t edge) {
+    const Point a = rings_.edge_start(edge), b = rings_.edge_end(edge);
+    const double y_lo = std::min(a.y, b.y), y_hi = std::max(a.y, b.y);
+    const double x_lo = min_x(a, b), x_hi = max_x(a, b);
+    const double row_height = 1.0 / row_scale_;
+    for (std::size_t r = row_of(y_lo); r <= row_of(y_hi); ++r) {
+        // The edge's x range over this row's band widened by a row each way.
+        double from = x_lo, to = x_hi;
+        if (y_hi > y_lo) {
+            const double band_lo = std::max(y_lo, box_.y0 + (static_cast<double>(r) - 1.0) * row_height);
+            const double band_hi = std::min(y_hi, box_.y0 + (static_cast<double>(r) + 2.0) * row_height);
+            const double slope = (b.x - a.x) / (b.y - a.y);
+            const double u = a.x + (band_lo - a.y) * slope, v = a.x + (band_hi - a.y) * slope;
+            from = std::max(x_lo, std::min(u, v));
+            to = std::min(x_hi, std::max(u, v));
+            if (!(from <= to)) from = x_lo, to = x_hi;  // a band the rounding emptied: the whole range
+        }
+        const std::size_t c0 = column_of(from), c1 = column_of(to);
+        const std::size_t first = c0 == 0 ? 0 : c0 - 1, last = std::min(cols_ - 1, c1 + 1);
+        for (std::size_t c = first; c <= last; ++c) cell_[r * cols_ + c] = static_cast<std::int8_t>(kOnOutline);
+    }
+}
+
+void PolygonIndex::settle_clean_cells() {
+    for (std::size_t r = 0; r < rows_; ++r) {
+        Place run = kOnOutline;  // the place of the clean run the last cell belonged to
+        for (std::size_t c = 0; c < cols_; ++c) {
+            std::int8_t& cell = cell_[r * cols_ + c];
+            if (cell == kOnOutline) {
+                run = kOnOutline;
+                continue;
+            }
+            if (run == kOnOutline) {
+                // Adjacent clean cells share their place: no edge separates them.
+                const Point centre{box_.x0 + (static_cast<double>(c) + 0.5) / col_scale_,
+                                   box_.y0 + (static_cast<double>(r) + 0.5) / row_scale_};
+                if (column_of(centre.x) == c && row_of(centre.y) == r) run = cast_ray(centre, r);
+            }
+            cell = static_cast<std::int8_t>(run);  // kOnOutline when no point of it was found
+        }
+    }
+}
+
+PolygonIndex::Place PolygonIndex::locate(const Point& p) const {
+    if (!box_.contains(p)) return kOutside;
+    const std::size_t r = row_of(p.y);
+    const Place clean = cell_place(column_of(p.x), r);
+    return clean != kOnOutline ? clean : cast_ray(p, r);
+}
+
+PolygonIndex::Place PolygonIndex::cast_ray(const Point& p, std::size_t row) const {
+    const std::uint32_t* right = by_right_.data() + row_begin_[row];
+    const std::uint32_t* left = by_left_.data() + row_begin_[row];
+    const std::size_t n = row_begin_[row + 1] - row_begin_[row];
+    // Edges that reach p's x or beyond, on each side (the lists are sorted).
+    const std::size_t n_right = static_cast<std::size_t>(
+        std::partition_point(right, right + n, [&](std::uint32_t e) {
+            return max_x(rings_.edge_start(e), rings_.edge_end(e)) >= p.x;
+        }) - right);
+    const std::size_t n_left = static_cast<std::size_t>(
+        std::partition_point(left, left + n, [&](std::uint32_t e) {
+            return min_x(rings_.edge_start(e), rings_.edge_end(e)) <= p.x;
+        }) - left);
+    // Either ray gives the parity; an edge through p is among both lists.
+    const bool to_right = n_right <= n_left;
+    const std::uint32_t* edges = to_right ? right : left;
+    const std::size_t count = to_right ? n_right : n_left;
+    const int crossing_side = to_right ? 1 : -1;
+    bool odd = false;
+    for (std::size_t k = 0; k < count; ++k) {
+        const Point a = rings_.edge_start(edges[k]), b = rings_.edge_end(edges[k]);
+        if ((a.y > p.y) == (b.y > p.y)) {
+            if (on_segment(p, a, b)) return kOnOutline;  // horizontal, or touching at an end
+            continue;
+        }
+        const Point& lo = a.y > p.y ? b : a;
+        const Point& hi = a.y > p.y ? a : b;
+        const int side = orient2d(lo, hi, p);
+        if (side == 0) return kOnOutline;  // straddles p's height and passes through p
+        if (side == crossing_side) odd = !odd;
+    }
+    return odd ? kInside : kOutside;
+}
+
+}  // namespace pds

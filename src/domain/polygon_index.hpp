@@ -1,0 +1,74 @@
+// polygon_index.hpp - where a point lies against a polygonal outline
+// (polygon_rings.hpp): inside, on it, or outside, by the even-odd rule, exactly.
+//
+// A point is inside when a ray from it crosses the outline an odd number of
+// times. The crossing test is exact: an edge counts when one end lies above
+// the point's height and the other at or below it (a vertex at the height
+// counts as below, so a ray through a vertex counts the two edges there
+// consistently), and the point lies on the ray's side of it by orient2d.
+// A point on an edge is on the outline; the closed domain contains it.
+//
+// A grid over the bounding box makes this about constant time:
+//   - each row lists the edges whose height range meets it, once sorted by
+//     their right end and once by their left end, so a ray cast to either
+//     side reads only the edges it can cross, and takes the shorter side;
+//   - each cell that no edge meets ("clean") holds the answer for all its
+//     points, found once by a ray cast from a point inside it.
+// The cells an edge meets are marked from its height band widened by a row
+// and a column on each side, more than rounding can move it: a cell marked
+// without need only costs a ray cast, one missed would be wrong.
+#ifndef PDS_POLYGON_INDEX_HPP
+#define PDS_POLYGON_INDEX_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/point.hpp"
+#include "domain/polygon_rings.hpp"
+
+namespace pds {
+
+class PolygonIndex {
+public:
+    // Where a point lies.
+    enum Place : int { kOutside = -1, kOnOutline = 0, kInside = 1 };
+
+    // Keeps a reference to rings: they must outlive the index.
+    explicit PolygonIndex(const PolygonRings& rings);
+
+    Place locate(const Point& p) const;
+    // The closed domain: inside or on the outline.
+    bool contains(const Point& p) const { return locate(p) != kOutside; }
+
+    // The grid (tests, and the dart grids that skip clean outside cells).
+    std::size_t columns() const { return cols_; }
+    std::size_t rows() const { return rows_; }
+    std::size_t column_of(double x) const;
+    std::size_t row_of(double y) const;
+    // kInside or kOutside for a clean cell, kOnOutline for one an edge may meet.
+    Place cell_place(std::size_t col, std::size_t row) const {
+        return static_cast<Place>(cell_[row * cols_ + col]);
+    }
+
+private:
+    // The exact ray cast from p through the edges of its row.
+    Place cast_ray(const Point& p, std::size_t row) const;
+    void mark_edge_cells(std::size_t edge);
+    void settle_clean_cells();
+
+    const PolygonRings& rings_;
+    Box box_;
+    std::size_t cols_ = 1, rows_ = 1;
+    double col_scale_ = 0.0, row_scale_ = 0.0;  // cells per unit length
+    std::vector<std::int8_t> cell_;             // a Place per cell
+    // Row r's edges are by_right_[row_begin_[r] .. row_begin_[r + 1]), by
+    // decreasing right end, and by_left_ over the same range, by increasing
+    // left end.
+    std::vector<std::size_t> row_begin_;
+    std::vector<std::uint32_t> by_right_, by_left_;
+};
+
+}  // namespace pds
+
+#endif
