@@ -1,0 +1,522 @@
+/*
+ * geojson.c - the rings of a GeoJSON file (see shape_files.h), with a small
+ * strict JSON reader of its own.
+ *
+ * Two passes. The first checks that the whole text is one RFC 8259 value
+ * (syntax errors name a line and column); the second walks the text, now
+ * known to be valid, and takes the rings. JSON members come in any order
+ * ("coordinates" may precede "type"), so the walk first notes where an
+ * object's members of interest start, then reads them once the type is
+ * known. Each byte is so scanned once per level of FeatureCollection,
+ * Feature, geometry and coordinates: a few times, linear in all. Both passes
+ * recurse once per nesting level, at most SHAPE_JSON_MAX_DEPTH deep.
+ */
+#include "shape_files_internal.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct json {
+    const char *name, *text;
+    size_t len;
+    char *msg;
+    size_t size;
+    struct ring_builder *b;
+};
+
+static int is_ws(char c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
+static int is_digit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+static size_t ws(const struct json *j, size_t p)
+{
+    while (p < j->len && is_ws(j->text[p]))
+        p++;
+    return p;
+}
+
+/* The character at p as a message shows it. */
+static const char *found(const struct json *j, size_t p, char buf[16])
+{
+    unsigned char c = p < j->len ? (unsigned char)j->text[p] : 0;
+
+    if (p >= j->len)
+        return "the end of the file";
+    if (c > 0x20 && c < 0x7f)
+        snprintf(buf, 16, "'%c'", c);
+    else
+        snprintf(buf, 16, "byte 0x%02x", (unsigned)c);
+    return buf;
+}
+
+static int syntax(const struct json *j, size_t p, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* A syntax error at byte p: "NAME: line L column C: WHAT". */
+static int syntax(const struct json *j, size_t p, const char *fmt, ...)
+{
+    size_t line = 1, col = 1, i;
+    char where[64], what[192];
+    va_list ap;
+
+    for (i = 0; i < p && i < j->len; i++, col++)
+        if (j->text[i] == '\n') {
+            line++;
+            col = 0;
+        }
+    snprintf(where, sizeof where, "line %zu column %zu", line, col);
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    return shape_fail(j->msg, j->size, j->name, where, "%s", what);
+}
+
+/* ---- pass 1: the syntax ------------------------------------------------------------ */
+
+static int check_string(const struct json *j, size_t *pp)
+{
+    size_t p = *pp + 1, k;
+    char buf[16];
+
+    for (;;) {
+        unsigned char c;
+        if (p >= j->len)
+            return syntax(j, *pp, "the file ends inside this string (truncated?)");
+        c = (unsigned char)j->text[p];
+        if (c == '"')
+            break;
+        if (c < 0x20)
+            return syntax(j, p, "a raw control character (0x%02x) in a string", (unsigned)c);
+        if (c != '\\') {
+            p++;
+            continue;
+        }
+        if (p + 1 >= j->len)
+            return syntax(j, *pp, "the file ends inside this string (truncated?)");
+        c = (unsigned char)j->text[p + 1];
+        if (c != 'u') {
+            if (c == 0 || strchr("\"\\/bfnrt", c) == NULL)
+                return syntax(j, p, "invalid escape: '\\' followed by %s", found(j, p + 1, buf));
+            p += 2;
+            continue;
+        }
+        for (k = 2; k < 6; k++) {
+            c = p + k < j->len ? (unsigned char)j->text[p + k] : 0;
+            if (p + k >= j->len)
+                return syntax(j, *pp, "the file ends inside this string (truncated?)");
+            if (!is_digit((char)c) && !(c >= 'a' && c <= 'f') && !(c >= 'A' && c <= 'F'))
+                return syntax(j, p, "invalid escape: \\u needs 4 hexadecimal digits");
+        }
+        p += 6;
+    }
+    *pp = p + 1;
+    return 0;
+}
+
+/* -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)? */
+static int check_number(const struct json *j, size_t *pp)
+{
+    const char *t = j->text;
+    size_t p = *pp, n = j->len;
+
+    if (t[p] == '-')
+        p++;
+    if (p < n && t[p] == '0') {
+        if (++p < n && is_digit(t[p]))
+            return syntax(j, *pp, "malformed number: a leading zero");
+    } else if (p < n && is_digit(t[p])) {
+        while (p < n && is_digit(t[p]))
+            p++;
+    } else {
+        goto malformed;
+    }
+    if (p < n && t[p] == '.') {
+        if (++p >= n || !is_digit(t[p]))
+            goto malformed;
+        while (p < n && is_digit(t[p]))
+            p++;
+    }
+    if (p < n && (t[p] == 'e' || t[p] == 'E')) {
+        if (++p < n && (t[p] == '+' || t[p] == '-'))
+            p++;
+        if (p >= n || !is_digit(t[p]))
+            goto malformed;
+        while (p < n && is_digit(t[p]))
+            p++;
+    }
+    *pp = p;
+    return 0;
+malformed:
+    if (p >= n)
+        return syntax(j, *pp, "the file ends inside this number (truncated?)");
+    return syntax(j, *pp, "malformed number");
+}
+
+static int check_value(const struct json *j, size_t *pp, int depth)
+{
+    static const char *const literals[] = {"true", "false", "null"};
+    size_t p = ws(j, *pp), i;
+    char buf[16], c, close;
+
+    if (p >= j->len)
+        return syntax(j, p, "the file ends where a value should be (truncated?)");
+    c = j->text[p];
+    if (c == '"') {
+        if (check_string(j, &p) != 0)
+            return -1;
+    } else if (c == '-' || is_digit(c)) {
+        if (check_number(j, &p) != 0)
+            return -1;
+    } else if (c == 't' || c == 'f' || c == 'n') {
+        const char *lit = literals[c == 't' ? 0 : c == 'f' ? 1 : 2];
+        size_t k = strlen(lit);
+        for (i = 0; i < k; i++)
+            if (p + i >= j->len)
+                return syntax(j, p, "the file ends inside \"%s\" (truncated?)", lit);
+            else if (j->text[p + i] != lit[i])
+                return syntax(j, p, "expected a value, found %s", found(j, p, buf));
+        p += k;
+    } else if (c == '[' || c == '{') {
+        const char *what = c == '[' ? "an array" : "an object";
+        close = c == '[' ? ']' : '}';
+        if (depth >= SHAPE_JSON_MAX_DEPTH)
+            return syntax(j, p, "arrays and objects nest deeper than %d", SHAPE_JSON_MAX_DEPTH);
+        p = ws(j, p + 1);
+        if (p < j->len && j->text[p] == close) {
+            *pp = p + 1;
+            return 0;
+        }
+        for (;;) {
+            if (c == '{') {
+                if (p >= j->len)
+                    return syntax(j, p, "the file ends inside %s (truncated?)", what);
+                if (j->text[p] != '"')
+                    return syntax(j, p, "expected a member name (a string), found %s",
+                                  found(j, p, buf));
+                if (check_string(j, &p) != 0)
+                    return -1;
+                p = ws(j, p);
+                if (p >= j->len)
+                    return syntax(j, p, "the file ends inside %s (truncated?)", what);
+                if (j->text[p++] != ':')
+                    return syntax(j, p - 1, "expected ':' after the member name, found %s",
+                                  found(j, p - 1, buf));
+            }
+            if (check_value(j, &p, depth + 1) != 0)
+                return -1;
+            p = ws(j, p);
+            if (p >= j->len)
+                return syntax(j, p, "the file ends inside %s (truncated?)", what);
+            if (j->text[p] == close)
+                break;
+            if (j->text[p] != ',')
+                return syntax(j, p, "expected ',' or '%c' in %s, found %s", close, what,
+                              found(j, p, buf));
+            p = ws(j, p + 1);
+        }
+        p++;
+    } else {
+        return syntax(j, p, "expected a value, found %s", found(j, p, buf));
+    }
+    *pp = p;
+    return 0;
+}
+
+/* ---- pass 2: the GeoJSON structure, over valid JSON ------------------------------------ */
+
+#define NONE ((size_t)-1)
+enum { M_TYPE, M_COORDINATES, M_GEOMETRY, M_FEATURES, M_GEOMETRIES, M_COUNT };
+static const char *const member_names[M_COUNT] = {"type", "coordinates", "geometry", "features",
+                                                  "geometries"};
+
+static int fail(const struct json *j, const char *where, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+static int fail(const struct json *j, const char *where, const char *fmt, ...)
+{
+    char what[256];
+    va_list ap;
+
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    return shape_fail(j->msg, j->size, j->name, where, "%s", what);
+}
+
+/* The end of the string whose opening quote is at p: the closing quote. */
+static size_t string_end(const struct json *j, size_t p)
+{
+    for (p++; j->text[p] != '"'; p += j->text[p] == '\\' ? 2 : 1)
+        ;
+    return p;
+}
+
+/* The position after the value at p. */
+static size_t skip(const struct json *j, size_t p)
+{
+    int depth = 0;
+
+    do {
+        char c = j->text[p];
+        if (c == '"') {
+            p = string_end(j, p) + 1;
+        } else if (c == '[' || c == '{') {
+            depth++;
+            p++;
+        } else if (c == ']' || c == '}') {
+            depth--;
+            p++;
+        } else if (is_ws(c) || c == ',' || c == ':') {
+            p++;
+        } else { /* a number or a literal */
+            while (p < j->len && !is_ws(j->text[p]) && j->text[p] != ',' && j->text[p] != ']'
+                   && j->text[p] != '}')
+                p++;
+        }
+    } while (depth > 0);
+    return p;
+}
+
+/* The next element after the one ending at p (after blanks and a comma). */
+static size_t next(const struct json *j, size_t p)
+{
+    p = ws(j, p);
+    return j->text[p] == ',' ? ws(j, p + 1) : p;
+}
+
+static const char *kind(char c)
+{
+    return c == '{' ? "an object" : c == '[' ? "an array" : c == '"' ? "a string"
+         : c == 'n' ? "null" : c == 't' || c == 'f' ? "a boolean" : "a number";
+}
+
+/* Where each member of interest of the object at p starts (NONE: absent). */
+static int scan_members(const struct json *j, size_t p, const char *where, size_t at[M_COUNT])
+{
+    size_t k;
+
+    for (k = 0; k < M_COUNT; k++)
+        at[k] = NONE;
+    for (p = ws(j, p + 1); j->text[p] != '}'; p = next(j, skip(j, p))) {
+        size_t k0 = p + 1, k1 = string_end(j, p);
+        p = ws(j, ws(j, k1 + 1) + 1); /* past ':' to the value */
+        for (k = 0; k < M_COUNT; k++)
+            if (k1 - k0 == strlen(member_names[k]) && memcmp(j->text + k0, member_names[k], k1 - k0) == 0) {
+                if (at[k] != NONE)
+                    return fail(j, where, "the member \"%s\" appears twice in one object",
+                                member_names[k]);
+                at[k] = p;
+            }
+    }
+    return 0;
+}
+
+/* The type's value (a string): 0 and its span, or -1 with the message. */
+static int type_of(const struct json *j, const size_t at[M_COUNT], const char *where,
+                   const char *what, const char **s, size_t *n)
+{
+    size_t p = at[M_TYPE];
+
+    if (p == NONE)
+        return fail(j, where, "%s has no \"type\" member", what);
+    if (j->text[p] != '"')
+        return fail(j, where, "\"type\" is %s, not a string", kind(j->text[p]));
+    *s = j->text + p + 1;
+    *n = string_end(j, p) - p - 1;
+    return 0;
+}
+
+static int is(const char *s, size_t n, const char *name)
+{
+    return n == strlen(name) && memcmp(s, name, n) == 0;
+}
+
+/* where, then polygon K (if K > 0) ring J (if J > 0) vertex V (if V > 0). */
+static const char *locate(char *buf, size_t size, const char *where, size_t polygon, size_t ring,
+                          size_t vertex)
+{
+    int n = snprintf(buf, size, "%s", where);
+    if (polygon > 0 && n >= 0 && (size_t)n < size)
+        n += snprintf(buf + n, size - (size_t)n, "%spolygon %zu", n ? " " : "", polygon);
+    if (ring > 0 && n >= 0 && (size_t)n < size)
+        n += snprintf(buf + n, size - (size_t)n, "%sring %zu", n ? " " : "", ring);
+    if (vertex > 0 && n >= 0 && (size_t)n < size)
+        snprintf(buf + n, size - (size_t)n, "%svertex %zu", n ? " " : "", vertex);
+    return buf;
+}
+
+/* The rings of one polygon, an array at p; polygon: its number in a MultiPolygon, or 0. */
+static int walk_rings(const struct json *j, size_t p, const char *where, size_t polygon)
+{
+    const char *t = j->text;
+    char loc[320], buf[64];
+    size_t ring = 0;
+
+    if (t[p] != '[')
+        return fail(j, locate(loc, sizeof loc, where, polygon, 0, 0),
+                    "expected an array of rings, found %s", kind(t[p]));
+    for (p = ws(j, p + 1); t[p] != ']'; p = next(j, p + 1)) {
+        size_t vertex = 0;
+        ring++;
+        if (t[p] != '[')
+            return fail(j, locate(loc, sizeof loc, where, polygon, ring, 0),
+                        "expected an array of positions, found %s", kind(t[p]));
+        for (p = ws(j, p + 1); t[p] != ']'; p = next(j, p + 1)) {
+            size_t q, e = p, k = 0;
+            double xy[2];
+            int rc;
+            vertex++;
+            if (t[p] != '[')
+                return fail(j, locate(loc, sizeof loc, where, polygon, ring, vertex),
+                            "expected a position (an array of 2 or more numbers), found %s",
+                            kind(t[p]));
+            for (q = ws(j, p + 1); t[q] != ']'; q = next(j, e), k++) {
+                if (t[q] != '-' && !is_digit(t[q]))
+                    return fail(j, locate(loc, sizeof loc, where, polygon, ring, vertex),
+                                "a position holds numbers only, found %s", kind(t[q]));
+                e = skip(j, q);
+                if (k < 2 && !isfinite(xy[k] = strtod(t + q, NULL)))
+                    return fail(j, locate(loc, sizeof loc, where, polygon, ring, vertex),
+                                "%s is not a finite number", shape_shown(t + q, e - q, buf));
+            }
+            if (k < 2)
+                return fail(j, locate(loc, sizeof loc, where, polygon, ring, vertex),
+                            "a position needs 2 numbers (x and y), found %zu", k);
+            if ((rc = rb_vertex(j->b, xy[0], xy[1])) != 0)
+                return fail(j, locate(loc, sizeof loc, where, polygon, ring, vertex),
+                            rc == RB_TOOMANY ? "more than %zu vertices in the file"
+                                             : "out of memory (%zu vertices)",
+                            j->b->max_vertices);
+            p = q;
+        }
+        if (vertex < 3)
+            return fail(j, locate(loc, sizeof loc, where, polygon, ring, 0),
+                        "%zu %s, a ring needs at least 3", vertex,
+                        vertex == 1 ? "position" : "positions");
+        if (rb_end_ring(j->b) != 0)
+            return fail(j, where, "out of memory");
+    }
+    return 0;
+}
+
+/* A geometry object at p: a Polygon, a MultiPolygon or a GeometryCollection of those. */
+static int walk_geometry(const struct json *j, size_t p, const char *where)
+{
+    const char *t = j->text, *type;
+    size_t at[M_COUNT], n, k = 0, c;
+    char loc[320], buf[64];
+
+    if (scan_members(j, p, where, at) != 0 || type_of(j, at, where, "the geometry", &type, &n) != 0)
+        return -1;
+    if (is(type, n, "Polygon") || is(type, n, "MultiPolygon")) {
+        int multi = is(type, n, "MultiPolygon");
+        if ((c = at[M_COORDINATES]) == NONE)
+            return fail(j, where, "the %s has no \"coordinates\" member", multi ? "MultiPolygon" : "Polygon");
+        if (!multi)
+            return walk_rings(j, c, where, 0);
+        if (t[c] != '[')
+            return fail(j, where, "\"coordinates\": expected an array of polygons, found %s", kind(t[c]));
+        for (c = ws(j, c + 1); t[c] != ']'; c = next(j, skip(j, c)))
+            if (walk_rings(j, c, where, ++k) != 0)
+                return -1;
+        return 0;
+    }
+    if (is(type, n, "GeometryCollection")) {
+        if ((c = at[M_GEOMETRIES]) == NONE)
+            return fail(j, where, "the GeometryCollection has no \"geometries\" member");
+        if (t[c] != '[')
+            return fail(j, where, "\"geometries\": expected an array, found %s", kind(t[c]));
+        for (c = ws(j, c + 1); t[c] != ']'; c = next(j, skip(j, c))) {
+            snprintf(loc, sizeof loc, "%s%sgeometry %zu", where, where[0] ? " " : "", ++k);
+            if (t[c] != '{')
+                return fail(j, loc, "expected a geometry object, found %s", kind(t[c]));
+            if (walk_geometry(j, c, loc) != 0)
+                return -1;
+        }
+        return 0;
+    }
+    return fail(j, where, "geometry type %s is not a Polygon or MultiPolygon",
+                shape_shown(type, n, buf));
+}
+
+/* A Feature object at p: its geometry's rings (none when the geometry is null). */
+static int walk_feature(const struct json *j, size_t p, const char *where)
+{
+    const char *type;
+    size_t at[M_COUNT], n, g;
+    char buf[64];
+
+    if (scan_members(j, p, where, at) != 0 || type_of(j, at, where, "the feature", &type, &n) != 0)
+        return -1;
+    if (!is(type, n, "Feature"))
+        return fail(j, where, "type %s where a \"Feature\" was expected", shape_shown(type, n, buf));
+    if ((g = at[M_GEOMETRY]) == NONE)
+        return fail(j, where, "the Feature has no \"geometry\" member");
+    if (j->text[g] == 'n')
+        return 0;
+    if (j->text[g] != '{')
+        return fail(j, where, "\"geometry\": expected an object or null, found %s", kind(j->text[g]));
+    return walk_geometry(j, g, where);
+}
+
+int geojson_rings(const char *name, const char *text, size_t len, struct ring_builder *b,
+                  char *msg, size_t size)
+{
+    struct json j;
+    const char *type;
+    size_t p = 0, at[M_COUNT], n, f, k = 0;
+    char where[64], buf[16];
+
+    j.name = name;
+    j.text = text;
+    j.len = len;
+    j.msg = msg;
+    j.size = size;
+    j.b = b;
+    if (check_value(&j, &p, 0) != 0)
+        return -1;
+    if ((p = ws(&j, p)) < len)
+        return syntax(&j, p, "%s after the end of the JSON value", found(&j, p, buf));
+    p = ws(&j, 0); /* the value is an object: shape_files.c saw its '{' */
+    if (scan_members(&j, p, "", at) != 0
+        || type_of(&j, at, "", "the top-level object", &type, &n) != 0)
+        return -1;
+    if (is(type, n, "FeatureCollection")) {
+        if ((f = at[M_FEATURES]) == NONE)
+            return fail(&j, "", "the FeatureCollection has no \"features\" member");
+        if (text[f] != '[')
+            return fail(&j, "", "\"features\": expected an array, found %s", kind(text[f]));
+        for (f = ws(&j, f + 1); text[f] != ']'; f = next(&j, skip(&j, f))) {
+            snprintf(where, sizeof where, "feature %zu", ++k);
+            if (text[f] != '{')
+                return fail(&j, where, "expected a Feature object, found %s", kind(text[f]));
+            if (walk_feature(&j, f, where) != 0)
+                return -1;
+        }
+        if (k == 0)
+            return fail(&j, "", "the FeatureCollection has no features");
+    } else if (is(type, n, "Feature")) {
+        if (walk_feature(&j, p, "") != 0)
+            return -1;
+    } else if (walk_geometry(&j, p, "") != 0) {
+        return -1;
+    }
+    if (b->nrings == 0)
+        return fail(&j, "", "no polygon rings in the file");
+    return 0;
+}
