@@ -265,7 +265,7 @@ check-pkgconfig: all
 # data is in tests/tools/data/), then under Valgrind when it is installed (CK_FORK=no;
 # PDS_TEST_LIGHT=1: 10^5 vertices instead of 10^6) unless TOOLS_VALGRIND=no (check-quick).
 TOOLS_TEST_SRC := tests/tools/shape_files_test.c tests/tools/shape_files_bad.c \
-                  tools/shape_files.c tools/shape_text.c tools/geojson.c
+                  tools/shape_files.c tools/shape_text.c tools/geojson.c tools/json_check.c
 TOOLS_TEST_BIN := $(B)/tests/shape_files
 TOOLS_VALGRIND ?= yes
 $(TOOLS_TEST_BIN): $(TOOLS_TEST_SRC) $(wildcard tests/tools/*.h) tools/shape_files.h \

@@ -1,7 +1,7 @@
 /*
  * shape_files.c - reading a whole file, telling GeoJSON from text, the ring
  * arrays and the messages (see shape_files.h). The formats themselves are in
- * geojson.c (JSON) and shape_text.c (lines).
+ * geojson.c and json_check.c (JSON) and shape_text.c (lines).
  */
 #include "shape_files_internal.h"
 

@@ -5,7 +5,7 @@
  * A polygon file is GeoJSON when its first non-blank character is '{' (a
  * UTF-8 byte-order mark before it is skipped), else plain text:
  *
- *  - GeoJSON (RFC 7946, tools/geojson.c): a Polygon, a MultiPolygon, a
+ *  - GeoJSON (RFC 7946, tools/geojson.c and tools/json_check.c): a Polygon, a MultiPolygon, a
  *    GeometryCollection of those, a Feature whose geometry is one of those,
  *    or a FeatureCollection of such Features. Every ring of every polygon is
  *    kept, in file order, as written (the repeated closing position stays;

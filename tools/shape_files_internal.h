@@ -1,8 +1,9 @@
 /*
- * shape_files_internal.h - what shape_files.c (files), shape_text.c (lines)
- * and geojson.c (JSON) share: the growing ring arrays, the messages, and the readers with
- * their vertex limit as a parameter, so that the tests can reach the limit
- * without a gigabyte file. Not for the program's other files.
+ * shape_files_internal.h - what shape_files.c (files), shape_text.c (lines),
+ * geojson.c and json_check.c (JSON) share: the growing ring arrays, the
+ * messages, the JSON check, and the readers with their vertex limit as a
+ * parameter, so that the tests can reach the limit without a gigabyte file.
+ * Not for the program's other files.
  */
 #ifndef POISSONDISK_SHAPE_FILES_INTERNAL_H
 #define POISSONDISK_SHAPE_FILES_INTERNAL_H
@@ -56,5 +57,9 @@ int text_rings(const char *name, const char *text, size_t len, struct ring_build
                char *msg, size_t size);
 int geojson_rings(const char *name, const char *text, size_t len, struct ring_builder *b,
                   char *msg, size_t size);
+
+/* 0 when text (len bytes) is one JSON value with blanks only around it, else -1 with
+   "NAME: line L column C: WHAT" (json_check.c). */
+int json_check(const char *name, const char *text, size_t len, char *msg, size_t size);
 
 #endif /* POISSONDISK_SHAPE_FILES_INTERNAL_H */
