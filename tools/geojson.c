@@ -75,30 +75,36 @@ static size_t string_end(const struct json *j, size_t p)
     return p;
 }
 
-/* The position after the value at p. */
+/* The bytes that matter when skipping an array or an object of valid JSON. */
+static const unsigned char bracket_or_quote[256] = {['"'] = 1, ['['] = 1, [']'] = 1, ['{'] = 1,
+                                                    ['}'] = 1};
+
+/* The position after the value at p. Inside an array or an object only strings and
+   brackets matter (the text is valid JSON): a tight loop, as every coordinate is
+   skipped this way a few times. */
 static size_t skip(const struct json *j, size_t p)
 {
+    const char *t = j->text;
     int depth = 0;
 
-    do {
-        char c = j->text[p];
-        if (c == '"') {
-            p = string_end(j, p) + 1;
-        } else if (c == '[' || c == '{') {
+    if (t[p] == '"')
+        return string_end(j, p) + 1;
+    if (t[p] != '[' && t[p] != '{') { /* a number or a literal */
+        while (p < j->len && !is_ws(t[p]) && t[p] != ',' && t[p] != ']' && t[p] != '}')
+            p++;
+        return p;
+    }
+    for (;;) {
+        while (!bracket_or_quote[(unsigned char)t[p]])
+            p++;
+        if (t[p] == '"')
+            p = string_end(j, p);
+        else if (t[p] == '[' || t[p] == '{')
             depth++;
-            p++;
-        } else if (c == ']' || c == '}') {
-            depth--;
-            p++;
-        } else if (is_ws(c) || c == ',' || c == ':') {
-            p++;
-        } else { /* a number or a literal */
-            while (p < j->len && !is_ws(j->text[p]) && j->text[p] != ',' && j->text[p] != ']'
-                   && j->text[p] != '}')
-                p++;
-        }
-    } while (depth > 0);
-    return p;
+        else if (--depth == 0)
+            return p + 1;
+        p++;
+    }
 }
 
 /* The next element after the one ending at p (after blanks and a comma). */
@@ -114,8 +120,10 @@ static const char *kind(char c)
          : c == 'n' ? "null" : c == 't' || c == 'f' ? "a boolean" : "a number";
 }
 
-/* Where each member of interest of the object at p starts (NONE: absent). */
-static int scan_members(const struct json *j, size_t p, const char *where, size_t at[M_COUNT])
+/* Where each member of interest of the object at p starts (NONE: absent), and *end,
+   the position after the object. */
+static int scan_members(const struct json *j, size_t p, const char *where, size_t at[M_COUNT],
+                        size_t *end)
 {
     size_t k;
 
@@ -132,6 +140,7 @@ static int scan_members(const struct json *j, size_t p, const char *where, size_
                 at[k] = p;
             }
     }
+    *end = p + 1;
     return 0;
 }
 
@@ -169,8 +178,10 @@ static const char *locate(char *buf, size_t size, const char *where, size_t poly
     return buf;
 }
 
-/* The rings of one polygon, an array at p; polygon: its number in a MultiPolygon, or 0. */
-static int walk_rings(const struct json *j, size_t p, const char *where, size_t polygon)
+/* The rings of one polygon, an array at p; polygon: its number in a MultiPolygon, or 0.
+   *end: the position after the array. */
+static int walk_rings(const struct json *j, size_t p, const char *where, size_t polygon,
+                      size_t *end)
 {
     const char *t = j->text;
     char loc[320], buf[64];
@@ -220,28 +231,31 @@ static int walk_rings(const struct json *j, size_t p, const char *where, size_t 
         if (rb_end_ring(j->b) != 0)
             return fail(j, where, "out of memory");
     }
+    *end = p + 1;
     return 0;
 }
 
-/* A geometry object at p: a Polygon, a MultiPolygon or a GeometryCollection of those. */
-static int walk_geometry(const struct json *j, size_t p, const char *where)
+/* A geometry object at p: a Polygon, a MultiPolygon or a GeometryCollection of those.
+   *end: the position after the object. */
+static int walk_geometry(const struct json *j, size_t p, const char *where, size_t *end)
 {
     const char *t = j->text, *type;
-    size_t at[M_COUNT], n, k = 0, c;
+    size_t at[M_COUNT], n, k = 0, c, e;
     char loc[320], buf[64];
 
-    if (scan_members(j, p, where, at) != 0 || type_of(j, at, where, "the geometry", &type, &n) != 0)
+    if (scan_members(j, p, where, at, end) != 0
+        || type_of(j, at, where, "the geometry", &type, &n) != 0)
         return -1;
     if (is(type, n, "Polygon") || is(type, n, "MultiPolygon")) {
         int multi = is(type, n, "MultiPolygon");
         if ((c = at[M_COORDINATES]) == NONE)
             return fail(j, where, "the %s has no \"coordinates\" member", multi ? "MultiPolygon" : "Polygon");
         if (!multi)
-            return walk_rings(j, c, where, 0);
+            return walk_rings(j, c, where, 0, &e);
         if (t[c] != '[')
             return fail(j, where, "\"coordinates\": expected an array of polygons, found %s", kind(t[c]));
-        for (c = ws(j, c + 1); t[c] != ']'; c = next(j, skip(j, c)))
-            if (walk_rings(j, c, where, ++k) != 0)
+        for (c = ws(j, c + 1); t[c] != ']'; c = next(j, e))
+            if (walk_rings(j, c, where, ++k, &e) != 0)
                 return -1;
         return 0;
     }
@@ -250,11 +264,11 @@ static int walk_geometry(const struct json *j, size_t p, const char *where)
             return fail(j, where, "the GeometryCollection has no \"geometries\" member");
         if (t[c] != '[')
             return fail(j, where, "\"geometries\": expected an array, found %s", kind(t[c]));
-        for (c = ws(j, c + 1); t[c] != ']'; c = next(j, skip(j, c))) {
+        for (c = ws(j, c + 1); t[c] != ']'; c = next(j, e)) {
             snprintf(loc, sizeof loc, "%s%sgeometry %zu", where, where[0] ? " " : "", ++k);
             if (t[c] != '{')
                 return fail(j, loc, "expected a geometry object, found %s", kind(t[c]));
-            if (walk_geometry(j, c, loc) != 0)
+            if (walk_geometry(j, c, loc, &e) != 0)
                 return -1;
         }
         return 0;
@@ -263,14 +277,16 @@ static int walk_geometry(const struct json *j, size_t p, const char *where)
                 shape_shown(type, n, buf));
 }
 
-/* A Feature object at p: its geometry's rings (none when the geometry is null). */
-static int walk_feature(const struct json *j, size_t p, const char *where)
+/* A Feature object at p: its geometry's rings (none when the geometry is null).
+   *end: the position after the object. */
+static int walk_feature(const struct json *j, size_t p, const char *where, size_t *end)
 {
     const char *type;
-    size_t at[M_COUNT], n, g;
+    size_t at[M_COUNT], n, g, e;
     char buf[64];
 
-    if (scan_members(j, p, where, at) != 0 || type_of(j, at, where, "the feature", &type, &n) != 0)
+    if (scan_members(j, p, where, at, end) != 0
+        || type_of(j, at, where, "the feature", &type, &n) != 0)
         return -1;
     if (!is(type, n, "Feature"))
         return fail(j, where, "type %s where a \"Feature\" was expected", shape_shown(type, n, buf));
@@ -280,7 +296,7 @@ static int walk_feature(const struct json *j, size_t p, const char *where)
         return 0;
     if (j->text[g] != '{')
         return fail(j, where, "\"geometry\": expected an object or null, found %s", kind(j->text[g]));
-    return walk_geometry(j, g, where);
+    return walk_geometry(j, g, where, &e);
 }
 
 int geojson_rings(const char *name, const char *text, size_t len, struct ring_builder *b,
@@ -288,7 +304,7 @@ int geojson_rings(const char *name, const char *text, size_t len, struct ring_bu
 {
     struct json j;
     const char *type;
-    size_t p, at[M_COUNT], n, f, k = 0;
+    size_t p, at[M_COUNT], n, f, k = 0, e;
     char where[64];
 
     j.name = name;
@@ -300,7 +316,7 @@ int geojson_rings(const char *name, const char *text, size_t len, struct ring_bu
     if (json_check(name, text, len, msg, size) != 0)
         return -1;
     p = ws(&j, 0); /* the value is an object: shape_files.c saw its '{' */
-    if (scan_members(&j, p, "", at) != 0
+    if (scan_members(&j, p, "", at, &e) != 0
         || type_of(&j, at, "", "the top-level object", &type, &n) != 0)
         return -1;
     if (is(type, n, "FeatureCollection")) {
@@ -308,19 +324,19 @@ int geojson_rings(const char *name, const char *text, size_t len, struct ring_bu
             return fail(&j, "", "the FeatureCollection has no \"features\" member");
         if (text[f] != '[')
             return fail(&j, "", "\"features\": expected an array, found %s", kind(text[f]));
-        for (f = ws(&j, f + 1); text[f] != ']'; f = next(&j, skip(&j, f))) {
+        for (f = ws(&j, f + 1); text[f] != ']'; f = next(&j, e)) {
             snprintf(where, sizeof where, "feature %zu", ++k);
             if (text[f] != '{')
                 return fail(&j, where, "expected a Feature object, found %s", kind(text[f]));
-            if (walk_feature(&j, f, where) != 0)
+            if (walk_feature(&j, f, where, &e) != 0)
                 return -1;
         }
         if (k == 0)
             return fail(&j, "", "the FeatureCollection has no features");
     } else if (is(type, n, "Feature")) {
-        if (walk_feature(&j, p, "") != 0)
+        if (walk_feature(&j, p, "", &e) != 0)
             return -1;
-    } else if (walk_geometry(&j, p, "") != 0) {
+    } else if (walk_geometry(&j, p, "", &e) != 0) {
         return -1;
     }
     if (b->nrings == 0)

@@ -131,8 +131,10 @@ START_TEST(geojson_multipolygon_feature_collection_of_geometries)
     CHECK_TEXT("{\"type\":\"MultiPolygon\",\"coordinates\":[[[[0,0],[1,0],[0,1]]],"
                "[[[5,5],[6,5],[6,6],[5,5]],[[5.2,5.1],[5.8,5.1],[5.8,5.7]]]]}",
                multi, multi_ends);
-    /* "type" and "coordinates" inside properties are not the feature's. */
-    CHECK_TEXT(" \r\n\t{\"type\":\"Feature\",\"properties\":{\"type\":\"x\",\"coordinates\":1},"
+    /* "type" and "coordinates" inside properties are not the feature's; brackets and
+       escaped quotes in skipped strings. */
+    CHECK_TEXT(" \r\n\t{\"type\":\"Feature\",\"properties\":{\"type\":\"x\",\"coordinates\":1,"
+               "\"s\":\"}]\\\"[\\\\\",\"t\":[\"{\"]},"
                "\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[[[1,1],[2,1],[2,2]]]}}\r\n \n",
                feature, feature_ends);
     /* A null geometry adds nothing; an empty GeometryCollection neither; a byte-order mark. */
