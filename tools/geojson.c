@@ -315,7 +315,9 @@ int geojson_rings(const char *name, const char *text, size_t len, struct ring_bu
     j.b = b;
     if (json_check(name, text, len, msg, size) != 0)
         return -1;
-    p = ws(&j, 0); /* the value is an object: shape_files.c saw its '{' */
+    p = ws(&j, 0); /* shape_files.c saw a '{' or a '[' there */
+    if (text[p] == '[')
+        return fail(&j, "", "the file holds a JSON array, not a GeoJSON object");
     if (scan_members(&j, p, "", at, &e) != 0
         || type_of(&j, at, "", "the top-level object", &type, &n) != 0)
         return -1;

@@ -120,14 +120,23 @@ void rb_free(struct ring_builder *b)
     memset(b, 0, sizeof *b);
 }
 
+/* Closes f and frees buf; returns -1. */
+static int slurp_fail(FILE *f, char *buf)
+{
+    free(buf);
+    fclose(f);
+    return -1;
+}
+
 /*
- * Reads the whole file into *text (len bytes, then a '\0'), in doubling
- * chunks (pipes have no size to ask for). 0, or -1 with the message.
+ * Reads the whole file in doubling chunks (a pipe has no size to ask for),
+ * at most max_bytes of it, so that the buffer never grows past max_bytes + 2.
  */
-static int slurp(const char *path, char **text, size_t *len, char *msg, size_t size)
+int shape_slurp(const char *path, size_t max_bytes, char **text, size_t *len, char *msg,
+                size_t size)
 {
     FILE *f = fopen(path, "rb");
-    size_t cap = 1 << 16, n = 0, got;
+    size_t cap = max_bytes < (1 << 16) ? max_bytes + 2 : 1 << 16, n = 0;
     char *buf, *q;
 
     *text = NULL;
@@ -135,36 +144,32 @@ static int slurp(const char *path, char **text, size_t *len, char *msg, size_t s
     if (f == NULL)
         return shape_fail(msg, size, path, NULL, "cannot open: %s", strerror(errno));
     if ((buf = malloc(cap)) == NULL) {
-        fclose(f);
-        return shape_fail(msg, size, path, NULL, "out of memory");
+        shape_fail(msg, size, path, NULL, "out of memory");
+        return slurp_fail(f, buf);
     }
     for (;;) {
-        got = fread(buf + n, 1, cap - 1 - n, f);
-        n += got;
+        n += fread(buf + n, 1, cap - 1 - n, f);
+        if (n > max_bytes) {
+            shape_fail(msg, size, path, NULL, "the file is larger than %zu bytes", max_bytes);
+            return slurp_fail(f, buf);
+        }
         if (n < cap - 1) {
             if (ferror(f)) {
-                int e = errno;
-                free(buf);
-                fclose(f);
-                return shape_fail(msg, size, path, NULL, "read error: %s", strerror(e));
+                shape_fail(msg, size, path, NULL, "read error: %s", strerror(errno));
+                return slurp_fail(f, buf);
             }
             if (feof(f))
                 break;
             continue;
         }
-        if (n >= SHAPE_MAX_FILE_BYTES) {
-            free(buf);
-            fclose(f);
-            return shape_fail(msg, size, path, NULL, "the file is larger than %zu bytes",
-                              SHAPE_MAX_FILE_BYTES);
+        /* Full (so cap <= max_bytes + 1): grow, to max_bytes + 2 at most. */
+        q = realloc(buf, cap > (max_bytes + 2) / 2 ? max_bytes + 2 : 2 * cap);
+        if (q == NULL) {
+            shape_fail(msg, size, path, NULL, "out of memory after %zu bytes", n);
+            return slurp_fail(f, buf);
         }
-        if ((q = realloc(buf, 2 * cap)) == NULL) {
-            free(buf);
-            fclose(f);
-            return shape_fail(msg, size, path, NULL, "out of memory after %zu bytes", n);
-        }
+        cap = cap > (max_bytes + 2) / 2 ? max_bytes + 2 : 2 * cap;
         buf = q;
-        cap *= 2;
     }
     fclose(f);
     buf[n] = '\0';
@@ -187,10 +192,15 @@ int shape_rings_parse_limit(const char *name, const char *text, size_t len, size
         text += 3;
         len -= 3;
     }
+    if (len >= 2 && ((text[0] == '\xff' && text[1] == '\xfe') || (text[0] == '\xfe' && text[1] == '\xff')))
+        return shape_fail(msg, size, name, NULL, "the file is UTF-16 (it starts with its "
+                          "byte-order mark): save it as UTF-8");
     for (i = 0; i < len && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n');)
         i++;
-    rc = i < len && text[i] == '{' ? geojson_rings(name, text, len, &b, msg, size)
-                                   : text_rings(name, text, len, &b, msg, size);
+    /* '[' cannot start a text line either: JSON, refused there as no GeoJSON object. */
+    rc = i < len && (text[i] == '{' || text[i] == '[')
+             ? geojson_rings(name, text, len, &b, msg, size)
+             : text_rings(name, text, len, &b, msg, size);
     if (rc != 0) {
         rb_free(&b);
         return -1;
@@ -212,7 +222,7 @@ int shape_rings_read(const char *path, struct shape_rings *out, char *msg, size_
     int rc;
 
     memset(out, 0, sizeof *out);
-    if (slurp(path, &text, &len, msg, size) != 0)
+    if (shape_slurp(path, SHAPE_MAX_FILE_BYTES, &text, &len, msg, size) != 0)
         return -1;
     rc = shape_rings_parse(path, text, len, out, msg, size);
     free(text);
@@ -239,7 +249,7 @@ int fixed_points_read(const char *path, struct fixed_points *out, char *msg, siz
     int rc;
 
     memset(out, 0, sizeof *out);
-    if (slurp(path, &text, &len, msg, size) != 0)
+    if (shape_slurp(path, SHAPE_MAX_FILE_BYTES, &text, &len, msg, size) != 0)
         return -1;
     rc = fixed_points_parse(path, text, len, out, msg, size);
     free(text);

@@ -46,6 +46,11 @@ int shape_fail(char *msg, size_t size, const char *name, const char *where, cons
    to about 40 characters with "...". Returns buf. */
 const char *shape_shown(const char *s, size_t len, char buf[64]);
 
+/* Reads the file at path into *text (len bytes and a '\0'; free it): 0, or -1 with the
+   message (it cannot be opened or read, holds more than max_bytes, out of memory). */
+int shape_slurp(const char *path, size_t max_bytes, char **text, size_t *len, char *msg,
+                size_t size);
+
 /* The readers, with the limit on vertices (or points) given. */
 int shape_rings_parse_limit(const char *name, const char *text, size_t len, size_t max_vertices,
                             struct shape_rings *out, char *msg, size_t size);

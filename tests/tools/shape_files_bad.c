@@ -95,6 +95,10 @@ static const struct bad bad_geojson[] = {
     {"{\"type\":\"GeometryCollection\"}", {"has no \"geometries\" member"}},
     {"{\"type\":\"Feature\",\"geometry\":{\"type\":\"Poly\\u0067on\",\"coordinates\":[]}}",
      {"geometry type \"Poly\\x5cu0067on\" is not a Polygon"}},
+    {"[" POLY("[" TRI "]") "]", {"the file holds a JSON array, not a GeoJSON object"}},
+    {" [1, 2]", {"a JSON array, not a GeoJSON object"}},
+    {"\xff\xfe{", {"the file is UTF-16", "save it as UTF-8"}},
+    {"\xfe\xff", {"the file is UTF-16"}},
     /* neither: blank and empty files are text */
     {"", {"no vertices"}},
     {" \n\t\r\n", {"no vertices"}},
@@ -192,6 +196,33 @@ START_TEST(nul_bytes_and_small_messages)
         ck_assert_int_eq(msg[i], 'x');
     ck_assert_int_eq(shape_rings_parse("none", poly, strlen(poly) - 1, &r, NULL, 0), -1);
     assert_rings_empty(&r, "no message buffer");
+}
+END_TEST
+
+/* 64 nested arrays and objects pass the syntax check, 65 do not. */
+START_TEST(nesting_limit)
+{
+    static const char *const within[] = {"has no \"type\" member", NULL, NULL};
+    static const char *const beyond[] = {"line 1 column 69: arrays and objects nest deeper than 64",
+                                         NULL, NULL};
+    char text[256];
+    size_t k, n = 0;
+
+    n += (size_t)sprintf(text + n, "{\"a\":");
+    for (k = 0; k < 63; k++)
+        text[n++] = '[';
+    for (k = 0; k < 63; k++)
+        text[n++] = ']';
+    text[n++] = '}';
+    assert_refused(RINGS, "depth", text, n, within);
+    n = 0;
+    n += (size_t)sprintf(text + n, "{\"a\":");
+    for (k = 0; k < 64; k++)
+        text[n++] = '[';
+    for (k = 0; k < 64; k++)
+        text[n++] = ']';
+    text[n++] = '}';
+    assert_refused(RINGS, "depth", text, n, beyond);
 }
 END_TEST
 
@@ -325,6 +356,7 @@ Suite *shape_files_bad_suite(void)
     tcase_add_test(tc, geojson_errors);
     tcase_add_test(tc, text_errors);
     tcase_add_test(tc, nul_bytes_and_small_messages);
+    tcase_add_test(tc, nesting_limit);
     tcase_add_test(tc, vertex_limit);
     suite_add_tcase(s, tc);
     tc = tcase_create("robustness");

@@ -237,6 +237,40 @@ START_TEST(unreadable_files)
 }
 END_TEST
 
+/* The size limit, through the reading itself: a file of exactly the limit is read,
+   one byte more is refused, across the doubling of the buffer too (the file is cut
+   shorter each time). */
+START_TEST(file_size_limit)
+{
+    static const size_t sizes[] = {200000, 65537, 65536, 65535, 65534, 100, 99, 1, 0};
+    char path[] = "/tmp/shape_files_test_XXXXXX", msg[256], *text;
+    size_t i, k, len;
+    int fd = mkstemp(path);
+    FILE *f;
+
+    ck_assert_msg(fd >= 0, "mkstemp: %s", strerror(errno));
+    ck_assert_ptr_nonnull(f = fdopen(fd, "wb"));
+    for (i = 0; i < 200000; i++)
+        putc('0' + (int)(i % 10), f);
+    ck_assert_int_eq(fclose(f), 0);
+    for (k = 0; k < COUNT(sizes); k++) {
+        ck_assert_msg(truncate(path, (off_t)sizes[k]) == 0, "truncate: %s", strerror(errno));
+        ck_assert_msg(shape_slurp(path, sizes[k], &text, &len, msg, sizeof msg) == 0, "%s", msg);
+        ck_assert_msg(len == sizes[k] && text[len] == '\0', "%zu bytes read of %zu", len, sizes[k]);
+        for (i = 0; i < len; i++)
+            ck_assert_int_eq(text[i], '0' + (int)(i % 10));
+        free(text);
+        if (sizes[k] == 0)
+            continue;
+        ck_assert_int_eq(shape_slurp(path, sizes[k] - 1, &text, &len, msg, sizeof msg), -1);
+        ck_assert_msg(text == NULL && len == 0, "a refused file left text");
+        assert_message(msg, path, "a file over the limit");
+        ck_assert_msg(strstr(msg, "the file is larger than") != NULL, "%s", msg);
+    }
+    remove(path);
+}
+END_TEST
+
 /* big vertices in rings of 1000: vertex i is (i, i % 1000 + 0.5), all exact. */
 static void assert_big(const struct shape_rings *r, size_t big, const char *what)
 {
@@ -298,6 +332,7 @@ static Suite *shape_files_suite(void)
     tcase_add_test(tc, text_forms);
     tcase_add_test(tc, fixed_forms);
     tcase_add_test(tc, unreadable_files);
+    tcase_add_test(tc, file_size_limit);
     suite_add_tcase(s, tc);
     tc = tcase_create("size");
     tcase_set_timeout(tc, 60);
