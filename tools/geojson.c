@@ -133,7 +133,8 @@ static int scan_members(const struct json *j, size_t p, const char *where, size_
         size_t k0 = p + 1, k1 = string_end(j, p);
         p = ws(j, ws(j, k1 + 1) + 1); /* past ':' to the value */
         for (k = 0; k < M_COUNT; k++)
-            if (k1 - k0 == strlen(member_names[k]) && memcmp(j->text + k0, member_names[k], k1 - k0) == 0) {
+            if (k1 - k0 == strlen(member_names[k])
+                && memcmp(j->text + k0, member_names[k], k1 - k0) == 0) {
                 if (at[k] != NONE)
                     return fail(j, where, "the member \"%s\" appears twice in one object",
                                 member_names[k]);
@@ -249,11 +250,13 @@ static int walk_geometry(const struct json *j, size_t p, const char *where, size
     if (is(type, n, "Polygon") || is(type, n, "MultiPolygon")) {
         int multi = is(type, n, "MultiPolygon");
         if ((c = at[M_COORDINATES]) == NONE)
-            return fail(j, where, "the %s has no \"coordinates\" member", multi ? "MultiPolygon" : "Polygon");
+            return fail(j, where, "the %s has no \"coordinates\" member",
+                        multi ? "MultiPolygon" : "Polygon");
         if (!multi)
             return walk_rings(j, c, where, 0, &e);
         if (t[c] != '[')
-            return fail(j, where, "\"coordinates\": expected an array of polygons, found %s", kind(t[c]));
+            return fail(j, where, "\"coordinates\": expected an array of polygons, found %s",
+                        kind(t[c]));
         for (c = ws(j, c + 1); t[c] != ']'; c = next(j, e))
             if (walk_rings(j, c, where, ++k, &e) != 0)
                 return -1;
@@ -289,13 +292,15 @@ static int walk_feature(const struct json *j, size_t p, const char *where, size_
         || type_of(j, at, where, "the feature", &type, &n) != 0)
         return -1;
     if (!is(type, n, "Feature"))
-        return fail(j, where, "type %s where a \"Feature\" was expected", shape_shown(type, n, buf));
+        return fail(j, where, "type %s where a \"Feature\" was expected",
+                    shape_shown(type, n, buf));
     if ((g = at[M_GEOMETRY]) == NONE)
         return fail(j, where, "the Feature has no \"geometry\" member");
     if (j->text[g] == 'n')
         return 0;
     if (j->text[g] != '{')
-        return fail(j, where, "\"geometry\": expected an object or null, found %s", kind(j->text[g]));
+        return fail(j, where, "\"geometry\": expected an object or null, found %s",
+                    kind(j->text[g]));
     return walk_geometry(j, g, where, &e);
 }
 

@@ -120,6 +120,21 @@ void rb_free(struct ring_builder *b)
     memset(b, 0, sizeof *b);
 }
 
+int shape_unicode_start(const char *name, const char **text, size_t *len, char *msg,
+                        size_t size)
+{
+    const unsigned char *t = (const unsigned char *)*text;
+
+    if (*len >= 2 && ((t[0] == 0xff && t[1] == 0xfe) || (t[0] == 0xfe && t[1] == 0xff)))
+        return shape_fail(msg, size, name, NULL, "the file is UTF-16 (it starts with its "
+                          "byte-order mark): save it as UTF-8");
+    if (*len >= 3 && t[0] == 0xef && t[1] == 0xbb && t[2] == 0xbf) {
+        *text += 3;
+        *len -= 3;
+    }
+    return 0;
+}
+
 /* Closes f and frees buf; returns -1. */
 static int slurp_fail(FILE *f, char *buf)
 {
@@ -188,14 +203,9 @@ int shape_rings_parse_limit(const char *name, const char *text, size_t len, size
     memset(out, 0, sizeof *out);
     memset(&b, 0, sizeof b);
     b.max_vertices = max_vertices;
-    if (len >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0) { /* a UTF-8 byte-order mark */
-        text += 3;
-        len -= 3;
-    }
-    if (len >= 2 && ((text[0] == '\xff' && text[1] == '\xfe') || (text[0] == '\xfe' && text[1] == '\xff')))
-        return shape_fail(msg, size, name, NULL, "the file is UTF-16 (it starts with its "
-                          "byte-order mark): save it as UTF-8");
-    for (i = 0; i < len && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n');)
+    if (shape_unicode_start(name, &text, &len, msg, size) != 0)
+        return -1;
+    for (i = 0; i < len && strchr(" \t\r\n", text[i]) != NULL && text[i] != '\0';)
         i++;
     /* '[' cannot start a text line either: JSON, refused there as no GeoJSON object. */
     rc = i < len && (text[i] == '{' || text[i] == '[')

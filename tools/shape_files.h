@@ -2,12 +2,15 @@
  * shape_files.h - read the polygon and fixed-point files of --polygon and
  * --fixed, so that the poissondisk program needs no JSON or GIS library.
  *
- * A polygon file is GeoJSON when its first non-blank character is '{' (a
- * UTF-8 byte-order mark before it is skipped), else plain text:
+ * Both are UTF-8 or ASCII text: a UTF-8 byte-order mark at the start is
+ * skipped, a UTF-16 one refused. A polygon file is GeoJSON when its first
+ * non-blank character is '{' ('[' too, then refused: GeoJSON is an object),
+ * else plain text:
  *
- *  - GeoJSON (RFC 7946, tools/geojson.c and tools/json_check.c): a Polygon, a MultiPolygon, a
- *    GeometryCollection of those, a Feature whose geometry is one of those,
- *    or a FeatureCollection of such Features. Every ring of every polygon is
+ *  - GeoJSON (RFC 7946; tools/geojson.c, tools/json_check.c): a Polygon, a
+ *    MultiPolygon, a GeometryCollection of those, a Feature whose geometry
+ *    is one of those, or a FeatureCollection of such Features. Every ring
+ *    of every polygon is
  *    kept, in file order, as written (the repeated closing position stays;
  *    outer rings and holes are not told apart: the rings combine by the
  *    even-odd rule). A position's elements past x and y (altitude) must be
@@ -34,14 +37,14 @@
  *   "polygon K ring J vertex V" ("ring J vertex V" in a Polygon) for the
  *   GeoJSON structure,
  * then what is wrong. The errors: a file that cannot be opened or read (with
- * strerror), a file over SHAPE_MAX_FILE_BYTES, out of memory;
+ * strerror), a file over SHAPE_MAX_FILE_BYTES, UTF-16, out of memory;
  *  - polygon text: a line that is not exactly two finite numbers; no vertex;
  *  - GeoJSON syntax: anything that is not one strict RFC 8259 value (bad
  *    escape, raw control character in a string, malformed number or
  *    literal, a missing ',' ':' ']' or '}'), the file ending inside it, more
  *    than SHAPE_JSON_MAX_DEPTH nested arrays and objects, anything but
  *    blanks after it;
- *  - GeoJSON structure: a missing or non-string "type"; a member among the
+ *  - GeoJSON structure: a top-level array; a missing or non-string "type"; a member among the
  *    five above given twice in one object; a geometry that is not a
  *    Polygon, MultiPolygon or GeometryCollection (its type named); missing
  *    or non-array "coordinates", "geometries" or "features"; a feature that

@@ -46,6 +46,11 @@ int shape_fail(char *msg, size_t size, const char *name, const char *where, cons
    to about 40 characters with "...". Returns buf. */
 const char *shape_shown(const char *s, size_t len, char buf[64]);
 
+/* Skips a UTF-8 byte-order mark at *text (*len bytes): 0; -1 with the message when
+   the text starts with a UTF-16 one. */
+int shape_unicode_start(const char *name, const char **text, size_t *len, char *msg,
+                        size_t size);
+
 /* Reads the file at path into *text (len bytes and a '\0'; free it): 0, or -1 with the
    message (it cannot be opened or read, holds more than max_bytes, out of memory). */
 int shape_slurp(const char *path, size_t max_bytes, char **text, size_t *len, char *msg,

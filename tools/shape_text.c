@@ -49,6 +49,13 @@ static size_t split_line(const char *text, size_t len, size_t pos, struct line *
     return pos < len ? pos + 1 : pos;
 }
 
+/* "line N" in buf, for a message (written only then: formatting costs more than reading). */
+static const char *at_line(char buf[32], size_t lineno)
+{
+    snprintf(buf, 32, "line %zu", lineno);
+    return buf;
+}
+
 /* Column k of line lineno as a finite number: 0 and *v, or -1 with the message. */
 static int column_number(const char *name, const char *text, const struct line *l, size_t k,
                          size_t lineno, double *v, char *msg, size_t size)
@@ -59,20 +66,17 @@ static int column_number(const char *name, const char *text, const struct line *
     size_t n = l->end[k] - l->start[k];
 
     *v = strtod(s, &end);
-    if (end != s + n) {
-        snprintf(where, sizeof where, "line %zu", lineno);
-        return shape_fail(msg, size, name, where, "%s is not a number", shape_shown(s, n, buf));
-    }
-    if (!isfinite(*v)) {
-        snprintf(where, sizeof where, "line %zu", lineno);
-        return shape_fail(msg, size, name, where, "%s is not a finite number",
+    if (end != s + n)
+        return shape_fail(msg, size, name, at_line(where, lineno), "%s is not a number",
                           shape_shown(s, n, buf));
-    }
+    if (!isfinite(*v))
+        return shape_fail(msg, size, name, at_line(where, lineno), "%s is not a finite number",
+                          shape_shown(s, n, buf));
     return 0;
 }
 
 int text_rings(const char *name, const char *text, size_t len, struct ring_builder *b,
-                      char *msg, size_t size)
+               char *msg, size_t size)
 {
     size_t pos = 0, lineno = 0;
     struct line l;
@@ -88,18 +92,18 @@ int text_rings(const char *name, const char *text, size_t len, struct ring_build
                 return shape_fail(msg, size, name, NULL, "out of memory");
             continue;
         }
-        snprintf(where, sizeof where, "line %zu", lineno);
         if (l.ncols != 2)
-            return shape_fail(msg, size, name, where, "expected 2 numbers \"x y\", found %zu %s",
-                              l.ncols, l.ncols == 1 ? "column" : "columns");
+            return shape_fail(msg, size, name, at_line(where, lineno),
+                              "expected 2 numbers \"x y\", found %zu %s", l.ncols,
+                              l.ncols == 1 ? "column" : "columns");
         if (column_number(name, text, &l, 0, lineno, &x, msg, size) != 0
             || column_number(name, text, &l, 1, lineno, &y, msg, size) != 0)
             return -1;
         if ((rc = rb_vertex(b, x, y)) != 0)
-            return rc == RB_TOOMANY
-                       ? shape_fail(msg, size, name, where, "more than %zu vertices",
-                                    b->max_vertices)
-                       : shape_fail(msg, size, name, where, "out of memory");
+            return shape_fail(msg, size, name, at_line(where, lineno),
+                              rc == RB_TOOMANY ? "more than %zu vertices"
+                                               : "out of memory after %zu vertices",
+                              rc == RB_TOOMANY ? b->max_vertices : b->nvertices);
     }
     if (rb_end_ring(b) != 0)
         return shape_fail(msg, size, name, NULL, "out of memory");
@@ -117,16 +121,18 @@ int fixed_points_parse_limit(const char *name, const char *text, size_t len, siz
     char where[32], buf[64];
 
     memset(out, 0, sizeof *out);
+    if (shape_unicode_start(name, &text, &len, msg, size) != 0)
+        return -1;
     while (pos < len) {
         double x, y, c = 0;
         pos = split_line(text, len, pos, &l);
         lineno++;
         if (l.ncols == 0)
             continue;
-        snprintf(where, sizeof where, "line %zu", lineno);
         if (l.ncols != 2 && l.ncols != 3) {
-            shape_fail(msg, size, name, where, "expected \"x y\" or \"x y clearance\", found %zu %s",
-                       l.ncols, l.ncols == 1 ? "column" : "columns");
+            shape_fail(msg, size, name, at_line(where, lineno),
+                       "expected \"x y\" or \"x y clearance\", found %zu %s", l.ncols,
+                       l.ncols == 1 ? "column" : "columns");
             goto fail;
         }
         if (column_number(name, text, &l, 0, lineno, &x, msg, size) != 0
@@ -134,12 +140,14 @@ int fixed_points_parse_limit(const char *name, const char *text, size_t len, siz
             || (l.ncols == 3 && column_number(name, text, &l, 2, lineno, &c, msg, size) != 0))
             goto fail;
         if (l.ncols == 3 && !(c > 0)) {
-            shape_fail(msg, size, name, where, "the clearance %s is not > 0 (leave it out for "
-                       "the default)", shape_shown(text + l.start[2], l.end[2] - l.start[2], buf));
+            shape_fail(msg, size, name, at_line(where, lineno),
+                       "the clearance %s is not > 0 (leave it out for the default)",
+                       shape_shown(text + l.start[2], l.end[2] - l.start[2], buf));
             goto fail;
         }
         if (n >= max_points) {
-            shape_fail(msg, size, name, where, "more than %zu points", max_points);
+            shape_fail(msg, size, name, at_line(where, lineno), "more than %zu points",
+                       max_points);
             goto fail;
         }
         if (n == cap) {
@@ -149,7 +157,7 @@ int fixed_points_parse_limit(const char *name, const char *text, size_t len, siz
                 xy = p;
             q = p == NULL ? NULL : realloc(clearance, cap2 * sizeof *clearance);
             if (q == NULL) {
-                shape_fail(msg, size, name, where, "out of memory");
+                shape_fail(msg, size, name, at_line(where, lineno), "out of memory");
                 goto fail;
             }
             clearance = q;

@@ -115,6 +115,7 @@ static const struct bad bad_text[] = {
     {"0 0\n\n# c\n-nan 1", {"line 4: \"-nan\" is not a finite number"}},
     {"# only a comment\n\n", {"no vertices"}},
     {"1 2\n3 \x01\n", {"line 2: \"\\x01\" is not a number"}},
+    {"\xfe\xff\0" "1", {"the file is UTF-16"}},
 };
 
 static const struct bad bad_fixed[] = {
@@ -127,6 +128,7 @@ static const struct bad bad_fixed[] = {
     {"1 2 1e999\n", {"\"1e999\" is not a finite number"}},
     {"1 e 3\n", {"line 1: \"e\" is not a number"}},
     {"1e400 2\n", {"line 1: \"1e400\" is not a finite number"}},
+    {"\xff\xfe" "1\0 2\0", {"the file is UTF-16"}},
 };
 
 enum kind { RINGS, FIXED };

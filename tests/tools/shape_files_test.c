@@ -178,7 +178,8 @@ START_TEST(text_forms)
 
     CHECK_FILE(DATA "rings.txt", xy, ends);
     CHECK_TEXT("0 0\r\n1 0\r\n1 1\r\n\r\n\r\n# c\r\n2 2\r\n -3E-2\t2 #\r\n2 3", crlf, crlf_ends);
-    CHECK_TEXT("\n\n# leading blank lines\n0 0\n# not a separator\n1 0\n1 1\n\n\n", one, one_ends);
+    CHECK_TEXT("\xef\xbb\xbf\n\n# leading blank lines\n0 0\n# not a separator\n1 0\n1 1\n\n\n", one,
+               one_ends);
 }
 END_TEST
 
@@ -201,8 +202,9 @@ START_TEST(fixed_forms)
                       "expected %.17g", i + 1, p.clearance[i], clearance[i]);
     fixed_points_free(&p);
     ck_assert_ptr_null(p.xy);
-    ck_assert_msg(fixed_points_parse("crlf", "1 2\r\n3 4 5\r\n", 12, &p, msg, sizeof msg) == 0,
-                  "%s", msg);
+    /* CRLF, and a UTF-8 byte-order mark. */
+    ck_assert_msg(fixed_points_parse("crlf", "\xef\xbb\xbf" "1 2\r\n3 4 5\r\n", 15, &p, msg,
+                                     sizeof msg) == 0, "%s", msg);
     ck_assert_msg(p.n == 2 && p.xy[3] == 4 && p.clearance[0] == 0 && p.clearance[1] == 5,
                   "CRLF fixed points read wrong");
     fixed_points_free(&p);
