@@ -5,7 +5,7 @@
 #                   draw the gallery in build/gallery/ (make gallery: into docs/)
 #   make check      install what the tests need (Debian, as root), then run them all,
 #                   and the same suites again under Valgrind memcheck
-#   make check-quick  the unit, API and CLI suites (heavy loops shrunk), check-header and
+#   make check-quick  the unit, API, CLI and tools suites (heavy loops shrunk), check-header and
 #                   check-layers: no Valgrind, fuzzing, Python, alloc or sanitizers, and
 #                   nothing installed; about a minute on an idle machine
 #   make bench      benchmark figures against two baselines (not assertions);
@@ -87,7 +87,8 @@ CHECK_LIBS = $$(pkg-config --libs check)
 .PHONY: all demo check check-quick bench install uninstall clean deps abi-baseline \
         check-layers check-unit check-api check-header check-symbols check-abi check-man \
         check-examples check-python check-pkgconfig check-cli check-valgrind \
-        bench-quick bench-phases check-bench check-threads check-sanitizers check-asan check-tsan
+        bench-quick bench-phases check-bench check-threads check-sanitizers check-asan check-tsan \
+        check-tools
 
 all: $(LIB_SO) $(B)/libpoissondisk.so $(B)/$(SONAME) $(LIB_A) $(CLI)
 
@@ -180,8 +181,8 @@ deps:
 
 check: deps all
 	@$(MAKE) --no-print-directory check-header check-layers check-symbols check-abi check-unit \
-	    check-api check-threads check-examples check-cli check-bench check-python check-pkgconfig \
-	    check-man check-js check-valgrind check-fuzz check-alloc
+	    check-api check-threads check-examples check-cli check-tools check-bench check-python \
+	    check-pkgconfig check-man check-js check-valgrind check-fuzz check-alloc
 	@echo "make check: all checks passed"
 
 # check-quick: what a change is checked with before make check. The Check suites run
@@ -197,6 +198,7 @@ check-quick:
 	PDS_TEST_LIGHT=1 $(UNIT_BIN)
 	PDS_TEST_LIGHT=1 $(API_BIN)
 	@$(MAKE) --no-print-directory check-cli
+	@$(MAKE) --no-print-directory check-tools TOOLS_VALGRIND=no
 	@echo "make check-quick: passed (make check runs the full loops and the rest)"
 
 $(UNIT_BIN): $(UNIT_SRC) $(CORE_OBJ) $(wildcard tests/unit/*.hpp)
@@ -257,6 +259,27 @@ check-python: $(LIB_SO) $(B)/$(SONAME)
 
 check-pkgconfig: all
 	sh tests/check-pkgconfig.sh
+
+# check-tools: the program's file readers that need no library (tools/shape_files.h: the
+# polygon and fixed-point files), tested on their own from the top of the repository (the
+# data is in tests/tools/data/), then under Valgrind when it is installed (CK_FORK=no;
+# PDS_TEST_LIGHT=1: 10^5 vertices instead of 10^6) unless TOOLS_VALGRIND=no (check-quick).
+TOOLS_TEST_SRC := tests/tools/shape_files_test.c tests/tools/shape_files_bad.c \
+                  tools/shape_files.c tools/shape_text.c tools/geojson.c tools/json_check.c
+TOOLS_TEST_BIN := $(B)/tests/shape_files
+TOOLS_VALGRIND ?= yes
+$(TOOLS_TEST_BIN): $(TOOLS_TEST_SRC) $(wildcard tests/tools/*.h) tools/shape_files.h \
+                   tools/shape_files_internal.h
+	@mkdir -p $(@D)
+	$(CC) $(PDS_TEST_CFLAGS) $(CFLAGS) -Itools -o $@ $(TOOLS_TEST_SRC) $(CHECK_LIBS) -lm
+
+check-tools: $(TOOLS_TEST_BIN)
+	$(TOOLS_TEST_BIN)
+	@if [ "$(TOOLS_VALGRIND)" = no ]; then :; \
+	elif command -v $(VALGRIND) > /dev/null 2>&1; then \
+	    echo "CK_FORK=no PDS_TEST_LIGHT=1 $(VALGRIND) $(VALGRIND_FLAGS) $(TOOLS_TEST_BIN)"; \
+	    CK_FORK=no PDS_TEST_LIGHT=1 $(VALGRIND) $(VALGRIND_FLAGS) $(TOOLS_TEST_BIN); \
+	else echo "check-tools: $(VALGRIND) not found, the run under Valgrind is skipped"; fi
 
 VALGRIND_FLAGS := --error-exitcode=99 --leak-check=full --show-leak-kinds=all \
                   --errors-for-leak-kinds=all --track-origins=yes -q
