@@ -29,6 +29,7 @@ Suite* torus_suite();
 Suite* rectangle_suite();
 Suite* progress_suite();
 Suite* polygon_suite();
+Suite* polygon_domain_suite();
 
 // Under Valgrind (PDS_TEST_LIGHT set) loops shrink; every behaviour still runs.
 inline bool test_light() { return std::getenv("PDS_TEST_LIGHT") != nullptr; }

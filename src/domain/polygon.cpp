@@ -1,0 +1,104 @@
+// polygon.cpp - see polygon.hpp.
+#include "domain/polygon.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pds {
+
+namespace {
+
+// The side of ring k the inside lies on: +1 left, -1 right, 0 when no edge
+// tells (both sides alike at every edge tried: the ring is cancelled by
+// another, or rings crowd it closer than the probe's offset).
+int inside_side(const PolygonRings& rings, const PolygonIndex& index, std::size_t k) {
+    // The offset is 2^-20 of the edge's length: far below any feature a
+    // sampled pattern can resolve, far above rounding.
+    constexpr double kOffset = 0x1p-20;
+    for (std::size_t i = rings.ring_begin(k); i < rings.ring_begin(k + 1); ++i) {
+        const Point a = rings.edge_start(i), b = rings.edge_end(i);
+        const Point m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+        const Point normal{-(b.y - a.y) * kOffset, (b.x - a.x) * kOffset};  // to the left
+        const PolygonIndex::Place left = index.locate(Point{m.x + normal.x, m.y + normal.y});
+        const PolygonIndex::Place right = index.locate(Point{m.x - normal.x, m.y - normal.y});
+        if (left == PolygonIndex::kInside && right == PolygonIndex::kOutside) return 1;
+        if (left == PolygonIndex::kOutside && right == PolygonIndex::kInside) return -1;
+    }
+    return 0;
+}
+
+// The ring's shoelace area, positive when counterclockwise (about its first
+// vertex, to keep the products small).
+double signed_area(const PolygonRings& rings, std::size_t k) {
+    const Point o = rings.points()[rings.ring_begin(k)];
+    double twice = 0.0;
+    for (std::size_t i = rings.ring_begin(k); i < rings.ring_begin(k + 1); ++i) {
+        const Point a = rings.edge_start(i), b = rings.edge_end(i);
+        twice += (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    }
+    return 0.5 * twice;
+}
+
+}  // namespace
+
+Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rings)
+    : rings_(std::make_unique<PolygonRings>(xy, ring_ends, rings)),
+      index_(std::make_unique<PolygonIndex>(*rings_)),
+      perimeter_(rings_->perimeter()) {
+    bool any_side = false;
+    for (std::size_t k = 0; k < rings_->rings(); ++k) {
+        const int side = inside_side(*rings_, *index_, k);
+        any_side = any_side || side != 0;
+        area_ += side * signed_area(*rings_, k);
+    }
+    if (!any_side || !(area_ > 0.0)) throw DomainError("the outline encloses nothing by the even-odd rule");
+    for (std::size_t r = 0; r < index_->rows(); ++r)
+        for (std::size_t c = 0; c < index_->columns(); ++c)
+            if (index_->cell_place(c, r) != PolygonIndex::kOutside) candidate_cells_.push_back(r * index_->columns() + c);
+}
+
+double Polygon::diameter() const {
+    const Box& b = bounds();
+    return std::sqrt(b.width() * b.width() + b.height() * b.height());  // a bound: the box's diagonal
+}
+
+double Polygon::largest_magnitude() const {
+    const Box& b = bounds();
+    return std::max(std::max(std::fabs(b.x0), std::fabs(b.x1)), std::max(std::fabs(b.y0), std::fabs(b.y1)));
+}
+
+double Polygon::count_bound(double r) const {
+    const double rho = 0.5 * r;
+    const double disk = M_PI * rho * rho;
+    const double reach = area_ + 2.0 * rho * perimeter_ + static_cast<double>(rings_->vertices()) * disk;
+    return reach / disk * (1.0 + 1e-9) + 1.0;  // the margin covers the rounding of the sums
+}
+
+Point Polygon::uniform_point(Rng& rng) const {
+    const Box& b = bounds();
+    const double cell_w = b.width() / static_cast<double>(index_->columns());
+    const double cell_h = b.height() / static_cast<double>(index_->rows());
+    const double n = static_cast<double>(candidate_cells_.size());
+    for (;;) {
+        const auto pick = std::min(candidate_cells_.size() - 1, static_cast<std::size_t>(rng.next_double() * n));
+        const std::size_t cell = candidate_cells_[pick];
+        const double col = static_cast<double>(cell % index_->columns());
+        const double row = static_cast<double>(cell / index_->columns());
+        const Point p{b.x0 + (col + rng.next_double()) * cell_w, b.y0 + (row + rng.next_double()) * cell_h};
+        if (contains(p)) return p;
+    }
+}
+
+Polygon Polygon::scaled(int k) const {
+    std::vector<double> xy;
+    xy.reserve(2 * rings_->vertices());
+    for (const Point& p : rings_->points()) {
+        xy.push_back(std::ldexp(p.x, k));
+        xy.push_back(std::ldexp(p.y, k));
+    }
+    std::vector<std::size_t> ends;
+    for (std::size_t r = 0; r < rings_->rings(); ++r) ends.push_back(rings_->ring_begin(r + 1));
+    return Polygon(xy.data(), ends.data(), ends.size());
+}
+
+}  // namespace pds

@@ -1,0 +1,62 @@
+// polygon.hpp - a polygonal domain: the closed region inside an outline of
+// rings by the even-odd rule (polygon_rings.hpp), with what the sampler asks
+// of a domain (rectangle.hpp lists it): contains, bounds, area, perimeter, a
+// count bound, a uniform point, exact scaling.
+//
+// Its area comes from the shoelace areas of the rings, each counted with the
+// sign of the side the inside lies on; that side is found by locating points
+// just either side of one of the ring's edges. This is the even-odd area
+// when rings do not cross one another (they may touch); rings that cross
+// give an estimate, which only steers counts and never a point's place. An
+// outline with nothing inside (a ring traced twice, say) is refused.
+#ifndef PDS_POLYGON_HPP
+#define PDS_POLYGON_HPP
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "core/point.hpp"
+#include "core/rng.hpp"
+#include "domain/polygon_index.hpp"
+#include "domain/polygon_rings.hpp"
+
+namespace pds {
+
+class Polygon {
+public:
+    // As PolygonRings takes it; throws DomainError.
+    Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rings);
+
+    const Box& bounds() const { return rings_->bounds(); }
+    bool contains(const Point& p) const { return index_->contains(p); }
+    PolygonIndex::Place locate(const Point& p) const { return index_->locate(p); }
+    double area() const { return area_; }
+    double perimeter() const { return perimeter_; }
+    double diameter() const;
+    double largest_magnitude() const;
+    // A rigorous bound on the points at mutual distance >= r in the domain:
+    // their disks of radius r/2 are disjoint and lie within r/2 of it, inside
+    // the union of the region and each edge's r/2-neighbourhood.
+    double count_bound(double r) const;
+    // Uniform in the domain: a cell of the index that is not outside, chosen
+    // uniformly, a uniform point of it, kept when the domain contains it.
+    Point uniform_point(Rng& rng) const;
+    // The same domain times 2^k, exactly.
+    Polygon scaled(int k) const;
+
+    const PolygonRings& rings() const { return *rings_; }
+    const PolygonIndex& index() const { return *index_; }
+
+private:
+    // Owned through pointers: the index refers to the rings, and a Polygon moves.
+    std::unique_ptr<PolygonRings> rings_;
+    std::unique_ptr<PolygonIndex> index_;
+    std::vector<std::size_t> candidate_cells_;  // index cells not outside
+    double area_ = 0.0;
+    double perimeter_ = 0.0;
+};
+
+}  // namespace pds
+
+#endif

@@ -1,0 +1,120 @@
+// test_polygon_domain.cpp - the polygon as the sampler's domain type: its
+// even-odd area whatever the rings' orientations, an outline with nothing
+// inside refused, a uniform point (inside, and spread by area), the count
+// bound against a packing, exact scaling.
+#include <check.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/rng.hpp"
+#include "domain/polygon.hpp"
+#include "suites.hpp"
+
+namespace {
+
+using pds::Point;
+using pds::Polygon;
+
+std::vector<double> square(double x0, double y0, double side, bool clockwise) {
+    std::vector<double> ccw{x0, y0, x0 + side, y0, x0 + side, y0 + side, x0, y0 + side};
+    if (!clockwise) return ccw;
+    return {ccw[6], ccw[7], ccw[4], ccw[5], ccw[2], ccw[3], ccw[0], ccw[1]};
+}
+
+Polygon rings_of(const std::vector<std::vector<double>>& rings) {
+    std::vector<double> xy;
+    std::vector<std::size_t> ends;
+    for (const auto& r : rings) {
+        xy.insert(xy.end(), r.begin(), r.end());
+        ends.push_back(xy.size() / 2);
+    }
+    return Polygon(xy.data(), ends.data(), ends.size());
+}
+
+START_TEST(even_odd_area_in_any_orientation) {
+    for (int mask = 0; mask < 8; ++mask) {
+        // A 4x4 square, a 2x2 hole in it, a 1x1 island in the hole.
+        const Polygon p = rings_of({square(0, 0, 4, mask & 1), square(1, 1, 2, mask & 2), square(1.5, 1.5, 1, mask & 4)});
+        ck_assert_msg(std::fabs(p.area() - (16.0 - 4.0 + 1.0)) < 1e-12, "orientations %d: area %.17g", mask, p.area());
+        ck_assert_double_eq(p.perimeter(), 16.0 + 8.0 + 4.0);
+    }
+    // Two separate squares, and a hole touching the outer ring at a vertex.
+    ck_assert_double_eq_tol(rings_of({square(0, 0, 1, false), square(3, 0, 2, true)}).area(), 5.0, 1e-12);
+    const Polygon touching = rings_of({square(0, 0, 4, false), {0, 0, 2, 1, 1, 2}});
+    ck_assert_double_eq_tol(touching.area(), 16.0 - 1.5, 1e-12);
+}
+END_TEST
+
+START_TEST(refuses_an_outline_with_nothing_inside) {
+    std::string what;
+    try {
+        rings_of({square(0, 0, 1, false), square(0, 0, 1, true)});  // the same square twice
+    } catch (const pds::DomainError& e) {
+        what = e.what();
+    }
+    ck_assert_str_eq(what.c_str(), "the outline encloses nothing by the even-odd rule");
+}
+END_TEST
+
+START_TEST(uniform_point_inside_and_spread_by_area) {
+    // An L of three unit squares: the top-right square is missing.
+    const Polygon l = rings_of({{0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2}});
+    ck_assert_double_eq_tol(l.area(), 3.0, 1e-12);
+    pds::Rng rng(11);
+    const int n = test_light() ? 6000 : 60000;
+    int quarter[3] = {0, 0, 0};  // bottom-left, bottom-right, top-left
+    for (int i = 0; i < n; ++i) {
+        const Point p = l.uniform_point(rng);
+        ck_assert(l.contains(p));
+        ck_assert_msg(!(p.x > 1.0 && p.y > 1.0), "(%g, %g) in the missing square", p.x, p.y);
+        ++quarter[p.x > 1.0 ? 1 : (p.y > 1.0 ? 2 : 0)];
+    }
+    // Each square holds a third: 5 standard deviations.
+    const double expect = n / 3.0, sd = std::sqrt(n * (1.0 / 3.0) * (2.0 / 3.0));
+    for (int q : quarter) ck_assert_msg(std::fabs(q - expect) < 5.0 * sd, "%d of %d in one square", q, n);
+}
+END_TEST
+
+START_TEST(count_bound_holds_a_packing) {
+    const Polygon l = rings_of({{0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2}, square(0.2, 0.2, 0.5, true)});
+    for (double r : {0.02, 0.05, 0.2}) {
+        std::size_t packed = 0;
+        int row = 0;
+        for (double y = 0.0; y <= 2.0; y += std::sqrt(3.0) / 2.0 * r, ++row)
+            for (double x = row % 2 ? r / 2 : 0.0; x <= 2.0; x += r) packed += l.contains(Point{x, y});
+        ck_assert_msg(static_cast<double>(packed) <= l.count_bound(r), "r=%g: %zu > %g", r, packed, l.count_bound(r));
+        ck_assert(l.count_bound(r) < 2.0 * static_cast<double>(packed) + 100.0);
+    }
+}
+END_TEST
+
+START_TEST(scaling_is_exact) {
+    const Polygon p = rings_of({square(-1, 0.5, 3, false), square(0, 1, 1, false)});
+    const Polygon big = p.scaled(5);
+    ck_assert_double_eq(big.area(), 1024.0 * p.area());
+    ck_assert_double_eq(big.bounds().x0, -32.0);
+    const Polygon back = big.scaled(-5);
+    ck_assert_double_eq(back.area(), p.area());
+    pds::Rng rng(2);
+    for (int i = 0; i < 2000; ++i) {
+        const Point q{-1.5 + 4.0 * rng.next_double(), 4.0 * rng.next_double()};
+        ck_assert(p.locate(q) == big.locate(Point{32.0 * q.x, 32.0 * q.y}));
+    }
+}
+END_TEST
+
+}  // namespace
+
+Suite* polygon_domain_suite() {
+    Suite* s = suite_create("polygon_domain");
+    TCase* t = tcase_create("domain");
+    tcase_add_test(t, even_odd_area_in_any_orientation);
+    tcase_add_test(t, refuses_an_outline_with_nothing_inside);
+    tcase_add_test(t, uniform_point_inside_and_spread_by_area);
+    tcase_add_test(t, count_bound_holds_a_packing);
+    tcase_add_test(t, scaling_is_exact);
+    suite_add_tcase(s, t);
+    return s;
+}
