@@ -81,7 +81,9 @@ public:
                 if (L.dense) {
                     // The runs of a row's cells follow each other: one range.
                     const std::size_t row = static_cast<std::size_t>(y * L.cols);
-                    for (std::uint32_t j = L.runs[row + x_lo]; j < L.runs[row + x_hi + 1]; ++j)
+                    const std::size_t first = row + static_cast<std::size_t>(x_lo);
+                    const std::size_t last = row + static_cast<std::size_t>(x_hi);
+                    for (std::uint32_t j = L.runs[first]; j < L.runs[last + 1]; ++j)
                         visit(order_[j], 0, 0, same);
                     continue;
                 }
