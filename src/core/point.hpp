@@ -4,6 +4,9 @@
 #ifndef PDS_POINT_HPP
 #define PDS_POINT_HPP
 
+#include <algorithm>
+#include <cmath>
+
 namespace pds {
 
 struct Point {
@@ -21,6 +24,15 @@ struct Box {
     double width() const { return x1 - x0; }
     double height() const { return y1 - y0; }
     bool contains(const Point& p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
+    // The diagonal: no two points of the box are farther apart.
+    double diagonal() const {
+        const double w = width(), h = height();
+        return std::sqrt(w * w + h * h);  // not hypot: see delaunay.cpp
+    }
+    // The largest |coordinate| of the box.
+    double largest_magnitude() const {
+        return std::max(std::max(std::fabs(x0), std::fabs(x1)), std::max(std::fabs(y0), std::fabs(y1)));
+    }
 };
 
 }  // namespace pds

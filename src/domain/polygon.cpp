@@ -57,16 +57,6 @@ Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rin
             if (index_->cell_place(c, r) != PolygonIndex::kOutside) candidate_cells_.push_back(r * index_->columns() + c);
 }
 
-double Polygon::diameter() const {
-    const Box& b = bounds();
-    return std::sqrt(b.width() * b.width() + b.height() * b.height());  // a bound: the box's diagonal
-}
-
-double Polygon::largest_magnitude() const {
-    const Box& b = bounds();
-    return std::max(std::max(std::fabs(b.x0), std::fabs(b.x1)), std::max(std::fabs(b.y0), std::fabs(b.y1)));
-}
-
 double Polygon::count_bound(double r) const {
     const double rho = 0.5 * r;
     const double disk = M_PI * rho * rho;

@@ -33,8 +33,9 @@ public:
     PolygonIndex::Place locate(const Point& p) const { return index_->locate(p); }
     double area() const { return area_; }
     double perimeter() const { return perimeter_; }
-    double diameter() const;
-    double largest_magnitude() const;
+    // A bound on the distance between two of its points: the box's diagonal.
+    double diameter() const { return bounds().diagonal(); }
+    double largest_magnitude() const { return bounds().largest_magnitude(); }
     // A rigorous bound on the points at mutual distance >= r in the domain:
     // their disks of radius r/2 are disjoint and lie within r/2 of it, inside
     // the union of the region and each edge's r/2-neighbourhood.

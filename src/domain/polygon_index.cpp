@@ -44,9 +44,7 @@ std::size_t PolygonIndex::row_of(double y) const {
 PolygonIndex::PolygonIndex(const PolygonRings& rings) : rings_(rings), box_(rings.bounds()) {
     const double w = box_.width(), h = box_.height();
     const double cells = std::min(kMaxCells, std::max(kMinCells, kCellsPerEdge * static_cast<double>(rings.vertices())));
-    const double magnitude = std::max(std::max(std::fabs(box_.x0), std::fabs(box_.x1)),
-                                      std::max(std::fabs(box_.y0), std::fabs(box_.y1)));
-    const double smallest = kMinCellShare * magnitude;
+    const double smallest = kMinCellShare * box_.largest_magnitude();
     double rows = std::max(1.0, std::round(std::sqrt(cells * h / w)));
     double cols = std::max(1.0, std::round(cells / rows));
     rows = std::max(1.0, std::min(rows, std::floor(h / smallest)));

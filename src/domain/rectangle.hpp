@@ -40,10 +40,7 @@ public:
     double area() const { return box_.width() * box_.height(); }
     double perimeter() const { return 2.0 * (box_.width() + box_.height()); }
     // The diagonal: no two points of the domain are farther apart.
-    double diameter() const {
-        const double w = box_.width(), h = box_.height();
-        return std::sqrt(w * w + h * h);  // not hypot: see delaunay.cpp
-    }
+    double diameter() const { return box_.diagonal(); }
     // Oler (1961): points at mutual distance >= r in a convex region of area
     // A and perimeter P number at most 2A/(sqrt(3) r^2) + P/(2r) + 1.
     double count_bound(double r) const {
@@ -59,10 +56,7 @@ public:
         return p;
     }
     // The largest |coordinate| of the domain.
-    double largest_magnitude() const {
-        return std::max(std::max(std::fabs(box_.x0), std::fabs(box_.x1)),
-                        std::max(std::fabs(box_.y0), std::fabs(box_.y1)));
-    }
+    double largest_magnitude() const { return box_.largest_magnitude(); }
     Rectangle scaled(int k) const {
         return Rectangle(Box{std::ldexp(box_.x0, k), std::ldexp(box_.y0, k), std::ldexp(box_.x1, k),
                              std::ldexp(box_.y1, k)});
