@@ -83,7 +83,9 @@ Header* header_of_unwind(void* u) {
     return reinterpret_cast<Header*>(static_cast<char*>(u) - offsetof(Header, unwind));
 }
 
-uintptr_t read_uleb(const uint8_t*& p) {
+// A LEB128 number's 7-bit groups, low first; *last is its final byte and
+// *bits the bits read (the signed form extends the sign from there).
+uintptr_t read_leb_groups(const uint8_t*& p, uint8_t* last, unsigned* bits) {
     uintptr_t v = 0;
     unsigned shift = 0;
     uint8_t b;
@@ -92,19 +94,22 @@ uintptr_t read_uleb(const uint8_t*& p) {
         v |= uintptr_t(b & 0x7f) << shift;
         shift += 7;
     } while (b & 0x80);
+    *last = b;
+    *bits = shift;
     return v;
 }
 
+uintptr_t read_uleb(const uint8_t*& p) {
+    uint8_t last;
+    unsigned bits;
+    return read_leb_groups(p, &last, &bits);
+}
+
 intptr_t read_sleb(const uint8_t*& p) {
-    uintptr_t v = 0;
-    unsigned shift = 0;
-    uint8_t b;
-    do {
-        b = *p++;
-        v |= uintptr_t(b & 0x7f) << shift;
-        shift += 7;
-    } while (b & 0x80);
-    if ((b & 0x40) && shift < 8 * sizeof(v)) v |= ~uintptr_t(0) << shift;
+    uint8_t last;
+    unsigned bits;
+    uintptr_t v = read_leb_groups(p, &last, &bits);
+    if ((last & 0x40) && bits < 8 * sizeof(v)) v |= ~uintptr_t(0) << bits;
     return static_cast<intptr_t>(v);
 }
 
