@@ -27,19 +27,9 @@ struct json {
     struct ring_builder *b;
 };
 
-static int is_ws(char c)
-{
-    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
-}
-
-static int is_digit(char c)
-{
-    return c >= '0' && c <= '9';
-}
-
 static size_t ws(const struct json *j, size_t p)
 {
-    while (p < j->len && is_ws(j->text[p]))
+    while (p < j->len && json_is_ws(j->text[p]))
         p++;
     return p;
 }
@@ -90,7 +80,7 @@ static size_t skip(const struct json *j, size_t p)
     if (t[p] == '"')
         return string_end(j, p) + 1;
     if (t[p] != '[' && t[p] != '{') { /* a number or a literal */
-        while (p < j->len && !is_ws(t[p]) && t[p] != ',' && t[p] != ']' && t[p] != '}')
+        while (p < j->len && !json_is_ws(t[p]) && t[p] != ',' && t[p] != ']' && t[p] != '}')
             p++;
         return p;
     }
@@ -207,7 +197,7 @@ static int walk_rings(const struct json *j, size_t p, const char *where, size_t 
                             "expected a position (an array of 2 or more numbers), found %s",
                             kind(t[p]));
             for (q = ws(j, p + 1); t[q] != ']'; q = next(j, e), k++) {
-                if (t[q] != '-' && !is_digit(t[q]))
+                if (t[q] != '-' && !json_is_digit(t[q]))
                     return fail(j, locate(loc, sizeof loc, where, polygon, ring, vertex),
                                 "a position holds numbers only, found %s", kind(t[q]));
                 e = skip(j, q);

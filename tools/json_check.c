@@ -22,19 +22,9 @@ struct json {
     size_t size;
 };
 
-static int is_ws(char c)
-{
-    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
-}
-
-static int is_digit(char c)
-{
-    return c >= '0' && c <= '9';
-}
-
 static size_t ws(const struct json *j, size_t p)
 {
-    while (p < j->len && is_ws(j->text[p]))
+    while (p < j->len && json_is_ws(j->text[p]))
         p++;
     return p;
 }
@@ -109,7 +99,7 @@ static int check_string(const struct json *j, size_t *pp)
             c = p + k < j->len ? (unsigned char)j->text[p + k] : 0;
             if (p + k >= j->len)
                 return syntax(j, *pp, "the file ends inside this string (truncated?)");
-            if (!is_digit((char)c) && !(c >= 'a' && c <= 'f') && !(c >= 'A' && c <= 'F'))
+            if (!json_is_digit((char)c) && !(c >= 'a' && c <= 'f') && !(c >= 'A' && c <= 'F'))
                 return syntax(j, p, "invalid escape: \\u needs 4 hexadecimal digits");
         }
         p += 6;
@@ -127,26 +117,26 @@ static int check_number(const struct json *j, size_t *pp)
     if (t[p] == '-')
         p++;
     if (p < n && t[p] == '0') {
-        if (++p < n && is_digit(t[p]))
+        if (++p < n && json_is_digit(t[p]))
             return syntax(j, *pp, "malformed number: a leading zero");
-    } else if (p < n && is_digit(t[p])) {
-        while (p < n && is_digit(t[p]))
+    } else if (p < n && json_is_digit(t[p])) {
+        while (p < n && json_is_digit(t[p]))
             p++;
     } else {
         goto malformed;
     }
     if (p < n && t[p] == '.') {
-        if (++p >= n || !is_digit(t[p]))
+        if (++p >= n || !json_is_digit(t[p]))
             goto malformed;
-        while (p < n && is_digit(t[p]))
+        while (p < n && json_is_digit(t[p]))
             p++;
     }
     if (p < n && (t[p] == 'e' || t[p] == 'E')) {
         if (++p < n && (t[p] == '+' || t[p] == '-'))
             p++;
-        if (p >= n || !is_digit(t[p]))
+        if (p >= n || !json_is_digit(t[p]))
             goto malformed;
-        while (p < n && is_digit(t[p]))
+        while (p < n && json_is_digit(t[p]))
             p++;
     }
     *pp = p;
@@ -169,7 +159,7 @@ static int check_value(const struct json *j, size_t *pp, int depth)
     if (c == '"') {
         if (check_string(j, &p) != 0)
             return -1;
-    } else if (c == '-' || is_digit(c)) {
+    } else if (c == '-' || json_is_digit(c)) {
         if (check_number(j, &p) != 0)
             return -1;
     } else if (c == 't' || c == 'f' || c == 'n') {

@@ -12,6 +12,17 @@
 
 #include "shape_files.h"
 
+/* JSON's white space and digits (RFC 8259), for json_check.c and geojson.c. */
+static inline int json_is_ws(char c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
+static inline int json_is_digit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
 /* Rings being read: the arrays grow by doubling, so reading stays linear. */
 struct ring_builder {
     double *xy;
