@@ -17,25 +17,32 @@
 
 static const test_domain WIDEST = {-1.7e308, -1.7e308, 1.7e308, 1.7e308};
 
+/* Every one of the n points has a radius in [lo, hi]. */
+static void assert_radii_between(const pds_sampler *s, size_t n, double lo, double hi)
+{
+    double *r = malloc(n * sizeof *r);
+    size_t i;
+
+    ck_assert_ptr_nonnull(r);
+    ck_assert_uint_eq(pds_radii(s, 0, n, r), n);
+    for (i = 0; i < n; i++)
+        ck_assert_msg(r[i] >= lo && r[i] <= hi, "point %zu has radius %g", i, r[i]);
+    free(r);
+}
+
 /* A map of two values over the widest domain: a full, valid pattern. */
 START_TEST(test_map_over_widest_domain)
 {
     const double map[2] = {1e306, 3e306};
     pds_sampler *s = sampler_new_in(1.0, 5, WIDEST);
-    size_t n, i, added = 0;
-    double *r;
+    size_t n, added = 0;
 
     ck_assert_int_eq(pds_set_radius_map(s, 2, 1, map), 0);
     ck_assert_int_eq(pds_run(s, 0, &added), PDS_DONE);
     n = pds_count(s);
     /* The sides are 340 rmin long: thousands of points, not one. */
     ck_assert_msg(n > 1000, "only %zu points over a domain 340 rmin wide", n);
-    r = malloc(n * sizeof *r);
-    ck_assert_ptr_nonnull(r);
-    ck_assert_uint_eq(pds_radii(s, 0, n, r), n);
-    for (i = 0; i < n; i++)
-        ck_assert_msg(r[i] >= 1e306 && r[i] <= 3e306, "point %zu has radius %g", i, r[i]);
-    free(r);
+    assert_radii_between(s, n, 1e306, 3e306);
     ck_assert_int_eq(pds_verify(s), PDS_DONE);
     ck_assert(pds_free_area(s) == 0.0);
     pds_destroy(s);
@@ -86,20 +93,14 @@ START_TEST(test_map_on_widest_torus)
 {
     const double map[4] = {1e306, 3e306, 2e306, 1e306};
     pds_sampler *s = sampler_new_in(1.0, 9, WIDEST);
-    size_t n, i;
-    double *r;
+    size_t n;
 
     ck_assert_int_eq(pds_set_periodic(s, 1), 0);
     ck_assert_int_eq(pds_set_radius_map(s, 2, 2, map), 0);
     ck_assert_int_eq(pds_run(s, 0, NULL), PDS_DONE);
     n = pds_count(s);
     ck_assert_msg(n > 1000, "only %zu points on a torus 340 rmin wide", n);
-    r = malloc(n * sizeof *r);
-    ck_assert_ptr_nonnull(r);
-    ck_assert_uint_eq(pds_radii(s, 0, n, r), n);
-    for (i = 0; i < n; i++)
-        ck_assert_msg(r[i] >= 1e306 && r[i] <= 3e306, "point %zu has radius %g", i, r[i]);
-    free(r);
+    assert_radii_between(s, n, 1e306, 3e306);
     ck_assert_int_eq(pds_verify(s), PDS_DONE);
     pds_destroy(s);
 }
