@@ -23,8 +23,9 @@ export type Mask =
   | ArrayLike<ArrayLike<boolean | number>>
   | { width: number; height: number; inside: ArrayLike<boolean | number> };
 
-/** Fixed points: flat x, y numbers (such as points() returns), [x, y] or [x, y, clearance] rows,
- *  or { points, clearances } (a clearance 0 means the radius in force there). */
+/** Fixed points: flat x, y numbers (such as points() returns), [x, y] or [x, y, clearance] rows
+ *  (mixed: an [x, y] row has clearance 0), or { points, clearances }; a clearance 0 means the
+ *  radius in force there. */
 export type FixedPoints =
   | ArrayLike<number>
   | ArrayLike<readonly [number, number] | readonly [number, number, number]>

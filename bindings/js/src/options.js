@@ -222,8 +222,9 @@ export function maskBytes(mask) {
 /**
  * Fixed points as { n, xy: Float64Array, clearances: Float64Array | null }.
  * `fixed`: flat x, y numbers (a Float64Array such as points() returns), an
- * array of [x, y] or [x, y, clearance] rows, or { points, clearances } with
- * points in either of the first two forms.
+ * array of [x, y] or [x, y, clearance] rows (mixed: [x, y] has clearance 0,
+ * the radius), or { points, clearances } with points in either of the first
+ * two forms.
  */
 export function fixedArrays(fixed) {
   let points = fixed;
@@ -240,18 +241,21 @@ export function fixedArrays(fixed) {
     if (points.length % 2 !== 0) throw new TypeError(`fixed points hold ${points.length} numbers, not x, y pairs`);
     xy = Float64Array.from(points, Number);
   } else {
-    const cols = isArrayLike(points[0]) ? points[0].length : 0;
-    if (cols !== 2 && cols !== 3) throw new TypeError(`fixed rows must be [x, y] or [x, y, clearance], got ${show(points[0])}`);
-    if (cols === 3 && clearances !== null) throw new TypeError('give clearances once: in the rows or in fixed.clearances');
-    xy = new Float64Array(points.length * 2);
-    if (cols === 3) clearances = new Float64Array(points.length);
-    Array.from(points, (row, k) => {
-      if (!isArrayLike(row) || row.length !== cols) {
-        throw new TypeError(`fixed rows must all have ${cols} values: row ${k} is ${show(row)}`);
+    const rows = Array.from(points);
+    rows.forEach((row, k) => {
+      if (!isArrayLike(row) || (row.length !== 2 && row.length !== 3)) {
+        throw new TypeError(`fixed rows must be [x, y] or [x, y, clearance]: row ${k} is ${show(row)}`);
       }
+    });
+    // A row without a clearance has 0: the radius in force there.
+    const withClearance = rows.some((row) => row.length === 3);
+    if (withClearance && clearances !== null) throw new TypeError('give clearances once: in the rows or in fixed.clearances');
+    xy = new Float64Array(rows.length * 2);
+    if (withClearance) clearances = new Float64Array(rows.length);
+    rows.forEach((row, k) => {
       xy[2 * k] = Number(row[0]);
       xy[2 * k + 1] = Number(row[1]);
-      if (cols === 3) clearances[k] = Number(row[2]);
+      if (withClearance) clearances[k] = row.length === 3 ? Number(row[2]) : 0;
     });
   }
   const n = xy.length / 2;

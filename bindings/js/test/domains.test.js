@@ -123,6 +123,8 @@ test('fixed points: every form gives the same points; 0 or none means the radius
   const a = await poissonDisk(0.05, { seed: 2, fixed: xy });
   assert.deepEqual(await poissonDisk(0.05, { seed: 2, fixed: Float64Array.from(xy.flat()) }), a);
   assert.deepEqual(await poissonDisk(0.05, { seed: 2, fixed: xy.map(([x, y]) => [x, y, 0]) }), a);
+  const mixed = FIXED.map((f) => (f[2] === 0 ? [f[0], f[1]] : f));  // [x, y] rows have clearance 0
+  assert.deepEqual(await poissonDisk(0.05, { seed: 2, fixed: mixed }), await poissonDisk(0.05, { seed: 2, fixed: FIXED }));
   assert.deepEqual(await poissonDisk(0.05, { seed: 2, fixed: { points: xy.flat(), clearances: [0, 0, 0, 0] } }), a);
   const c = await poissonDisk(0.05, { seed: 2, fixed: FIXED });
   assert.deepEqual(await poissonDisk(0.05, { seed: 2, fixed: { points: xy, clearances: FIXED.map((f) => f[2]) } }), c);
@@ -142,11 +144,13 @@ test('errors: the library message, naming the ring, vertex or point', async () =
   const multi = { type: 'MultiPolygon', coordinates: [[closed(OUTER)], [closed(two)]] };
   await assert.rejects(Sampler.create(0.1, { polygon: multi }),
     (e) => e instanceof InvalidArgumentError && e.message.includes('ring 1 is polygon.coordinates[1][0]'));
-  await assert.rejects(Sampler.create(0.1, { polygon: [OUTER], periodic: true }), InvalidArgumentError);
+  for (const options of [{ polygon: [OUTER] }, { mask: L_MASK }, { fixed: [[0.5, 0.5]] }]) {
+    await assert.rejects(Sampler.create(0.1, { ...options, periodic: true }), InvalidArgumentError);
+  }
   await assert.rejects(Sampler.create(0.1, { mask: [[0, 0]] }),
     (e) => e instanceof InvalidArgumentError && /pds_set_mask/.test(e.message));
   await assert.rejects(Sampler.create(0.1, { fixed: [[0.5, 0.5], [0.2, NaN]] }),
-    (e) => e instanceof InvalidArgumentError && /pds_set_fixed/.test(e.message) && /1/.test(e.libraryMessage));
+    (e) => e instanceof InvalidArgumentError && /pds_set_fixed/.test(e.message) && /point 1/.test(e.libraryMessage));
   await assert.rejects(Sampler.create(0.1, { fixed: [[0.5, 0.5, -1]] }), InvalidArgumentError);
   const s = await Sampler.create(0.1, { fixed: [[2, 2]] });  // outside the bounding box
   assert.throws(() => s.run(), InvalidArgumentError);
@@ -169,7 +173,8 @@ test('misuse: TypeError before the library is called', async () => {
     { mask: [] },
     { fixed: [[1, 2, 3, 4]] },
     { fixed: [0.5] },
-    { fixed: [[0.5, 0.5], [0.5, 0.5, 0.1]] },
+    { fixed: [[0.5, 0.5], [0.5]] },
+    { fixed: { points: [[0.5, 0.5, 0.1]], clearances: [0.1] } },
     { fixed: { points: [0.5, 0.5], clearances: [1, 2] } },
   ]) {
     await assert.rejects(Sampler.create(0.1, options), TypeError, JSON.stringify(options));
