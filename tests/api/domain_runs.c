@@ -4,9 +4,9 @@
  * Contract (poissondisk.h, 1.4): in a polygon, with or without fixed points,
  * the same seed gives the same points however pds_run and pds_step split the
  * work, and when a progress callback cancels every run; pds_set_count gives
- * exactly n points, every pair at least the last radius apart and the
- * clearance 0 following that radius; pds_refine keeps every point and the
- * run ends maximal at the new radius, the clearance 0 following it too.
+ * exactly n points, every pair at least the last radius apart, the
+ * clearances scaled as the radius was; pds_refine keeps every point and the
+ * run ends maximal at the new radius, the clearances scaled with it.
  */
 #include "domain_runs.h"
 
@@ -26,9 +26,9 @@ pds_sampler *extra_new(const domain_extra *e, double r, uint64_t seed)
     return s;
 }
 
-static size_t fixed_at(const domain_extra *e, double r, disk out[8])
+static size_t fixed_at(const domain_extra *e, double r0, double r, disk out[8])
 {
-    return e->fixed ? e->fixed(r, out) : 0;
+    return e->fixed ? e->fixed(r0, r, out) : 0;
 }
 
 /* pds_run(s, k) until done (k 0: pds_step until 0). */
@@ -106,8 +106,10 @@ void check_count(const domain_extra *e)
         double *xy, *r;
         size_t n, i, nf;
         disk fx[8];
+        double r0;
         int rc;
         ck_assert_int_eq(pds_set_count(s, want), 0);
+        r0 = pds_radius(s); /* the radius count mode starts at */
         rc = pds_run(s, 0, NULL);
         ck_assert_msg(rc == PDS_DONE, "%s, count mode: pds_run %d (%s)", e->name, rc,
                       pds_errmsg(s));
@@ -116,7 +118,7 @@ void check_count(const domain_extra *e)
         /* Every pair at least the last radius apart. */
         for (i = 0; i < n; i++)
             r[i] = pds_radius(s);
-        nf = fixed_at(e, pds_radius(s), fx);
+        nf = fixed_at(e, r0, pds_radius(s), fx);
         assert_domain_rules(xy, r, n, &UNIT_L, fx, nf, e->name);
         rc = pds_verify(s);
         ck_assert_msg(rc == PDS_DONE || rc == PDS_MORE, "%s, count mode: pds_verify %d (%s)",
@@ -136,14 +138,14 @@ void check_refine(const domain_extra *e)
     disk fx[8];
 
     run_to_end(s);
-    nf = fixed_at(e, r0, fx);
+    nf = fixed_at(e, r0, r0, fx);
     assert_domain_pattern(s, &UNIT_L, fx, nf, "before the refine");
     first = points_copy(s, &n);
     ck_assert_int_eq(pds_refine(s, r1), 0);
     ck_assert_int_eq(pds_verify(s), PDS_MORE);
     run_to_end(s);
     assert_prefix_kept(s, first, n, "refine in the L");
-    nf = fixed_at(e, r1, fx);
+    nf = fixed_at(e, r0, r1, fx);
     assert_domain_pattern(s, &UNIT_L, fx, nf, "after the refine");
     free(first);
     pds_destroy(s);

@@ -14,13 +14,15 @@
 
 /*
  * What a test adds to a sampler in the unit L before its first point: setup
- * (NULL: nothing), and fixed(r, out), the disks a pattern at radius r must
- * keep out of and which count for coverage (at most 8; NULL: none).
+ * (NULL: nothing), and fixed(r0, r, out), the disks a pattern must keep out
+ * of and which count for coverage, for a run that started at radius r0 and
+ * is now at r (pds_refine and count mode scale the clearances by r / r0);
+ * at most 8, NULL: none.
  */
 typedef struct domain_extra {
     const char *name;
     void (*setup)(pds_sampler *s);
-    size_t (*fixed)(double r, disk *out);
+    size_t (*fixed)(double r0, double r, disk *out);
 } domain_extra;
 
 /* A sampler in the unit L at radius r with e's setup. */

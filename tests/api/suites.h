@@ -24,6 +24,7 @@
  *   domain_points_suite  polygons: inside, spaced, maximal; runs           (domain_points.c)
  *   domain_raster_suite  a mask as the domain; a radius map with a polygon (domain_raster.c)
  *   domain_law_suite   the law in a polygon against dart throwing         (domain_law.c)
+ *   domain_fixed_suite pds_set_fixed: refusals, clearances, runs, the law  (domain_fixed.c)
  */
 #ifndef PDS_TESTS_API_SUITES_H
 #define PDS_TESTS_API_SUITES_H
@@ -52,5 +53,6 @@ Suite *domain_args_suite(void);
 Suite *domain_points_suite(void);
 Suite *domain_raster_suite(void);
 Suite *domain_law_suite(void);
+Suite *domain_fixed_suite(void);
 
 #endif /* PDS_TESTS_API_SUITES_H */
