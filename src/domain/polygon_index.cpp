@@ -183,40 +183,80 @@ PolygonIndex::Place PolygonIndex::locate(const Point& p) const {
     return clean != kOnOutline ? clean : cast_short_ray(p, r, c);
 }
 
+namespace {
+
+// The four directions a short ray may take, as rotations that turn it to +x
+// (exact: they only swap and negate coordinates, and keep orientations).
+Point turned(const Point& p, int dir) {
+    switch (dir) {
+        case 1: return Point{-p.x, -p.y};  // left
+        case 2: return Point{p.y, -p.x};   // up
+        case 3: return Point{-p.y, p.x};   // down
+        default: return p;                 // right
+    }
+}
+
+}  // namespace
+
 PolygonIndex::Place PolygonIndex::cast_short_ray(const Point& p, std::size_t row, std::size_t col) const {
-    // To the right as far as the first clean cell: its place, flipped by
-    // each crossing of the segment from p to a point q inside it. The
-    // edges that can cross are those of the cells in between, each counted
-    // once (a cell lists its edges in increasing order).
+    // Along the row or column, toward the nearest clean cell (right, left,
+    // up, down; at most kReach cells): its place, flipped by each crossing
+    // of the segment from p to a point q inside it. The edges that can
+    // cross are those of the marked cells in between, each counted once.
+    // The crossing test is the ray cast's, on the points turned so the ray
+    // runs along +x.
+    constexpr std::size_t kReach = 32;
+    const std::ptrdiff_t dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
+    int best = -1;
+    std::size_t best_steps = kReach + 1;
+    for (int d = 0; d < 4; ++d) {
+        std::ptrdiff_t c = static_cast<std::ptrdiff_t>(col), r = static_cast<std::ptrdiff_t>(row);
+        for (std::size_t steps = 1; steps < best_steps; ++steps) {
+            c += dc[d];
+            r += dr[d];
+            if (c < 0 || r < 0 || c >= static_cast<std::ptrdiff_t>(cols_) || r >= static_cast<std::ptrdiff_t>(rows_)) break;
+            if (cell_place(static_cast<std::size_t>(c), static_cast<std::size_t>(r)) != kOnOutline) {
+                best = d;
+                best_steps = steps;
+                break;
+            }
+        }
+    }
+    if (best < 0) return cast_ray(p, row);  // no clean cell near: the whole row
     constexpr std::size_t kMaxEdges = 128;
     std::uint32_t edges[kMaxEdges];
     std::size_t n = 0;
-    std::size_t k = col;
-    for (; k < cols_ && cell_place(k, row) == kOnOutline; ++k) {
-        const std::size_t cell = row * cols_ + k;
+    std::size_t c = col, r = row;
+    for (std::size_t steps = 0; steps < best_steps; ++steps) {
+        const std::size_t cell = r * cols_ + c;
         for (std::uint32_t at = cell_begin_[cell]; at < cell_begin_[cell + 1]; ++at) {
-            if (n == kMaxEdges) return cast_ray(p, row);  // a crowded row: the whole of it
+            if (n == kMaxEdges) return cast_ray(p, row);  // a crowded neighbourhood: the whole row
             edges[n++] = cell_edges_[at];
         }
+        c = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + dc[best]);
+        r = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(r) + dr[best]);
     }
     std::sort(edges, edges + n);
     n = static_cast<std::size_t>(std::unique(edges, edges + n) - edges);
-    const bool to_clean = k < cols_;
-    const Point q{box_.x0 + (static_cast<double>(k) + 0.5) / col_scale_, p.y};
-    if (to_clean && (column_of(q.x) != k || row_of(q.y) != row)) return cast_ray(p, row);
-    bool odd = to_clean && cell_place(k, row) == kInside;
+    // q: p moved along the ray to the clean cell's middle line.
+    Point q = p;
+    if (best < 2) q.x = box_.x0 + (static_cast<double>(c) + 0.5) / col_scale_;
+    else q.y = box_.y0 + (static_cast<double>(r) + 0.5) / row_scale_;
+    if (column_of(q.x) != c || row_of(q.y) != r) return cast_ray(p, row);
+    const Point tp = turned(p, best), tq = turned(q, best);
+    bool odd = cell_place(c, r) == kInside;
     for (std::size_t i = 0; i < n; ++i) {
-        const Point a = rings_.edge_start(edges[i]), b = rings_.edge_end(edges[i]);
-        if ((a.y > p.y) == (b.y > p.y)) {
-            if (on_segment(p, a, b)) return kOnOutline;
+        const Point a = turned(rings_.edge_start(edges[i]), best), b = turned(rings_.edge_end(edges[i]), best);
+        if ((a.y > tp.y) == (b.y > tp.y)) {
+            if (on_segment(tp, a, b)) return kOnOutline;
             continue;
         }
-        const Point& lo = a.y > p.y ? b : a;
-        const Point& hi = a.y > p.y ? a : b;
-        const int side = orient2d(lo, hi, p);
+        const Point& lo = a.y > tp.y ? b : a;
+        const Point& hi = a.y > tp.y ? a : b;
+        const int side = orient2d(lo, hi, tp);
         if (side == 0) return kOnOutline;
-        // The edge crosses p's ray to the right; before q unless q lies left of it.
-        if (side == 1 && (!to_clean || orient2d(lo, hi, q) == -1)) odd = !odd;
+        // The edge crosses the ray beyond p; before q unless q lies left of it.
+        if (side == 1 && orient2d(lo, hi, tq) == -1) odd = !odd;
     }
     return odd ? kInside : kOutside;
 }

@@ -65,8 +65,8 @@ public:
 private:
     // The exact ray cast from p through the edges of its row.
     Place cast_ray(const Point& p, std::size_t row) const;
-    // The same, only as far as the first clean cell to the right of p's
-    // (column col): usually a few cells' edges instead of the row's.
+    // The same, only as far as the nearest clean cell along p's row or
+    // column (p in column col): usually a few cells' edges, not the row's.
     Place cast_short_ray(const Point& p, std::size_t row, std::size_t col) const;
     void mark_edge_cells(std::size_t edge);
     // Calls visit(k) for each grid cell k the edge marks.
