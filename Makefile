@@ -71,7 +71,7 @@ MAPFILE   := src/libpoissondisk.map
 
 LIB_SRC   := $(sort $(wildcard src/*.cpp src/*/*.cpp))
 LIB_OBJ   := $(LIB_SRC:src/%.cpp=$(B)/obj/%.o)
-CORE_OBJ  := $(filter-out $(B)/obj/capi.o,$(LIB_OBJ))
+CORE_OBJ  := $(filter-out $(B)/obj/capi%.o,$(LIB_OBJ))
 
 UNIT_SRC  := $(sort $(wildcard tests/unit/*.cpp))
 UNIT_BIN  := $(B)/tests/unit
@@ -338,10 +338,10 @@ $(B)/tsan/libpoissondisk.so: $(TSAN_OBJ) $(MAPFILE)
 	$(CXX) $(SAN_LINK) $(TSAN_FLAGS) $(LDFLAGS) -o $(@D)/$(REALNAME) $(TSAN_OBJ) -lm
 	ln -sf $(REALNAME) $(@D)/$(SONAME) && ln -sf $(SONAME) $@
 
-$(B)/asan/tests/unit: $(UNIT_SRC) $(filter-out %/capi.o,$(ASAN_OBJ)) $(wildcard tests/unit/*.hpp)
+$(B)/asan/tests/unit: $(UNIT_SRC) $(filter-out %/capi%.o,$(ASAN_OBJ)) $(wildcard tests/unit/*.hpp)
 	@mkdir -p $(@D)
 	$(CXX) $(PDS_TEST_CXXFLAGS) $(CXXFLAGS) $(ASAN_FLAGS) -o $@ $(UNIT_SRC) \
-	    $(filter-out %/capi.o,$(ASAN_OBJ)) $(CHECK_LIBS)
+	    $(filter-out %/capi%.o,$(ASAN_OBJ)) $(CHECK_LIBS)
 $(B)/asan/tests/api: $(API_SRC) $(wildcard tests/api/*.h) include/poissondisk.h $(B)/asan/libpoissondisk.so
 	@mkdir -p $(@D)
 	$(CC) $(PDS_TEST_CFLAGS) $(CFLAGS) $(ASAN_FLAGS) -o $@ $(API_SRC) -L$(B)/asan -lpoissondisk \

@@ -47,8 +47,8 @@ extern "C" {
 
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
-#define PDS_VERSION_MINOR 3
-#define PDS_VERSION_PATCH 5
+#define PDS_VERSION_MINOR 4
+#define PDS_VERSION_PATCH 0
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
 
@@ -397,6 +397,55 @@ PDS_API int pds_set_radius_fn(pds_sampler *s, pds_radius_fn fn, void *user, doub
  * first), or 0 for s or r NULL or first >= pds_count(s). (1.3)
  */
 PDS_API size_t pds_radii(const pds_sampler *s, size_t first, size_t count, double *r) PDS_NOEXCEPT;
+
+/*
+ * Domains users have (1.4): a polygon with holes, or an image mask. The
+ * domain is closed: its outline belongs to it. Each new point is uniform
+ * over the free region, the domain minus every point's disk; the pattern is
+ * maximal when every point of the domain, outline included, lies within R
+ * of a point (decided exactly; pds_verify re-checks it, and that every
+ * point lies in the closed domain). Works with a radius field,
+ * pds_set_count (N points in the domain), pds_refine, progress and cancel,
+ * pds_step and bounded runs (the same points however calls are split);
+ * not with pds_set_periodic (PDS_EINVAL, either way round).
+ */
+
+/*
+ * pds_set_polygon - the domain is a polygon: the region inside its rings by
+ * the even-odd rule (a point is inside when a ray from it crosses the rings
+ * an odd number of times), outer boundaries and holes alike.
+ *   xy         the vertices, x then y, in user units; ring k holds vertices
+ *              ring_ends[k-1] .. ring_ends[k]-1 (ring_ends[-1] read as 0).
+ *   ring_ends  nrings increasing ends; the last is the vertex count, at
+ *              most 2^28.
+ * Rings may run either way round, repeat their first vertex at the end,
+ * hold collinear runs, and touch each other at vertices. The copy is kept:
+ * the arrays may be freed. The domain's bounding box replaces the rectangle
+ * of pds_set_domain, and a radius map is spread over that box. A polygon
+ * replaces an earlier polygon or mask; nrings == 0 (xy and ring_ends may be
+ * NULL) goes back to the rectangle.
+ * Returns 0, PDS_EINVAL (s NULL, xy or ring_ends NULL with nrings > 0, a
+ * ring with fewer than 3 distinct vertices or all on one line, a
+ * non-finite coordinate, decreasing ends, an outline that encloses nothing,
+ * periodic set; the message names the ring and vertex, counted from 0),
+ * PDS_ENOMEM, PDS_ESTATE (points exist already). (1.4)
+ */
+PDS_API int pds_set_polygon(pds_sampler *s, const double *xy, const size_t *ring_ends,
+                            size_t nrings) PDS_NOEXCEPT;
+
+/*
+ * pds_set_mask - the domain is the union of a w x h raster's inside pixels,
+ * spread over the rectangle of pds_set_domain (set before or after): taken
+ * exactly, as the rectilinear polygon their squares make.
+ *   inside  w*h bytes, row-major, row 0 along y = y0 and column 0 along
+ *           x = x0 (as pds_set_radius_map); nonzero is inside. Copied.
+ * A mask replaces an earlier polygon or mask; w == 0 or h == 0 (inside may
+ * be NULL) goes back to the rectangle.
+ * Returns 0, PDS_EINVAL (s NULL, inside NULL with w*h > 0, w*h overflowing,
+ * no pixel inside, periodic set), PDS_ENOMEM, PDS_ESTATE (points exist
+ * already). (1.4)
+ */
+PDS_API int pds_set_mask(pds_sampler *s, size_t w, size_t h, const unsigned char *inside) PDS_NOEXCEPT;
 
 /* pds_strerror - static English text for any code, including unknown ones. (1.0) */
 PDS_API const char *pds_strerror(int code) PDS_NOEXCEPT;

@@ -5,7 +5,7 @@
 # Fails naming each include that points upwards, or a folder missing from the list.
 set -u
 cd "$(dirname "$0")/.." || exit 1
-layers="sampler darts jones radius verify domain cells mesh core"
+layers="sampler darts jones radius verify cells domain mesh core"
 
 rank() {  # prints the layer's position from the bottom (core = 1), or nothing
     n=0; found=""

@@ -62,7 +62,7 @@ bool cell_is_covered_exact(const Point& c, const std::vector<Point>& ring, const
 }
 
 bool power_cell_is_covered_exact(const Point& c, double radius, const std::vector<Point>& ring,
-                                 const std::vector<double>& ring_radii, const Box& box) {
+                                 const std::vector<double>& ring_radii, const Box& box, const Polygon* outline) {
     const E r2 = E::product(radius, radius);
     const std::size_t k = ring.size();
     for (std::size_t j = 0; j < k; ++j) {
@@ -83,12 +83,20 @@ bool power_cell_is_covered_exact(const Point& c, double radius, const std::vecto
         t.at_least(bb2 * bx, bb2 * E(box.y0) - my);     // y >= y0
         t.at_least(-(bb2 * bx), my - bb2 * E(box.y1));  // y <= y1
         if (t.empty || compare(t.lo, t.hi) > 0) continue;  // edge outside the box
-        if (!within_radius(t.lo, bb, bw, r2) || !within_radius(t.hi, bb, bw, r2)) return false;
+        // An end beyond R uncovers the cell, if the domain holds it: the
+        // point 2|b|^2 P(t) / (2|b|^2), t = num / den, in homogeneous form.
+        const auto uncovers = [&](const Rational& at) {
+            if (within_radius(at, bb, bw, r2)) return false;
+            return outline == nullptr ||
+                   outline->contains_exact(mx * at.den - bb2 * by * at.num, my * at.den + bb2 * bx * at.num, bb2 * at.den);
+        };
+        if (uncovers(t.lo) || uncovers(t.hi)) return false;
     }
     const Point corners[4] = {{box.x0, box.y0}, {box.x1, box.y0}, {box.x1, box.y1}, {box.x0, box.y1}};
     for (const Point& corner : corners) {
         const E dc = squared_distance(corner, c);
         if ((dc - r2).sign() <= 0) continue;  // within R: fine wherever it belongs
+        if (outline != nullptr && !outline->contains(corner)) continue;
         bool in_cell = true;
         for (std::size_t j = 0; j < k; ++j) {
             // A neighbour with a smaller power at the corner owns it.

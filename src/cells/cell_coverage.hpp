@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/point.hpp"
+#include "domain/polygon.hpp"
 
 namespace pds {
 
@@ -32,8 +33,12 @@ bool cell_is_covered_exact(const Point& site, const std::vector<Point>& ring, co
 // on the power bisector (circumcentre.hpp), and a corner is in the cell when
 // no neighbour has a smaller power there. With equal radii the decision is
 // the one above.
+// outline: a polygonal domain inside the box, or nullptr. With one, only the
+// clipped cell's vertices the domain holds count (Polygon::contains_exact);
+// the vertices the outline adds are polygon_coverage.hpp's.
 bool power_cell_is_covered_exact(const Point& site, double radius, const std::vector<Point>& ring,
-                                 const std::vector<double>& ring_radii, const Box& domain);
+                                 const std::vector<double>& ring_radii, const Box& domain,
+                                 const Polygon* outline = nullptr);
 
 }  // namespace pds
 

@@ -27,6 +27,8 @@
 #ifndef PDS_FREE_AREA_HPP
 #define PDS_FREE_AREA_HPP
 
+#include <type_traits>
+
 #include "cells/cell_pieces.hpp"
 #include "cells/cell_stream.hpp"
 #include "core/point.hpp"
@@ -96,7 +98,8 @@ enum class SampleOutcome { placed, gave_up, rejected };
 // Draws a point uniformly from one chunk of a cell's free region: a piece is
 // chosen with probability proportional to its area (u in [0, 1)), then points
 // are drawn in that piece until one lies in the free region and
-// `accept(absolute point)` (the exact checks) agrees. Retrying within the
+// `accept(absolute point)` (the exact checks) agrees; an accept that also
+// takes the piece hears which one the point came from (outline_clip.hpp). Retrying within the
 // chosen piece keeps the law exact.
 //
 // retry false: a draw that `accept` refuses ends the sampling (rejected),
@@ -112,7 +115,10 @@ SampleOutcome sample_chunk(const CellQuery& q, const Chunk& chunk, double u, Rng
         Point rel;
         if (!draw_in_piece(piece, q.radius, r2, rng, &rel)) continue;
         const Point p{q.site.x + rel.x, q.site.y + rel.y};
-        if (accept(p)) {
+        bool accepted;
+        if constexpr (std::is_invocable_v<const Accept&, const Point&, const Piece&>) accepted = accept(p, piece);
+        else accepted = accept(p);
+        if (accepted) {
             *out = p;
             return SampleOutcome::placed;
         }

@@ -155,6 +155,12 @@ public:
 
     int sign() const { return expansion_sign(c_.size(), c_.data()); }
     std::size_t size() const { return c_.size(); }
+    // Its value to about double precision (the components summed).
+    double estimate() const {
+        double sum = 0.0;
+        for (double c : c_) sum += c;
+        return sum;
+    }
 
 private:
     std::vector<double> c_;

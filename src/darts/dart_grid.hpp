@@ -35,6 +35,7 @@
 #include "core/predicates.hpp"
 #include "core/rng.hpp"
 #include "core/torus.hpp"
+#include "domain/polygon.hpp"
 #include "darts/curve_order.hpp"
 #include "darts/dart_constants.hpp"
 #include "darts/grid_arithmetic.hpp"
@@ -66,8 +67,13 @@ public:
     bool has_room_for(std::size_t points) const { return cells_.has_room_for(points, points * writes_per_point()); }
 
     // n darts uniform over the grid's cells (on the torus, on its grid inside
-    // the fundamental domain), aimed, their blocks prefetched.
+    // the fundamental domain; with keep_to, over the cells kept), aimed,
+    // their blocks prefetched.
     void throw_darts(Dart* batch, std::size_t n, Rng& rng) const;
+    // Darts from now on only in the cells that may meet the polygon (all
+    // but those its grid calls outside): uniform over their union, which
+    // holds the polygon. Throws std::bad_alloc and changes nothing.
+    void keep_to(const Polygon& polygon);
     // Whether d is at least R from every point; points[k] is point k.
     bool is_free(const Dart& d, const std::vector<Point>& points, const std::vector<double>&) const;
     // Records point `index` at d (and its copies on the torus).
@@ -119,6 +125,7 @@ private:
     Torus torus_;
     std::size_t cols_ = 0, rows_ = 0;  // real cells; the padded row has cols_ + 2 kPad
     std::size_t stride_ = 0;
+    std::vector<std::uint32_t> kept_;  // keep_to's cells (row * cols_ + col), or empty: all
     Cells cells_;
     mutable std::size_t exact_checks_ = 0;
 };
@@ -200,7 +207,14 @@ void DartGrid<Cells>::throw_darts(Dart* batch, std::size_t n, Rng& rng) const {
     const double w = static_cast<double>(cols_) * side_x_, h = static_cast<double>(rows_) * side_y_;
     for (std::size_t k = 0; k < n; ++k) {
         Dart& d = batch[k];
-        if (torus_.on()) {
+        if (!kept_.empty()) {
+            // A kept cell, then a point uniform in it: three draws.
+            const double pick = std::floor(rng.next_double() * static_cast<double>(kept_.size()));
+            const std::uint32_t cell = kept_[std::min(kept_.size() - 1, static_cast<std::size_t>(pick))];
+            const auto col = static_cast<std::int64_t>(cell % cols_), row = static_cast<std::int64_t>(cell / cols_);
+            d.p.x = cell_x0(col) + rng.next_double() * side_x_;
+            d.p.y = cell_y0(row) + rng.next_double() * side_y_;
+        } else if (torus_.on()) {
             // On the torus grid, inside the fundamental domain (torus.hpp).
             const double u = rng.next_double(), v = rng.next_double();
             d.p = torus_.wrap(Point{Torus::snap(torus_.x0 + u * torus_.px), Torus::snap(torus_.y0 + v * torus_.py)});
@@ -216,6 +230,27 @@ void DartGrid<Cells>::throw_darts(Dart* batch, std::size_t n, Rng& rng) const {
             cells_.prefetch(row + static_cast<std::size_t>(d.x_hi));
         }
     }
+}
+
+template <class Cells>
+void DartGrid<Cells>::keep_to(const Polygon& polygon) {
+    if (torus_.on() || cols_ * rows_ > UINT32_MAX) return;  // no polygon on the torus; a grid too large to list
+    const PolygonIndex& index = polygon.index();
+    std::vector<std::uint32_t> kept;
+    for (std::size_t row = 0; row < rows_; ++row) {
+        const auto y = static_cast<std::int64_t>(row);
+        const std::size_t r0 = index.row_of(cell_y0(y)), r1 = index.row_of(cell_y0(y + 1));
+        for (std::size_t col = 0; col < cols_; ++col) {
+            const auto x = static_cast<std::int64_t>(col);
+            const std::size_t c0 = index.column_of(cell_x0(x)), c1 = index.column_of(cell_x0(x + 1));
+            bool outside = true;
+            for (std::size_t r = r0; r <= r1 && outside; ++r)
+                for (std::size_t c = c0; c <= c1 && outside; ++c)
+                    outside = index.cell_place(c, r) == PolygonIndex::kOutside;
+            if (!outside) kept.push_back(static_cast<std::uint32_t>(row * cols_ + col));
+        }
+    }
+    kept_ = std::move(kept);
 }
 
 template <class Cells>

@@ -56,11 +56,16 @@ public:
     // The domain (internal frame), then the grid's other arguments; the grid
     // covers the domain's bounds. Allocates the grid (zeroed: address space
     // until points land), throws std::bad_alloc and changes nothing else.
+    // polygon: a polygonal domain inside the rectangle, or nullptr; darts
+    // are then drawn only in grid cells that meet it (Grid::keep_to) and
+    // kept only inside it.
     template <class... Args>
-    explicit DartStageOf(const Rectangle& domain, Args&&... args)
+    explicit DartStageOf(const Rectangle& domain, std::shared_ptr<const Polygon> polygon, Args&&... args)
         : domain_(domain),
+          polygon_(std::move(polygon)),
           grid_(domain.bounds(), std::forward<Args>(args)...),
           curve_(grid_.curve(domain.bounds())) {
+        if (polygon_) grid_.keep_to(*polygon_);
         // A window long enough that its acceptance rate is a fair estimate,
         // short enough that the stage ends soon after the rate falls.
         queue_.set_rule(std::max<std::size_t>(darts::kMinWindow, grid_.cell_count() / 16), darts::kMinAcceptance);
@@ -93,7 +98,7 @@ public:
     // the stage is over (the acceptance rate over a window of darts fell
     // below kMinAcceptance), and from then on.
     const Point* next(Rng& rng) override {
-        const Dart* d = queue_.next([&](const Dart& x) { return domain_.contains(x.p); },
+        const Dart* d = queue_.next([&](const Dart& x) { return domain_.contains(x.p) && (!polygon_ || polygon_->contains(x.p)); },
                                     [&](Dart* batch, std::size_t n) { grid_.throw_darts(batch, n, rng); },
                                     [&](const Dart& x) { return grid_.is_free(x, points_, values_); });
         return d ? &d->p : nullptr;
@@ -133,11 +138,12 @@ public:
 
 private:
     std::unique_ptr<JonesStage> jones_of_points() const {
-        return pds::jones_of_points(domain_, grid_.radius(), grid_.torus(), grid_.radii(), points_,
+        return pds::jones_of_points(domain_, polygon_, grid_.radius(), grid_.torus(), grid_.radii(), points_,
                                     Grid::kVarying ? &values_ : nullptr, curve_);
     }
 
     Rectangle domain_;
+    std::shared_ptr<const Polygon> polygon_;
     Grid grid_;
     std::vector<Point> points_;
     std::vector<double> values_;  // a field: point k's value

@@ -5,10 +5,11 @@
 
 namespace pds {
 
-std::unique_ptr<JonesStage> jones_of_points(const Rectangle& domain, double r, const Torus& torus, const PointRadii* radii,
+std::unique_ptr<JonesStage> jones_of_points(const Rectangle& domain, const std::shared_ptr<const Polygon>& polygon,
+                                            double r, const Torus& torus, const PointRadii* radii,
                                             const std::vector<Point>& points, const std::vector<double>* values,
                                             const CurveOrder& curve) {
-    std::unique_ptr<JonesStage> stage = make_jones_stage(domain, r, torus, radii);
+    std::unique_ptr<JonesStage> stage = make_jones_stage(domain, r, torus, radii, polygon);
     stage->reserve(points.size());
     const std::vector<std::uint32_t> order = curve.fresh_order(points);
     stage->adopt(points, order.data(), values);

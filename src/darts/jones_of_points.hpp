@@ -20,7 +20,8 @@ namespace pds {
 // The domain and r in the internal frame (r: the largest radius with a field);
 // radii and values for a varying radius (values[k]: point k's), else null;
 // curve: the stage's hand-over order. Allocates; may throw std::bad_alloc.
-std::unique_ptr<JonesStage> jones_of_points(const Rectangle& domain, double r, const Torus& torus, const PointRadii* radii,
+std::unique_ptr<JonesStage> jones_of_points(const Rectangle& domain, const std::shared_ptr<const Polygon>& polygon,
+                                            double r, const Torus& torus, const PointRadii* radii,
                                             const std::vector<Point>& points, const std::vector<double>* values,
                                             const CurveOrder& curve);
 

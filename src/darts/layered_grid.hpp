@@ -39,6 +39,7 @@
 #include "core/prefetch.hpp"
 #include "core/rng.hpp"
 #include "core/torus.hpp"
+#include "domain/polygon.hpp"
 #include "darts/covered_bitmap.hpp"
 #include "darts/curve_order.hpp"
 #include "darts/dart_constants.hpp"
@@ -118,6 +119,9 @@ public:
     // n darts uniform over the finest layer's cells, their tiles, bitmap
     // words and blocks prefetched.
     void throw_darts(Dart* batch, std::size_t n, Rng& rng) const;
+    // A polygonal domain: darts stay uniform over the whole box and the
+    // stage keeps those inside it (exact; a sparse polygon wastes darts).
+    void keep_to(const Polygon&) {}
     // Whether d is outside every disk; points[k] and values[k] are point
     // k's position and field value.
     bool is_free(const Dart& d, const std::vector<Point>& points, const std::vector<double>& values) const;

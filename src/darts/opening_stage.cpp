@@ -41,11 +41,11 @@ bool opening_stage_suits(const Frame& frame, double count_bound, const RadiusFie
 std::unique_ptr<OpeningStage> make_opening_stage(const Frame& frame, double count_bound, const RadiusField* field) {
     switch (opening_for(frame, count_bound, field)) {
     case Opening::dense:
-        return std::make_unique<DartStage>(frame.domain(), frame.r(), frame.torus());
+        return std::make_unique<DartStage>(frame.domain(), frame.shared_polygon(), frame.r(), frame.torus());
     case Opening::sparse:
-        return std::make_unique<SparseDartStage>(frame.domain(), frame.r(), frame.torus());
+        return std::make_unique<SparseDartStage>(frame.domain(), frame.shared_polygon(), frame.r(), frame.torus());
     case Opening::field:
-        return std::make_unique<FieldDartStage>(frame.domain(), PointRadii(*field, frame));
+        return std::make_unique<FieldDartStage>(frame.domain(), frame.shared_polygon(), PointRadii(*field, frame));
     case Opening::none:
         break;
     }

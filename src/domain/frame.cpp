@@ -67,7 +67,22 @@ void Frame::set_domain(const Box& user_domain) {
         torus_ = t;
     }
     domain_ = Rectangle(box);
+    polygon_.reset();
+    // A polygon's vertices: scaled exactly unless one would underflow
+    // (precision_limit() refuses that).
+    if (user_polygon_ && smallest_vertex_ >= max_magnitude(user_domain) * kMinMagnitude)
+        polygon_ = std::make_shared<const Polygon>(user_polygon_->scaled(scale_exp_));
     set_radius(user_radius_);
+}
+
+void Frame::set_polygon(std::shared_ptr<const Polygon> user_polygon) {
+    user_polygon_ = std::move(user_polygon);
+    smallest_vertex_ = HUGE_VAL;
+    if (!user_polygon_) return;
+    for (const Point& p : user_polygon_->rings().points())
+        for (double c : {std::fabs(p.x), std::fabs(p.y)})
+            if (c != 0.0 && c < smallest_vertex_) smallest_vertex_ = c;
+    set_domain(user_polygon_->bounds());
 }
 
 void Frame::set_periodic(bool periodic) {
@@ -102,6 +117,7 @@ Limit Frame::precision_limit() const {
     const double coords[4] = {user_domain_.x0, user_domain_.y0, user_domain_.x1, user_domain_.y1};
     for (double c : coords)
         if (c != 0.0 && std::fabs(c) < m * kMinMagnitude) return Limit::coordinates_too_small;
+    if (user_polygon_ && smallest_vertex_ < m * kMinMagnitude) return Limit::coordinates_too_small;
     if (!(std::ldexp(user_radius_, scale_exp_) >= kMinInternalRadius)) return Limit::radius_below_precision;
     if (periodic()) {
         if (!torus().on()) return Limit::radius_below_precision;
@@ -116,7 +132,7 @@ Limit Frame::precision_limit() const {
     return Limit::ok;
 }
 
-double Frame::count_bound() const { return domain_.count_bound(r_); }
+double Frame::count_bound() const { return polygon_ ? polygon_->count_bound(r_) : domain_.count_bound(r_); }
 
 namespace {
 constexpr double kSaturationCoverage = 0.547;  // pi R^2 N / (4 A) of a maximal RSA pattern
@@ -125,7 +141,7 @@ constexpr double kEdgeExcess = 0.23;           // extra points per R of a rectan
 
 double Frame::expected_count(double user_radius) const {
     const double r = std::ldexp(user_radius, scale_exp_);
-    const double a = domain_.area(), perimeter = domain_.perimeter();
+    const double a = area(), perimeter = this->perimeter();
     const double bulk = kSaturationCoverage * 4.0 * a / (M_PI * r * r);
     return periodic() ? bulk : bulk + kEdgeExcess * perimeter / r;
 }
@@ -140,7 +156,7 @@ double Frame::max_radius() const {
 
 double Frame::radius_for_count(double n) const {
     // n = a / r^2 + b / r, solved for r > 0.
-    const double area = domain_.area(), perimeter = domain_.perimeter();
+    const double area = this->area(), perimeter = this->perimeter();
     const double a = kSaturationCoverage * 4.0 * area / M_PI;
     const double b = periodic() ? 0.0 : kEdgeExcess * perimeter;
     const double r = (b + std::sqrt(b * b + 4.0 * a * n)) / (2.0 * n);
@@ -149,7 +165,7 @@ double Frame::radius_for_count(double n) const {
 
 double Frame::lowest_count_radius(double n) const {
     constexpr double kBelowEveryStep = 0.98;
-    const double area = domain_.area();
+    const double area = this->area();
     return std::ldexp(kBelowEveryStep * std::sqrt(area / (M_PI * n)), -scale_exp_);
 }
 

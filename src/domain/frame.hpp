@@ -20,11 +20,13 @@
 #define PDS_FRAME_HPP
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
 #include "core/point.hpp"
 #include "core/torus.hpp"
+#include "domain/polygon.hpp"
 #include "domain/rectangle.hpp"
 
 namespace pds {
@@ -81,12 +83,22 @@ public:
 
     const Box& user_domain() const { return user_domain_; }
     double user_radius() const { return user_radius_; }
-    // The internal frame: the domain, its bounding box.
+    // The internal frame: the domain's bounding box as a rectangle (the
+    // domain itself without a polygon), its bounding box.
     const Rectangle& domain() const { return domain_; }
+    // A polygonal domain (internal frame), or nullptr: the rectangle.
+    const Polygon* polygon() const { return polygon_.get(); }
+    const std::shared_ptr<const Polygon>& shared_polygon() const { return polygon_; }
+    // The domain's area and perimeter (internal frame).
+    double area() const { return polygon_ ? polygon_->area() : domain_.area(); }
+    double perimeter() const { return polygon_ ? polygon_->perimeter() : domain_.perimeter(); }
     const Box& box() const { return domain_.bounds(); }
     double r() const { return r_; }
 
     void set_domain(const Box& user_domain);
+    // A polygonal domain in user units (nullptr: back to the rectangle
+    // user_domain()); its bounding box becomes user_domain().
+    void set_polygon(std::shared_ptr<const Polygon> user_polygon);
     void set_radius(double user_radius);
     void set_periodic(bool periodic);
     // Asked for, whether or not the domain allows it (precision_limit()).
@@ -127,6 +139,9 @@ private:
     Box user_domain_;
     double user_radius_;
     int scale_exp_ = 0;  // internal = user * 2^scale_exp_
+    std::shared_ptr<const Polygon> user_polygon_;  // as given, or nullptr
+    std::shared_ptr<const Polygon> polygon_;       // user_polygon_ scaled by 2^scale_exp_
+    double smallest_vertex_ = 0.0;                 // the polygon's smallest nonzero |coordinate|
     Rectangle domain_;   // on the torus, x1 and y1 are x0 + px and y0 + py rounded
     // Periodicity, stored once: none for a rectangle; periods on the torus
     // grid when asked for (off, px = 0, when the domain is too small for one).

@@ -46,8 +46,11 @@ Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rin
       index_(std::make_unique<PolygonIndex>(*rings_)),
       perimeter_(rings_->perimeter()) {
     bool any_side = false;
+    inside_left_.resize(rings_->vertices());
     for (std::size_t k = 0; k < rings_->rings(); ++k) {
         const int side = inside_side(*rings_, *index_, k);
+        std::fill(inside_left_.begin() + static_cast<std::ptrdiff_t>(rings_->ring_begin(k)),
+                  inside_left_.begin() + static_cast<std::ptrdiff_t>(rings_->ring_begin(k + 1)), side >= 0);
         any_side = any_side || side != 0;
         area_ += side * signed_area(*rings_, k);
     }

@@ -13,9 +13,11 @@
 #define PDS_POLYGON_HPP
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "core/expansion.hpp"
 #include "core/point.hpp"
 #include "core/rng.hpp"
 #include "domain/polygon_index.hpp"
@@ -31,6 +33,10 @@ public:
     const Box& bounds() const { return rings_->bounds(); }
     bool contains(const Point& p) const { return index_->contains(p); }
     PolygonIndex::Place locate(const Point& p) const { return index_->locate(p); }
+    // The closed domain contains the point (X/W, Y/W), W > 0, exactly: a
+    // Voronoi vertex, or where a Voronoi edge leaves the bounding box
+    // (polygon_exact.cpp). Allocates; for the rare exact decisions.
+    bool contains_exact(const Expansion& X, const Expansion& Y, const Expansion& W) const;
     double area() const { return area_; }
     double perimeter() const { return perimeter_; }
     // A bound on the distance between two of its points: the box's diagonal.
@@ -46,6 +52,11 @@ public:
     // The same domain times 2^k, exactly.
     Polygon scaled(int k) const;
 
+    // Whether the inside lies to the left of edge i (polygon_rings.hpp's
+    // edge from vertex i): its ring's side, so exact for rings that do not
+    // cross one another.
+    bool inside_left(std::size_t i) const { return inside_left_[i] != 0; }
+
     const PolygonRings& rings() const { return *rings_; }
     const PolygonIndex& index() const { return *index_; }
 
@@ -53,7 +64,8 @@ private:
     // Owned through pointers: the index refers to the rings, and a Polygon moves.
     std::unique_ptr<PolygonRings> rings_;
     std::unique_ptr<PolygonIndex> index_;
-    std::vector<std::size_t> candidate_cells_;  // index cells not outside
+    std::vector<std::size_t> candidate_cells_;
+    std::vector<std::uint8_t> inside_left_;  // per edge  // index cells not outside
     double area_ = 0.0;
     double perimeter_ = 0.0;
 };

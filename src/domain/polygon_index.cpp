@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <new>
 
 #include "core/predicates.hpp"
 
@@ -71,6 +73,18 @@ PolygonIndex::PolygonIndex(const PolygonRings& rings) : rings_(rings), box_(ring
             by_right_[fill[r]++] = static_cast<std::uint32_t>(e);
         mark_edge_cells(e);
     }
+    // The cells' edge lists: the marking again, counted, then filled.
+    cell_begin_.assign(rows_ * cols_ + 1, 0);
+    for (std::size_t e = 0; e < edges; ++e)
+        for_each_edge_cell(e, [&](std::size_t cell) { ++cell_begin_[cell + 1]; });
+    for (std::size_t k = 0; k < rows_ * cols_; ++k) {
+        if (cell_begin_[k + 1] > UINT32_MAX - cell_begin_[k]) throw std::bad_alloc();  // beyond 32-bit offsets
+        cell_begin_[k + 1] += cell_begin_[k];
+    }
+    cell_edges_.resize(cell_begin_[rows_ * cols_]);
+    std::vector<std::uint32_t> at(cell_begin_.begin(), cell_begin_.end() - 1);
+    for (std::size_t e = 0; e < edges; ++e)
+        for_each_edge_cell(e, [&](std::size_t cell) { cell_edges_[at[cell]++] = static_cast<std::uint32_t>(e); });
     by_left_ = by_right_;
     for (std::size_t r = 0; r < rows_; ++r) {
         const auto begin = static_cast<std::ptrdiff_t>(row_begin_[r]), end = static_cast<std::ptrdiff_t>(row_begin_[r + 1]);
@@ -85,6 +99,11 @@ PolygonIndex::PolygonIndex(const PolygonRings& rings) : rings_(rings), box_(ring
 }
 
 void PolygonIndex::mark_edge_cells(std::size_t edge) {
+    for_each_edge_cell(edge, [&](std::size_t cell) { cell_[cell] = static_cast<std::int8_t>(kOnOutline); });
+}
+
+template <class Visit>
+void PolygonIndex::for_each_edge_cell(std::size_t edge, const Visit& visit) const {
     const Point a = rings_.edge_start(edge), b = rings_.edge_end(edge);
     const double y_lo = std::min(a.y, b.y), y_hi = std::max(a.y, b.y);
     const double x_lo = min_x(a, b), x_hi = max_x(a, b);
@@ -103,8 +122,30 @@ void PolygonIndex::mark_edge_cells(std::size_t edge) {
         }
         const std::size_t c0 = column_of(from), c1 = column_of(to);
         const std::size_t first = c0 == 0 ? 0 : c0 - 1, last = std::min(cols_ - 1, c1 + 1);
-        for (std::size_t c = first; c <= last; ++c) cell_[r * cols_ + c] = static_cast<std::int8_t>(kOnOutline);
+        for (std::size_t c = first; c <= last; ++c) visit(r * cols_ + c);
     }
+}
+
+void PolygonIndex::edges_near(const Box& b, std::vector<std::uint32_t>& out) const {
+    const std::size_t from = out.size();
+    const std::size_t c0 = column_of(b.x0), c1 = column_of(b.x1), r0 = row_of(b.y0), r1 = row_of(b.y1);
+    for (std::size_t r = r0; r <= r1; ++r)
+        for (std::size_t c = c0; c <= c1; ++c) {
+            const std::size_t k = r * cols_ + c;
+            out.insert(out.end(), cell_edges_.begin() + cell_begin_[k], cell_edges_.begin() + cell_begin_[k + 1]);
+        }
+    std::sort(out.begin() + static_cast<std::ptrdiff_t>(from), out.end());
+    out.erase(std::unique(out.begin() + static_cast<std::ptrdiff_t>(from), out.end()), out.end());
+}
+
+void PolygonIndex::edges_in_rows(double y_lo, double y_hi, std::vector<std::uint32_t>& out) const {
+    const std::size_t from = out.size();
+    const std::size_t r0 = row_of(y_lo), r1 = row_of(y_hi);
+    for (std::size_t r = r0 == 0 ? 0 : r0 - 1; r <= std::min(rows_ - 1, r1 + 1); ++r)
+        out.insert(out.end(), by_right_.begin() + static_cast<std::ptrdiff_t>(row_begin_[r]),
+                   by_right_.begin() + static_cast<std::ptrdiff_t>(row_begin_[r + 1]));
+    std::sort(out.begin() + static_cast<std::ptrdiff_t>(from), out.end());
+    out.erase(std::unique(out.begin() + static_cast<std::ptrdiff_t>(from), out.end()), out.end());
 }
 
 void PolygonIndex::settle_clean_cells() {

@@ -51,10 +51,22 @@ public:
         return static_cast<Place>(cell_[row * cols_ + col]);
     }
 
+    // The edges that may meet box b (those of every grid cell it overlaps),
+    // appended to out sorted and without repeats. Every edge that meets b
+    // is among them.
+    void edges_near(const Box& b, std::vector<std::uint32_t>& out) const;
+    // The edges that may cross the horizontal line at any height in
+    // [y_lo, y_hi] widened by a row each way, appended sorted and without
+    // repeats: for a ray cast from a point known only to lie in that band.
+    void edges_in_rows(double y_lo, double y_hi, std::vector<std::uint32_t>& out) const;
+
 private:
     // The exact ray cast from p through the edges of its row.
     Place cast_ray(const Point& p, std::size_t row) const;
     void mark_edge_cells(std::size_t edge);
+    // Calls visit(k) for each grid cell k the edge marks.
+    template <class Visit>
+    void for_each_edge_cell(std::size_t edge, const Visit& visit) const;
     void settle_clean_cells();
 
     const PolygonRings& rings_;
@@ -67,6 +79,10 @@ private:
     // left end.
     std::vector<std::size_t> row_begin_;
     std::vector<std::uint32_t> by_right_, by_left_;
+    // Grid cell k's edges are cell_edges_[cell_begin_[k] .. cell_begin_[k + 1]),
+    // from the same marking as cell_ (so a cell's list holds every edge
+    // meeting it).
+    std::vector<std::uint32_t> cell_begin_, cell_edges_;
 };
 
 }  // namespace pds

@@ -9,15 +9,17 @@
 #include <string>
 
 #include "jones/plane_space.hpp"
+#include "jones/polygon_space.hpp"
 #include "jones/radius_rule.hpp"
 #include "jones/torus_space.hpp"
 
 namespace pds {
 
 template <class Space, class Rule>
-JonesLoop<Space, Rule>::JonesLoop(const Rectangle& domain, double r, const Torus& torus, const PointRadii* radii)
+JonesLoop<Space, Rule>::JonesLoop(const Rectangle& domain, double r, const Torus& torus, const PointRadii* radii,
+                                  std::shared_ptr<const Polygon> polygon)
     : rule_(radii),
-      space_(domain, r, torus, Rule::kWeighted),
+      space_(domain, r, torus, Rule::kWeighted, std::move(polygon)),
       r_(r),
       dt_(space_.mesh_region(), Rule::kWeighted, rule_.rmax()) {
     tree_.reserve(1);
@@ -224,7 +226,7 @@ void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
         const CellQuery q = cells.query(v);
         // One pass: the chunk holding target u * U; if the exact area A falls
         // short of the target, the selection is rejected.
-        const CellSelection sel = select_in_cell(q, cells.ring(v), rng.next_double() * bound[k]);
+        const CellSelection sel = cells.select(v, rng.next_double() * bound[k]);
         if (!sel.found()) {
             // The whole cell was measured: settle doubt, tighten the bound
             // (the same cell may come twice in a batch: only downwards).
@@ -250,15 +252,16 @@ void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
         // special care: every draw is checked exactly before it is kept, as
         // the space places it (the torus snaps it to its grid first).
         Point chosen{0.0, 0.0};
-        const auto accept = [&](const Point& p) {
+        const auto accept = [&](const Point& p, const Piece& piece) {
             chosen = space_.snap(p);
-            return acceptable(chosen, v);
+            return acceptable(chosen, v) && cells.counts(v, chosen, piece);
         };
         Point p;
-        // A site outside its power cell: its pieces reach outside the cell,
-        // so a draw there rejects the whole selection (a retry inside the
-        // piece would favour the piece's part in the cell).
-        const bool retry = rule_.retry_in_piece(dt_, v);
+        // A site outside its power cell, or a cell the outline cuts: its
+        // pieces reach outside the region, so a draw there rejects the whole
+        // selection (a retry inside the piece would favour the piece's part
+        // in the region).
+        const bool retry = rule_.retry_in_piece(dt_, v) && !cells.cut();
         const SampleOutcome drawn = sample_chunk(q, sel.chunk(), rng.next_double(), rng, accept, kMaxDraws, &p, retry);
         if (drawn == SampleOutcome::placed) {
             queue_.push_back(Candidate{chosen, v});
@@ -325,15 +328,22 @@ template class JonesLoop<PlaneSpace, OneRadius>;
 template class JonesLoop<PlaneSpace, PowerRule>;
 template class JonesLoop<TorusSpace, OneRadius>;
 template class JonesLoop<TorusSpace, PowerRule>;
+template class JonesLoop<PolygonSpace, OneRadius>;
+template class JonesLoop<PolygonSpace, PowerRule>;
 
 std::unique_ptr<JonesStage> make_jones_stage(const Rectangle& domain, double r, const Torus& torus,
-                                             const PointRadii* radii) {
+                                             const PointRadii* radii, std::shared_ptr<const Polygon> polygon) {
     if (torus.on()) {
-        if (radii) return std::make_unique<JonesLoop<TorusSpace, PowerRule>>(domain, r, torus, radii);
-        return std::make_unique<JonesLoop<TorusSpace, OneRadius>>(domain, r, torus, radii);
+        if (polygon) throw std::logic_error("a polygon on the torus");
+        if (radii) return std::make_unique<JonesLoop<TorusSpace, PowerRule>>(domain, r, torus, radii, nullptr);
+        return std::make_unique<JonesLoop<TorusSpace, OneRadius>>(domain, r, torus, radii, nullptr);
     }
-    if (radii) return std::make_unique<JonesLoop<PlaneSpace, PowerRule>>(domain, r, torus, radii);
-    return std::make_unique<JonesLoop<PlaneSpace, OneRadius>>(domain, r, torus, radii);
+    if (polygon) {
+        if (radii) return std::make_unique<JonesLoop<PolygonSpace, PowerRule>>(domain, r, torus, radii, polygon);
+        return std::make_unique<JonesLoop<PolygonSpace, OneRadius>>(domain, r, torus, radii, polygon);
+    }
+    if (radii) return std::make_unique<JonesLoop<PlaneSpace, PowerRule>>(domain, r, torus, radii, nullptr);
+    return std::make_unique<JonesLoop<PlaneSpace, OneRadius>>(domain, r, torus, radii, nullptr);
 }
 
 }  // namespace pds

@@ -51,6 +51,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/batch.hpp"
@@ -67,7 +68,8 @@ namespace pds {
 template <class Space, class Rule>
 class JonesLoop final : public JonesStage {
 public:
-    JonesLoop(const Rectangle& domain, double r, const Torus& torus, const PointRadii* radii);
+    JonesLoop(const Rectangle& domain, double r, const Torus& torus, const PointRadii* radii,
+              std::shared_ptr<const Polygon> polygon);
 
     void reserve(std::size_t points) override;
     bool has_room_for(std::size_t points) const override;
@@ -85,7 +87,7 @@ public:
     VerifyReport verify() const override;
 
     const Delaunay& mesh() const override { return dt_; }
-    MeshCells cells() const override { return MeshCells(dt_, space_.clip_box(), r_); }
+    MeshCells cells() const override { return MeshCells(dt_, space_.clip_box(), r_, space_.outline_clip()); }
     const TorusCopies& torus_copies() const override { return space_.copies(); }
     bool is_copy(VertexIndex v) const override { return space_.is_copy(v); }
     const JonesStats& stats() const override { return stats_; }
@@ -94,6 +96,7 @@ public:
 private:
     friend Space;
     friend Rule;
+    friend class PlaneSpace;  // PolygonSpace's insertion and hand-over are its base's
 
     static constexpr int kMaxDraws = 64;  // per piece; a healthy piece accepts > 1/2 of draws
     static constexpr int kFailuresPerGiveUp = 8;

@@ -17,6 +17,7 @@
 #include "core/point.hpp"
 #include "core/poll.hpp"
 #include "core/torus.hpp"
+#include "domain/polygon.hpp"
 #include "domain/rectangle.hpp"
 #include "jones/mesh_cells.hpp"
 #include "jones/stage.hpp"
@@ -73,8 +74,10 @@ public:
 
 // The domain and r in the internal frame, torus on for a periodic domain;
 // radii for a variable radius (r: the largest). May throw std::bad_alloc.
+// polygon: a polygonal domain inside the rectangle (polygon_space.hpp).
 std::unique_ptr<JonesStage> make_jones_stage(const Rectangle& domain, double r, const Torus& torus = Torus{},
-                                             const PointRadii* radii = nullptr);
+                                             const PointRadii* radii = nullptr,
+                                             std::shared_ptr<const Polygon> polygon = nullptr);
 
 }  // namespace pds
 

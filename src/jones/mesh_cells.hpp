@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "cells/cell_coverage.hpp"
+#include "cells/outline_clip.hpp"
+#include "cells/polygon_coverage.hpp"
 #include "mesh/delaunay.hpp"
 #include "cells/free_area.hpp"
 #include "core/indices.hpp"
@@ -20,8 +22,10 @@ namespace pds {
 
 class MeshCells {
 public:
-    // box and r in the sampler's internal frame.
-    MeshCells(const Delaunay& mesh, const Box& box, double r) : mesh_(mesh), box_(box), r_(r) {}
+    // box and r in the sampler's internal frame; clip: a polygonal domain's
+    // cutter (outline_clip.hpp), or nullptr for the box alone.
+    MeshCells(const Delaunay& mesh, const Box& box, double r, OutlineClip* clip = nullptr)
+        : mesh_(mesh), box_(box), r_(r), clip_(clip) {}
 
     CellQuery query(VertexIndex v) const { return CellQuery{mesh_.point(v), box_, radius(v)}; }
     // A site's radius: its own on a weighted mesh, else R.
@@ -46,13 +50,43 @@ public:
         mesh_.for_each_neighbour(v, [&](VertexIndex n) { ring.push_back(mesh_.point(n)); });
         return ring;
     }
-    // Never allocates.
-    CellMeasure measure(VertexIndex v) const { return measure_cell(query(v), ring(v)); }
-    // Exact (cell_coverage.hpp); allocates.
+    // Never allocates in a rectangle (a polygon's cutter keeps its scratch).
+    CellMeasure measure(VertexIndex v) const {
+        if (!clip_) return measure_cell(query(v), ring(v));
+        const CellQuery q = query(v);
+        cell_stream::CellSink sink(q.radius, -1.0);
+        OutlineClip::Stage<cell_stream::CellSink> cut(*clip_, sink, q.site, q.domain, q.radius);
+        const bool doubtful = cell_stream::stream_cell(q, ring(v), cut);
+        return verdict(sink, doubtful || clip_->doubtful(), q.radius);
+    }
+    // free_area.hpp's select_in_cell for v's cell.
+    CellSelection select(VertexIndex v, double target) const {
+        if (!clip_) return select_in_cell(query(v), ring(v), target);
+        const CellQuery q = query(v);
+        CellSelection s(q.radius, target);
+        s.sink.stop_at_target();
+        OutlineClip::Stage<cell_stream::CellSink> cut(*clip_, s.sink, q.site, q.domain, q.radius);
+        const bool doubtful = cell_stream::stream_cell(q, ring(v), cut);
+        s.measure = verdict(s.sink, doubtful || clip_->doubtful(), q.radius);
+        return s;
+    }
+    // After select(v): whether a draw p from piece counts (outline_clip.hpp),
+    // and whether a refused draw may be retried in the piece.
+    bool counts(VertexIndex v, const Point& p, const Piece& piece) const {
+        return !clip_ || clip_->counts(mesh_.point(v), p, piece, radius(v));
+    }
+    bool cut() const { return clip_ && clip_->cut(); }
+    // Exact (cell_coverage.hpp, polygon_coverage.hpp); allocates.
     bool covered_exactly(VertexIndex v) const {
-        if (!mesh_.weighted()) return cell_is_covered_exact(mesh_.point(v), ring_points(v), box_, r_);
         std::vector<double> radii;
-        mesh_.for_each_neighbour(v, [&](VertexIndex n) { radii.push_back(mesh_.radius(n)); });
+        mesh_.for_each_neighbour(v, [&](VertexIndex n) { radii.push_back(mesh_.weighted() ? mesh_.radius(n) : r_); });
+        if (clip_) {
+            measure(v);  // finds the outline edges near the cell
+            if (clip_->cut())
+                return outline_cell_is_covered_exact(mesh_.point(v), radius(v), ring_points(v), radii, box_,
+                                                     clip_->polygon(), clip_->edges());
+        }
+        if (!mesh_.weighted()) return cell_is_covered_exact(mesh_.point(v), ring_points(v), box_, r_);
         return power_cell_is_covered_exact(mesh_.point(v), mesh_.radius(v), ring_points(v), radii, box_);
     }
     // Sum of every real cell's free area, in vertex order.
@@ -67,6 +101,7 @@ private:
     const Delaunay& mesh_;
     Box box_;
     double r_;
+    OutlineClip* clip_;
 };
 
 }  // namespace pds

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/indices.hpp"
@@ -35,11 +36,13 @@ class PlaneSpace {
 public:
     static constexpr bool kPeriodic = false;
 
-    PlaneSpace(const Rectangle& domain, double /*r*/, const Torus& /*torus*/, bool /*weighted*/)
+    PlaneSpace(const Rectangle& domain, double /*r*/, const Torus& /*torus*/, bool /*weighted*/,
+               const std::shared_ptr<const Polygon>& /*polygon: none*/)
         : domain_(domain) {}
 
     Box mesh_region() const { return domain_.bounds(); }
     Box clip_box() const { return domain_.bounds(); }
+    OutlineClip* outline_clip() const { return nullptr; }
     const TorusCopies& copies() const { return no_copies_; }
     bool is_copy(VertexIndex) const { return false; }
     VertexIndex original(VertexIndex v) const { return v; }

@@ -4,7 +4,8 @@
 
 namespace pds {
 
-TorusSpace::TorusSpace(const Rectangle& /*domain: the torus holds its periods*/, double r, const Torus& torus, bool weighted)
+TorusSpace::TorusSpace(const Rectangle& /*domain: the torus holds its periods*/, double r, const Torus& torus, bool weighted,
+                       const std::shared_ptr<const Polygon>& /*polygon: none on the torus*/)
     : copies_(torus, r, weighted) {
     is_copy_.assign(Delaunay::kGhosts, 0);
     original_.assign(Delaunay::kGhosts, 0);

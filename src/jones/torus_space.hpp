@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -38,10 +39,12 @@ class TorusSpace {
 public:
     static constexpr bool kPeriodic = true;
 
-    TorusSpace(const Rectangle& domain, double r, const Torus& torus, bool weighted);
+    TorusSpace(const Rectangle& domain, double r, const Torus& torus, bool weighted,
+               const std::shared_ptr<const Polygon>& polygon);
 
     Box mesh_region() const { return copies_.largest_region(); }
     Box clip_box() const { return copies_.clip_box(); }
+    OutlineClip* outline_clip() const { return nullptr; }
     const TorusCopies& copies() const { return copies_; }
     bool is_copy(VertexIndex v) const { return is_copy_[v] != 0; }
     // The real vertex v copies (itself if real).

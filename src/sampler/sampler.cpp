@@ -5,7 +5,18 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "domain/mask_outline.hpp"
+
 namespace pds {
+
+namespace {
+
+std::shared_ptr<const Polygon> mask_polygon(std::size_t w, std::size_t h, const std::uint8_t* inside, const Box& box) {
+    const Outline o = mask_outline(w, h, inside, box);
+    return std::make_shared<const Polygon>(o.xy.data(), o.ring_ends.data(), o.ring_ends.size());
+}
+
+}  // namespace
 
 Sampler::Sampler(double radius, std::uint64_t seed)
     : frame_(Box{0.0, 0.0, 1.0, 1.0}, radius), seed_(seed), rng_(seed) {}
@@ -68,8 +79,44 @@ void Sampler::forget_stages() {
 
 void Sampler::set_domain(const Box& domain) {
     if (count() != 0) throw std::logic_error("set_domain after the first point");
+    rectangle_ = domain;
+    if (!mask_.empty()) {
+        use_shape(mask_polygon(mask_w_, mask_h_, mask_.data(), rectangle_));
+    } else if (!shape_) {
+        forget_stages();
+        frame_.set_domain(domain);
+        mean_inverse_square_ = RadiusField::MeanInverseSquare{};
+        if (count_target_ != 0) set_count(count_target_);
+    }
+}
+
+void Sampler::set_polygon(std::shared_ptr<const Polygon> polygon) {
+    if (count() != 0) throw std::logic_error("set_polygon after the first point");
+    mask_.clear();
+    mask_w_ = mask_h_ = 0;
+    use_shape(std::move(polygon));
+}
+
+void Sampler::set_mask(std::size_t w, std::size_t h, const std::uint8_t* inside) {
+    if (count() != 0) throw std::logic_error("set_mask after the first point");
+    if (w == 0 || h == 0) {
+        set_polygon(nullptr);
+        return;
+    }
+    // Built first: a refusal or std::bad_alloc changes nothing.
+    auto outline = mask_polygon(w, h, inside, rectangle_);
+    std::vector<std::uint8_t> copy(inside, inside + w * h);
+    use_shape(std::move(outline));
+    mask_ = std::move(copy);
+    mask_w_ = w;
+    mask_h_ = h;
+}
+
+void Sampler::use_shape(std::shared_ptr<const Polygon> shape) {
     forget_stages();
-    frame_.set_domain(domain);
+    shape_ = std::move(shape);
+    frame_.set_polygon(shape_);
+    if (!shape_) frame_.set_domain(rectangle_);
     mean_inverse_square_ = RadiusField::MeanInverseSquare{};
     if (count_target_ != 0) set_count(count_target_);
 }
@@ -131,7 +178,8 @@ void Sampler::prepare(std::size_t points) {
         }
         // Built aside, kept only when both exist: std::bad_alloc changes nothing.
         const std::optional<PointRadii> radii = point_radii(frame_);
-        auto jones = make_jones_stage(frame_.domain(), frame_.r(), frame_.torus(), radii ? &*radii : nullptr);
+        auto jones = make_jones_stage(frame_.domain(), frame_.r(), frame_.torus(), radii ? &*radii : nullptr,
+                                      frame_.shared_polygon());
         std::unique_ptr<OpeningStage> darts;
         if (use_darts())
             darts = make_opening_stage(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr);
@@ -315,7 +363,7 @@ std::size_t Sampler::copy_radii(std::size_t first, std::size_t n, double* r) con
 }
 
 double Sampler::free_area() const {
-    if (count() == 0) return frame_.user_domain().width() * frame_.user_domain().height();
+    if (count() == 0) return frame_.area_to_user(frame_.area());
     return frame_.area_to_user(stage().free_area());
 }
 

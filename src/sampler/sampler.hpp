@@ -33,9 +33,11 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "darts/opening_stage.hpp"
 #include "domain/frame.hpp"
+#include "domain/polygon.hpp"
 #include "jones/jones_stage.hpp"
 #include "core/point.hpp"
 #include "radius/point_radii.hpp"
@@ -52,7 +54,15 @@ public:
     Sampler(double radius, std::uint64_t seed);
 
     // Each requires count() == 0.
+    // The rectangle: the domain, or a mask's frame (without a polygon).
     void set_domain(const Box& domain);
+    // A polygonal domain in user units (nullptr: back to the rectangle).
+    void set_polygon(std::shared_ptr<const Polygon> polygon);
+    // A w x h mask spread over the rectangle, row 0 along y0 (mask_outline.hpp);
+    // w or h 0: back to the rectangle. Throws DomainError when no pixel is inside.
+    void set_mask(std::size_t w, std::size_t h, const std::uint8_t* inside);
+    // A polygon or a mask is set.
+    bool has_shape() const { return shape_ != nullptr; }
     void set_periodic(bool periodic);
     // Count mode: the radius is chosen, and lowered by 1% whenever the
     // pattern is maximal with fewer than n points (0 turns it off).
@@ -133,7 +143,13 @@ private:
     void hand_over();
     void lower_radius_for_count();
 
+    void use_shape(std::shared_ptr<const Polygon> shape);
+
     Frame frame_;
+    Box rectangle_{0.0, 0.0, 1.0, 1.0};        // the user's rectangle (set_domain)
+    std::shared_ptr<const Polygon> shape_;       // the polygon or the mask's outline, user units
+    std::size_t mask_w_ = 0, mask_h_ = 0;        // a mask, kept to follow the rectangle
+    std::vector<std::uint8_t> mask_;
     std::uint64_t seed_;
     Rng rng_;  // at seed_'s state while count() == 0
     bool skip_darts_ = false;

@@ -8,6 +8,7 @@
 
 #include "core/expansion.hpp"
 #include "core/circumcentre.hpp"
+#include "verify/verify_outline.hpp"
 #include "mesh/mesh_invariants.hpp"
 #include "core/roundoff.hpp"
 #include "core/predicates.hpp"
@@ -56,11 +57,11 @@ bool check_rule(const Delaunay& dt, const std::vector<std::size_t>& rank, Verify
 }
 
 bool check_points(const Delaunay& dt, const Rectangle& domain, double r, const std::vector<std::size_t>* rank,
-                  VerifyReport& rep) {
+                  const Polygon* polygon, VerifyReport& rep) {
     const std::vector<Point>& pts = dt.points();
     const Box& box = domain.bounds();
     for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
-        if (!domain.contains(pts[i])) {
+        if (!domain.contains(pts[i]) || (polygon && !polygon->contains(pts[i]))) {
             rep.failure = "a point lies outside the domain";
             rep.vertex = static_cast<VertexIndex>(i);
             return false;
@@ -109,6 +110,13 @@ bool uncovered_vertex(const Point& a, double ra, const Point& b, double rb, cons
     return (centre.nx * centre.nx + centre.ny * centre.ny - rr * den * den).sign() > 0;
 }
 
+// The power centre of the disks lies in the closed polygon, exactly.
+bool vertex_in_polygon(const Point& a, double ra, const Point& b, double rb, const Point& c, double rc,
+                       const Polygon& polygon) {
+    const ExactCentre centre = exact_power_centre(a, ra, b, rb, c, rc);
+    return polygon.contains_exact(centre.nx + centre.den.scaled(a.x), centre.ny + centre.den.scaled(a.y), centre.den);
+}
+
 // Float filter for uncovered_vertex: 1 certainly uncovered, 0 certainly not,
 // -1 undecided.
 int uncovered_vertex_fast(const Point& a, double r, const Point& b, double rb_, const Point& c, double rc_,
@@ -134,7 +142,8 @@ int uncovered_vertex_fast(const Point& a, double r, const Point& b, double rb_, 
     return -1;
 }
 
-bool voronoi_vertices_covered(const Delaunay& dt, const Box& box, double r, VerifyReport& rep) {
+bool voronoi_vertices_covered(const Delaunay& dt, const Box& box, double r, const Polygon* polygon,
+                              VerifyReport& rep) {
     const auto rad = [&](VertexIndex v) { return dt.weighted() ? dt.radius(v) : r; };
     const QuadEdgeMesh& m = dt.mesh();
     for (std::size_t rec = 0; rec < m.record_count(); ++rec) {
@@ -151,6 +160,7 @@ bool voronoi_vertices_covered(const Delaunay& dt, const Box& box, double r, Veri
             const double ra = rad(m.org(e)), rb = rad(m.org(f)), rc = rad(m.org(g));
             int u = uncovered_vertex_fast(a, ra, b, rb, c, rc, box);
             if (u < 0) u = uncovered_vertex(a, ra, b, rb, c, rc, box) ? 1 : 0;
+            if (u == 1 && polygon && !vertex_in_polygon(a, ra, b, rb, c, rc, *polygon)) u = 0;
             if (u == 1) {
                 rep.failure = dt.weighted() ? "a power-diagram vertex inside the domain lies outside its disks"
                                             : "a Voronoi vertex inside the domain is farther than R from its sites";
@@ -170,6 +180,14 @@ bool sides_covered(const Delaunay& dt, const Rectangle& domain, double r, Verify
         return false;
     }
     return true;
+}
+
+bool outline_covered(const Delaunay& dt, const Polygon& polygon, double r, VerifyReport& rep) {
+    const VertexIndex v = uncovered_outline_cell(dt, polygon, r);
+    if (v == kNoVertex) return true;
+    rep.failure = "a point of the domain near its outline lies outside every disk";
+    rep.vertex = v;
+    return false;
 }
 
 }  // namespace
@@ -192,16 +210,16 @@ void name_point(VerifyReport& rep, PointIndex k) {
 }
 
 VerifyReport verify_pattern(const Delaunay& dt, const Rectangle& domain, double radius,
-                            const std::vector<std::size_t>* rank) {
+                            const std::vector<std::size_t>* rank, const Polygon* polygon) {
     VerifyReport rep;
-    if (!check_points(dt, domain, radius, rank, rep) || !check_mesh(dt, rep)) {
+    if (!check_points(dt, domain, radius, rank, polygon, rep) || !check_mesh(dt, rep)) {
         rep.valid = false;
         return rep;
     }
     VerifyReport gap;
     rep.maximal = dt.vertex_count() > Delaunay::kGhosts &&
-                  voronoi_vertices_covered(dt, domain.bounds(), radius, gap) &&
-                  sides_covered(dt, domain, radius, gap);
+                  voronoi_vertices_covered(dt, domain.bounds(), radius, polygon, gap) &&
+                  (polygon ? outline_covered(dt, *polygon, radius, gap) : sides_covered(dt, domain, radius, gap));
     if (!rep.maximal) rep.failure = gap.failure.empty() ? "no points yet" : gap.failure;
     return rep;
 }

@@ -24,6 +24,7 @@
 #include "mesh/delaunay.hpp"
 #include "core/indices.hpp"
 #include "core/point.hpp"
+#include "domain/polygon.hpp"
 #include "domain/rectangle.hpp"
 
 namespace pds {
@@ -45,8 +46,10 @@ struct VerifyReport {
 // A weighted mesh (a variable radius): radius is the largest, rank[v] is
 // vertex v's place in the order the points were added (the spacing rule
 // depends on it), and maximality is judged on the power diagram.
+// polygon: a polygonal domain inside the rectangle (verify_outline.cpp): points
+// must lie in it, and maximality is judged in it.
 VerifyReport verify_pattern(const Delaunay& dt, const Rectangle& domain, double radius,
-                            const std::vector<std::size_t>* rank = nullptr);
+                            const std::vector<std::size_t>* rank = nullptr, const Polygon* polygon = nullptr);
 // Exact: the circumcentre of the counterclockwise triangle (a, b, c) lies in
 // the closed box and farther than r from the corners.
 bool voronoi_vertex_uncovered(const Point& a, const Point& b, const Point& c, const Box& box, double r);

@@ -35,7 +35,7 @@ void fill(Stage& stage, std::uint64_t seed, std::size_t room) {
 // stage made; counts the pairs within 1.01 R into *near_pairs.
 std::size_t fill_and_check(const pds::Box& box, const pds::Torus& t, double r, std::uint64_t seed,
                            std::size_t* near_pairs) {
-    pds::DartStage stage(box, r, t);
+    pds::DartStage stage(box, nullptr, r, t);
     fill(stage, seed, 60000);
     const std::vector<pds::Point>& pts = stage.points();
     ck_assert_uint_gt(pts.size(), 100);
@@ -87,7 +87,7 @@ START_TEST(handover_order_on_a_wide_grid) {
     // side is 2^18 and its keys need 36 bits.
     const double r = 1e-5;
     const pds::Box box{0, 0, 1, r};
-    pds::DartStage stage(box, r);
+    pds::DartStage stage(box, nullptr, r);
     fill(stage, 5, 200000);
     const std::vector<pds::Point>& pts = stage.points();
     const std::size_t n = pts.size();
@@ -127,7 +127,7 @@ START_TEST(handover_order_follows_the_curve_on_a_square) {
     // swaps.
     const double r = 0.004;
     const pds::Box box{0, 0, 1, 1};
-    pds::DartStage stage(box, r);
+    pds::DartStage stage(box, nullptr, r);
     fill(stage, 5, 100000);
     const std::vector<pds::Point>& pts = stage.points();
     const std::size_t n = pts.size();
@@ -147,7 +147,7 @@ START_TEST(huge_pages_follow_the_points) {
     // so a short run's points (1000: 4 MB on small pages) must not ask for
     // them; points enough to write every small page of the grid once on
     // average (34,000 and more) must, as a full run's reservation does.
-    pds::DartStage stage(pds::Box{0, 0, 1, 1}, 3.4e-4);
+    pds::DartStage stage(pds::Box{0, 0, 1, 1}, nullptr, 3.4e-4);
     stage.reserve(1000);
     ck_assert_uint_eq(stage.grid().cells().advised_bytes(), 0);
     stage.reserve(30000);
@@ -182,8 +182,8 @@ START_TEST(sparse_grid_decides_as_the_dense_one) {
         const bool on_torus = seed % 2 == 0;
         const pds::Box& box = on_torus ? small : plane;
         const pds::Torus torus = on_torus ? t : pds::Torus{};
-        pds::DartStage dense(box, r, torus);
-        pds::SparseDartStage sparse(box, r, torus);
+        pds::DartStage dense(box, nullptr, r, torus);
+        pds::SparseDartStage sparse(box, nullptr, r, torus);
         fill(dense, seed, 60000);
         fill(sparse, seed, 60000);
         ck_assert_uint_gt(sparse.count(), 1000);

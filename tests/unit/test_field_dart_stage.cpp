@@ -74,7 +74,7 @@ START_TEST(field_dart_points_keep_the_rule) {
         const Field f(fn, &r0, fn == gradient ? 4.0 : 2.5);
         std::size_t near_pairs = 0, exact = 0;
         for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-            pds::FieldDartStage stage(f.frame.box(), f.radii);
+            pds::FieldDartStage stage(f.frame.box(), nullptr, f.radii);
             ck_assert_uint_ge(stage.grid().layer_count(), fn == gradient ? 5 : 3);
             fill(stage, seed);
             ck_assert_uint_gt(stage.count(), 500);
@@ -133,7 +133,7 @@ END_TEST
 START_TEST(field_hand_over_keeps_points_and_values) {
     double r0 = 0.01;
     const Field f(gradient, &r0, 4.0);
-    pds::FieldDartStage stage(f.frame.box(), f.radii);
+    pds::FieldDartStage stage(f.frame.box(), nullptr, f.radii);
     fill(stage, 11);
     const std::size_t n = stage.count();
     ck_assert_uint_gt(n, 500);
