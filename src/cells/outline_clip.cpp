@@ -57,6 +57,15 @@ void OutlineClip::cut_cell(const Point& site, const Box& box, double r) {
     }
     cut_ = true;
     index.edges_near(near, edges_);
+    // Only the edges whose box meets the cell's: the grid's lists are wider.
+    const PolygonRings& rings = polygon_.rings();
+    edges_.erase(std::remove_if(edges_.begin(), edges_.end(),
+                                [&](std::uint32_t e) {
+                                    const Point a = rings.edge_start(e), b = rings.edge_end(e);
+                                    return std::max(a.x, b.x) < near.x0 || std::min(a.x, b.x) > near.x1 ||
+                                           std::max(a.y, b.y) < near.y0 || std::min(a.y, b.y) > near.y1;
+                                }),
+                 edges_.end());
     keep_cell_edges(site, box, margin);
     keep_outline_edges(site, box, margin);
 }
@@ -70,7 +79,7 @@ void OutlineClip::keep_cell_edges(const Point& site, const Box& box, double marg
         const Vtx& v = cell_[(i + 1) % n];
         const Point d{v.x - u.x, v.y - u.y};
         if (d.x == 0.0 && d.y == 0.0) continue;
-        const double dlen = std::hypot(d.x, d.y);
+        const double dlen = std::sqrt(d.x * d.x + d.y * d.y);
         // Where the outline crosses this edge, and the sharpest crossing.
         cuts_.clear();
         double sine = 1.0, scale = magnitude(u) + magnitude(v);
@@ -84,7 +93,7 @@ void OutlineClip::keep_cell_edges(const Point& site, const Box& box, double marg
             const double s = cross(w, ev) / den, t = cross(w, d) / den;
             if (!(s > 0.0 && s < 1.0 && t >= 0.0 && t <= 1.0)) continue;
             cuts_.push_back(s);
-            sine = std::min(sine, std::fabs(den) / (dlen * std::hypot(ev.x, ev.y)));
+            sine = std::min(sine, std::fabs(den) / (dlen * std::sqrt(ev.x * ev.x + ev.y * ev.y)));
             scale = std::max(scale, std::fabs(a.x) + std::fabs(a.y) + std::fabs(b.x) + std::fabs(b.y));
         }
         if (sine < kGrazingSine) doubtful_ = true;
@@ -127,7 +136,7 @@ void OutlineClip::keep_outline_edges(const Point& site, const Box& box, double m
             continue;
         const Point a{a0.x - site.x, a0.y - site.y}, b{b0.x - site.x, b0.y - site.y};
         const Point ev{b.x - a.x, b.y - a.y};
-        const double elen = std::hypot(ev.x, ev.y);
+        const double elen = std::sqrt(ev.x * ev.x + ev.y * ev.y);
         double t0 = 0.0, t1 = 1.0, sine0 = 1.0, sine1 = 1.0;
         for (std::size_t i = 0; i < n && t0 < t1; ++i) {
             const Vtx& u = cell_[i];
@@ -140,9 +149,9 @@ void OutlineClip::keep_outline_edges(const Point& site, const Box& box, double m
                 continue;
             }
             const double t = -g0 / g1;
-            const double sine = std::fabs(g1) / (std::hypot(d.x, d.y) * elen);
-            if (g1 > 0.0 && t > t0) t0 = t, sine0 = sine;
-            if (g1 < 0.0 && t < t1) t1 = t, sine1 = sine;
+            const auto sine = [&] { return std::fabs(g1) / (std::sqrt(d.x * d.x + d.y * d.y) * elen); };
+            if (g1 > 0.0 && t > t0) t0 = t, sine0 = sine();
+            if (g1 < 0.0 && t < t1) t1 = t, sine1 = sine();
         }
         if (!(t0 < t1)) continue;
         if (std::min(sine0, sine1) < kGrazingSine) doubtful_ = true;
@@ -171,7 +180,7 @@ bool OutlineClip::counts(const Point& site, const Point& p, const Piece& piece, 
     for (std::uint32_t id : edges_) {
         const Point a = rings.edge_start(id), b = rings.edge_end(id);
         const Point ab{b.x - a.x, b.y - a.y};
-        const double len = std::hypot(ab.x, ab.y);
+        const double len = std::sqrt(ab.x * ab.x + ab.y * ab.y);
         // The edge the piece lies along ends the ray there: it does not separate.
         if (std::fabs(cross(ab, Point{pa.x - a.x, pa.y - a.y})) <= tol * len &&
             std::fabs(cross(ab, Point{qa.x - a.x, qa.y - a.y})) <= tol * len)

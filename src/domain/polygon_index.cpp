@@ -21,13 +21,18 @@ bool on_segment(const Point& p, const Point& a, const Point& b) {
            orient2d(a, b, p) == 0;
 }
 
-// About four cells per edge, at least 1024 and at most 2^24.
-constexpr double kCellsPerEdge = 4.0;
+// About sixteen cells per edge, at least 1024 and at most 2^22.
+constexpr double kCellsPerEdge = 16.0;
 constexpr double kMinCells = 1024.0;
-constexpr double kMaxCells = 16777216.0;
+constexpr double kMaxCells = 4194304.0;
 // A cell stays wider than this share of the largest coordinate, so that the
-// one-cell margin of the marking dwarfs the rounding of an interpolation.
+// marking's slack dwarfs the rounding of an interpolation.
 constexpr double kMinCellShare = 0x1p-40;
+// An edge marks the cells within this share of a cell of it, or within
+// 2^-44 of the largest coordinate if that is more (256 units in the last
+// place; a cell is at least 2^-40 of it).
+constexpr double kSlackShare = 0x1p-20;
+constexpr double kSlackFloor = 0x1p-44;
 
 }  // namespace
 
@@ -108,21 +113,24 @@ void PolygonIndex::for_each_edge_cell(std::size_t edge, const Visit& visit) cons
     const double y_lo = std::min(a.y, b.y), y_hi = std::max(a.y, b.y);
     const double x_lo = min_x(a, b), x_hi = max_x(a, b);
     const double row_height = 1.0 / row_scale_;
+    // The slack: far above the rounding of the band's ends and of the
+    // interpolation (a few units in the last place of the coordinates),
+    // far below a cell.
+    const double floor = kSlackFloor * box_.largest_magnitude();
+    const double dy = std::max(kSlackShare * row_height, floor), dx = std::max(kSlackShare / col_scale_, floor);
     for (std::size_t r = row_of(y_lo); r <= row_of(y_hi); ++r) {
-        // The edge's x range over this row's band widened by a row each way.
+        // The edge's x range over this row's band, both widened by the slack.
         double from = x_lo, to = x_hi;
         if (y_hi > y_lo) {
-            const double band_lo = std::max(y_lo, box_.y0 + (static_cast<double>(r) - 1.0) * row_height);
-            const double band_hi = std::min(y_hi, box_.y0 + (static_cast<double>(r) + 2.0) * row_height);
+            const double band_lo = std::max(y_lo, box_.y0 + static_cast<double>(r) * row_height - dy);
+            const double band_hi = std::min(y_hi, box_.y0 + static_cast<double>(r + 1) * row_height + dy);
             const double slope = (b.x - a.x) / (b.y - a.y);
             const double u = a.x + (band_lo - a.y) * slope, v = a.x + (band_hi - a.y) * slope;
-            from = std::max(x_lo, std::min(u, v));
-            to = std::min(x_hi, std::max(u, v));
+            from = std::max(x_lo, std::min(u, v) - dx);
+            to = std::min(x_hi, std::max(u, v) + dx);
             if (!(from <= to)) from = x_lo, to = x_hi;  // a band the rounding emptied: the whole range
         }
-        const std::size_t c0 = column_of(from), c1 = column_of(to);
-        const std::size_t first = c0 == 0 ? 0 : c0 - 1, last = std::min(cols_ - 1, c1 + 1);
-        for (std::size_t c = first; c <= last; ++c) visit(r * cols_ + c);
+        for (std::size_t c = column_of(from), last = column_of(to); c <= last; ++c) visit(r * cols_ + c);
     }
 }
 
@@ -170,9 +178,47 @@ void PolygonIndex::settle_clean_cells() {
 
 PolygonIndex::Place PolygonIndex::locate(const Point& p) const {
     if (!box_.contains(p)) return kOutside;
-    const std::size_t r = row_of(p.y);
-    const Place clean = cell_place(column_of(p.x), r);
-    return clean != kOnOutline ? clean : cast_ray(p, r);
+    const std::size_t r = row_of(p.y), c = column_of(p.x);
+    const Place clean = cell_place(c, r);
+    return clean != kOnOutline ? clean : cast_short_ray(p, r, c);
+}
+
+PolygonIndex::Place PolygonIndex::cast_short_ray(const Point& p, std::size_t row, std::size_t col) const {
+    // To the right as far as the first clean cell: its place, flipped by
+    // each crossing of the segment from p to a point q inside it. The
+    // edges that can cross are those of the cells in between, each counted
+    // once (a cell lists its edges in increasing order).
+    constexpr std::size_t kMaxEdges = 128;
+    std::uint32_t edges[kMaxEdges];
+    std::size_t n = 0;
+    std::size_t k = col;
+    for (; k < cols_ && cell_place(k, row) == kOnOutline; ++k) {
+        const std::size_t cell = row * cols_ + k;
+        for (std::uint32_t at = cell_begin_[cell]; at < cell_begin_[cell + 1]; ++at) {
+            if (n == kMaxEdges) return cast_ray(p, row);  // a crowded row: the whole of it
+            edges[n++] = cell_edges_[at];
+        }
+    }
+    std::sort(edges, edges + n);
+    n = static_cast<std::size_t>(std::unique(edges, edges + n) - edges);
+    const bool to_clean = k < cols_;
+    const Point q{box_.x0 + (static_cast<double>(k) + 0.5) / col_scale_, p.y};
+    if (to_clean && (column_of(q.x) != k || row_of(q.y) != row)) return cast_ray(p, row);
+    bool odd = to_clean && cell_place(k, row) == kInside;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Point a = rings_.edge_start(edges[i]), b = rings_.edge_end(edges[i]);
+        if ((a.y > p.y) == (b.y > p.y)) {
+            if (on_segment(p, a, b)) return kOnOutline;
+            continue;
+        }
+        const Point& lo = a.y > p.y ? b : a;
+        const Point& hi = a.y > p.y ? a : b;
+        const int side = orient2d(lo, hi, p);
+        if (side == 0) return kOnOutline;
+        // The edge crosses p's ray to the right; before q unless q lies left of it.
+        if (side == 1 && (!to_clean || orient2d(lo, hi, q) == -1)) odd = !odd;
+    }
+    return odd ? kInside : kOutside;
 }
 
 PolygonIndex::Place PolygonIndex::cast_ray(const Point& p, std::size_t row) const {

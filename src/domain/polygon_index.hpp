@@ -14,9 +14,11 @@
 //     side reads only the edges it can cross, and takes the shorter side;
 //   - each cell that no edge meets ("clean") holds the answer for all its
 //     points, found once by a ray cast from a point inside it.
-// The cells an edge meets are marked from its height band widened by a row
-// and a column on each side, more than rounding can move it: a cell marked
-// without need only costs a ray cast, one missed would be wrong.
+// The cells an edge meets are marked from its height band and its x range
+// there, each widened by a slack of 2^-20 of a cell, far more than rounding
+// can move them: a cell marked without need only costs a ray cast, one
+// missed would be wrong. The cells keep their edges' lists too, for the
+// short ray casts and the cells of the mesh that the outline cuts.
 #ifndef PDS_POLYGON_INDEX_HPP
 #define PDS_POLYGON_INDEX_HPP
 
@@ -63,6 +65,9 @@ public:
 private:
     // The exact ray cast from p through the edges of its row.
     Place cast_ray(const Point& p, std::size_t row) const;
+    // The same, only as far as the first clean cell to the right of p's
+    // (column col): usually a few cells' edges instead of the row's.
+    Place cast_short_ray(const Point& p, std::size_t row, std::size_t col) const;
     void mark_edge_cells(std::size_t edge);
     // Calls visit(k) for each grid cell k the edge marks.
     template <class Visit>
