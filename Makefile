@@ -87,7 +87,7 @@ CHECK_LIBS = $$(pkg-config --libs check)
 .PHONY: all demo check check-quick bench install uninstall clean deps abi-baseline \
         check-layers check-unit check-api check-header check-symbols check-abi check-man \
         check-examples check-python check-pkgconfig check-cli check-valgrind \
-        bench-quick bench-phases check-bench check-threads check-sanitizers check-asan check-tsan \
+        bench-quick bench-phases bench-domains check-bench check-threads check-sanitizers check-asan check-tsan \
         check-tools
 
 all: $(LIB_SO) $(B)/libpoissondisk.so $(B)/$(SONAME) $(LIB_A) $(CLI)
@@ -435,8 +435,18 @@ BENCH_SRC := $(sort $(wildcard bench/*.c))
 $(B)/bench: $(BENCH_SRC) $(wildcard bench/*.h) include/poissondisk.h $(LIB_A)
 	$(CC) $(PDS_CFLAGS) -O2 $(CFLAGS) -o $@ $(BENCH_SRC) $(LIB_A) -lstdc++ -lm
 
-bench: $(B)/bench
+bench: $(B)/bench $(B)/bench-domains
 	$(B)/bench --csv $(B)/bench.csv --svg $(B)/bench.svg $(BENCH_ARGS)
+	$(B)/bench-domains
+
+# A polygonal domain's cost per point against its bounding rectangle
+# (bench/domains/domains.c): outlines of 10^3 and 10^5 vertices with a hole,
+# about 10^6 points each. DOMAINS_ARGS: [--repeats K] [--points N].
+$(B)/bench-domains: bench/domains/domains.c include/poissondisk.h $(LIB_A)
+	$(CC) $(PDS_CFLAGS) -O2 $(CFLAGS) -o $@ bench/domains/domains.c $(LIB_A) -lstdc++ -lm
+
+bench-domains: $(B)/bench-domains
+	$(B)/bench-domains $(DOMAINS_ARGS)
 
 # Where the time of one run goes (bench/phases.cpp): the stages of a pds_run
 # timed one by one, with the darts thrown and the Jones loop's selections.

@@ -44,7 +44,16 @@ class OutlineClip {
 public:
     using Vtx = cell_stream::Vtx;
 
-    explicit OutlineClip(const Polygon& polygon) : polygon_(polygon) {}
+    // Reserves its scratch: the loop measures a new cell between changes
+    // to the mesh, where nothing may allocate, so the vectors only grow for
+    // a cell beyond these sizes (a site of degree 256, or 4096 outline
+    // edges near one cell).
+    explicit OutlineClip(const Polygon& polygon) : polygon_(polygon) {
+        cell_.reserve(256);
+        segments_.reserve(4096);
+        edges_.reserve(4096);
+        cuts_.reserve(4096);
+    }
 
     // The last cell streamed through sink(): whether the outline cut it (its
     // pieces may then reach outside the region), and the outline edges near it.
