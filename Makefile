@@ -114,9 +114,10 @@ $(LIB_A): $(LIB_OBJ)
 # ---- command-line program: public API only, linked against the static library --------
 # The pictures (PNG included: tools/png.c writes it) need nothing beyond libc and libm.
 CLI_SRC := tools/poissondisk.c tools/cli_args.c tools/cli_options.c tools/cli_progress.c tools/cli_report.c \
-           tools/cli_field.c tools/pgm.c \
+           tools/cli_field.c tools/pgm.c tools/cli_domain.c \
+           tools/shape_files.c tools/shape_text.c tools/geojson.c tools/json_check.c \
            tools/cli_sample.c tools/cli_outputs.c tools/cli_output_args.c tools/cli_spectrum.c \
-           tools/out_formats.c tools/pattern_svg.c tools/pattern_png.c tools/pattern_stats.c tools/pattern_layers.c \
+           tools/out_formats.c tools/pattern_svg.c tools/pattern_png.c tools/pattern_domain.c tools/pattern_stats.c tools/pattern_layers.c \
            tools/png.c tools/points_in.c tools/spectrum.c tools/spectrum_out.c \
            tools/spectrum_plot.c
 $(CLI): $(CLI_SRC) $(wildcard tools/*.h) include/poissondisk.h $(LIB_A)
@@ -248,6 +249,7 @@ check-cli: $(CLI)
 	sh tests/check-cli-features.sh $(CLI)
 	sh tests/check-cli-output.sh $(CLI)
 	sh tests/check-cli-field.sh $(CLI)
+	sh tests/check-cli-domains.sh $(CLI)
 
 # check-python: tests/python/run_venv.py pip-installs a copy of bindings/python offline
 # into a scratch venv of SYSTEM_PYTHON (--system-site-packages: Debian's numpy and scipy

@@ -45,10 +45,26 @@ int cli_write_points(const char *prog, const pds_sampler *s, const struct cli_ou
     return 0;
 }
 
+/* The shape to draw, from the files read (cli_domain.h). */
+static void shape_of(struct pattern_shape *ps, const struct cli_domain *d)
+{
+    memset(ps, 0, sizeof *ps);
+    if (d->polygon != NULL) {
+        ps->rings_xy = d->rings.xy;
+        ps->ring_ends = d->rings.ring_ends;
+        ps->nrings = d->rings.nrings;
+    } else if (d->mask != NULL) {
+        ps->inside = d->inside;
+        ps->mask_w = d->mask_w;
+        ps->mask_h = d->mask_h;
+    }
+}
+
 int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_outputs *o,
                        const struct cli_where *w)
 {
     struct pattern p;
+    struct pattern_shape shape;
     double *xy, *radii = NULL;
     int status = 0;
 
@@ -76,6 +92,11 @@ int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_
     }
     p.dot = o->dot;
     p.periodic = w->periodic;
+    p.shape = NULL;
+    if (w->shape != NULL) {
+        shape_of(&shape, w->shape);
+        p.shape = &shape;
+    }
     if (o->svg != NULL && pattern_write_svg(&p, o->disks, o->svg) != 0)
         status = write_failed(prog, o->svg);
     if (status == 0 && o->png != NULL && pattern_write_png(&p, o->size, o->png) != 0)

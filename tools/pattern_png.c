@@ -64,6 +64,11 @@ int pattern_write_png(const struct pattern *p, unsigned size, const char *path)
     }
     for (k = 0; k < (size_t)pw * ph; k++)
         pix[k] = 255;
+    /* The box outside a polygon or mask grey, the outline under the dots. */
+    if (p->shape != NULL && pattern_png_outline(pix, pw, ph, p, scale) != 0) {
+        free(pix);
+        return -1;
+    }
     for (k = 0; k < p->n; k++) {
         /* Pixel coordinates: x to the right from x0, y downwards from y1. */
         double cx = (p->xy[2 * k] - b[0]) * scale, cy = (b[3] - p->xy[2 * k + 1]) * scale;

@@ -8,7 +8,8 @@
  * lets the library choose the radius for an exact number of points instead,
  * and --periodic makes the pattern tile the plane; --radius-map gives each
  * point a radius of its own, from a grey-scale image (cli_field.c: black
- * dense, white sparse, as a stippling). --format and --output
+ * dense, white sparse, as a stippling). --polygon and --mask shape the
+ * domain (cli_domain.c). --format and --output
  * choose how and where the points go; --svg, --png and the --spectrum
  * options draw and analyse the pattern (cli_outputs.c, cli_spectrum.c).
  *
@@ -93,6 +94,13 @@ int main(int argc, char **argv)
         status = cli_spectrum_from_file(PROG, &o.out, &o.where, o.refines.radius);
         goto done;
     }
+    /* Every input file is read before the sampler exists, the outputs long after:
+       a malformed file leaves no output behind. */
+    if (o.domain.polygon != NULL || o.domain.mask != NULL) {
+        if ((status = cli_domain_load(PROG, &o.domain, o.where.box)) != 0)
+            goto done;
+        o.where.shape = &o.domain;
+    }
     if (o.field.path != NULL) {
         if ((status = cli_field_load(PROG, &o.field)) != 0)
             goto done;
@@ -159,6 +167,7 @@ int main(int argc, char **argv)
 done:
     pds_destroy(s);
     cli_field_free(&o.field);
+    cli_domain_free(&o.domain);
     free(o.refines.refine);
     return status;
 }
