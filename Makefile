@@ -176,6 +176,27 @@ stipple-image:
 	$(PYTHON) docs/stipple_image.py > docs/stipple.pgm.tmp || { rm -f docs/stipple.pgm.tmp; exit 1; }
 	mv docs/stipple.pgm.tmp docs/stipple.pgm
 
+# ---- island-picture: the README's shaped domain (--polygon) ---------------------------
+# docs/island.geojson is a made-up island, a coast of 420 vertices with a lake (a hole)
+# and an islet, and docs/island.pgm its radius map over the bounding box, dark along
+# every shore; docs/island.py draws both (make island-data draws them again, the same
+# bytes). The points fill the island and the islet but not the lake, dense along the
+# shores: docs/island.svg. tests/check-cli-domains.sh checks that the committed picture
+# is this command's output. Written to a temporary file first, as the tile above.
+ISLAND_ARGS := --polygon docs/island.geojson --radius-map docs/island.pgm --rmin 0.09 \
+               --rmax 0.45 --seed 1 --dot-radius 0.05
+.PHONY: island-picture island-data
+island-picture: $(CLI)
+	$(CLI) $(ISLAND_ARGS) --verify --stats --svg docs/island.svg.tmp > /dev/null \
+	    || { rm -f docs/island.svg.tmp; exit 1; }
+	mv docs/island.svg.tmp docs/island.svg
+island-data:
+	$(PYTHON) docs/island.py geojson > docs/island.geojson.tmp \
+	    || { rm -f docs/island.geojson.tmp; exit 1; }
+	$(PYTHON) docs/island.py pgm > docs/island.pgm.tmp || { rm -f docs/island.pgm.tmp; exit 1; }
+	mv docs/island.geojson.tmp docs/island.geojson
+	mv docs/island.pgm.tmp docs/island.pgm
+
 # ---- tests ---------------------------------------------------------------------------
 deps:
 	@sh tests/install-deps.sh

@@ -213,4 +213,23 @@ file_case "--mask, a colour PPM" "--mask $bad/colour.ppm: " --radius 0.02 --mask
 file_case "--mask, a grey level above maxval" "--mask $bad/level.pgm: " \
     --radius 0.02 --mask "$bad/level.pgm"
 
+# ---- the README's island (make island-picture, make island-data) -----------------------
+# Run from the top of the tree: the committed data is what docs/island.py draws, and
+# the committed picture what `make island-picture` draws from it.
+if [ -f docs/island.py ] && [ -f docs/island.geojson ] && [ -f docs/island.svg ]; then
+    expect "docs/island.geojson is what docs/island.py draws" \
+        eval '"$python" docs/island.py geojson | cmp -s - docs/island.geojson'
+    expect "docs/island.pgm is what docs/island.py draws" \
+        eval '"$python" docs/island.py pgm | cmp -s - docs/island.pgm'
+    # The Makefile's ISLAND_ARGS.
+    run island --polygon docs/island.geojson --radius-map docs/island.pgm --rmin 0.09 \
+        --rmax 0.45 --seed 1 --dot-radius 0.05 --svg "$tmp/island.svg" --verify --stats
+    expect "the island: exit 0, maximal and verified" \
+        eval '[ "$rc" -eq 0 ] && grep -q " polygon coverage=1\.0* maximal verified " "$tmp/island.err"'
+    expect "the island: every point on the island or the islet, none in the lake" \
+        dc inside "$tmp/island.out" "polygon:docs/island.geojson"
+    expect "docs/island.svg is what 'make island-picture' draws now" \
+        cmp -s docs/island.svg "$tmp/island.svg"
+fi
+
 finish
