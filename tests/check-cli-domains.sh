@@ -1,9 +1,10 @@
 #!/bin/sh
 # check-cli-domains.sh - behaviour tests for the shaped domains of the
 # poissondisk command-line program: --polygon FILE (GeoJSON or "x y" text,
-# even-odd rings) and --mask FILE (the dark pixels of a PGM image), their
-# pictures, and their errors: a malformed file exits 1 naming the file and
-# where, and writes nothing.
+# even-odd rings), --mask FILE (the dark pixels of a PGM image) and --fixed
+# FILE (points already there, with clearances), their pictures, and their
+# errors: a malformed file exits 1 naming the file and where, and writes
+# nothing.
 #
 #   sh tests/check-cli-domains.sh build/poissondisk
 #
@@ -66,6 +67,14 @@ cat > "$tmp/shape.geojson" << 'EOF'
    [[[0.45, 0.9], [0.55, 0.9], [0.5, 0.8], [0.45, 0.9]]]]}}
 EOF
 POLY="polygon:$tmp/shape.txt"
+# Fixed points: one with the default clearance, an obstacle, one outside the
+# domain (in the notch) whose clearance still reaches into it.
+cat > "$tmp/fixed.txt" << 'EOF'
+0.2 0.3
+0.75 0.3 0.12   # an obstacle
+0.5 0.6 0.05
+EOF
+printf '0 0\n1 0\n1 1\n0 1\n' > "$tmp/square.txt"
 # A 40 x 30 mask over [0,1.5]x[0,1]: an annulus and a block at the top left (rows
 # are written top first), grey levels 0..255 with mid-grey 128 outside.
 "$python" - "$tmp/mask.pgm" << 'EOF'
@@ -120,6 +129,36 @@ run polyref --radius 0.04 --refine 0.02 --polygon "$tmp/shape.txt" --verify
 expect "--polygon --refine: exits 0, inside, covered at the last radius" \
     eval '[ "$rc" -eq 0 ] && dc inside "$tmp/polyref.out" "$POLY" && dc covered "$tmp/polyref.out" 0.02 "$POLY" - 0.01'
 
+# ---- --fixed -----------------------------------------------------------------------------
+run fix --radius 0.02 --polygon "$tmp/shape.txt" --fixed "$tmp/fixed.txt" --verify --stats \
+    --svg "$tmp/fix.svg" --png "$tmp/fix.png"
+expect "--polygon --fixed --verify exits 0 (got $rc)" [ "$rc" -eq 0 ]
+expect "--fixed --stats: fixed=3, maximal and verified" \
+    grep -Eq '^poissondisk: N=[0-9]+ .* polygon fixed=3 coverage=1\.0+ maximal verified ' "$tmp/fix.err"
+expect "--fixed: the output holds the N new points only" \
+    [ "$(sed -n 's/^poissondisk: N=\([0-9]*\) .*/\1/p' "$tmp/fix.err")" = "$(lines "$tmp/fix.out")" ]
+expect "--fixed: inside the polygon" dc inside "$tmp/fix.out" "$POLY"
+expect "--fixed: R apart, and each fixed point's clearance kept (none printed)" \
+    dc spacing "$tmp/fix.out" 0.02 "$tmp/fixed.txt"
+expect "--fixed: every probe within R of a point or in a clearance" \
+    dc covered "$tmp/fix.out" 0.02 "$POLY" "$tmp/fixed.txt" 0.005
+expect "--fixed: no point in the obstacle's clearance 0.12 (a plain pattern has some)" \
+    eval 'awk "(\$1 - 0.75) ^ 2 + (\$2 - 0.3) ^ 2 < 0.0144" "$tmp/poly.out" | grep -q . &&
+          ! awk "(\$1 - 0.75) ^ 2 + (\$2 - 0.3) ^ 2 < 0.0144" "$tmp/fix.out" | grep -q .'
+expect "--fixed --svg: the outline's rings, the clearances and the fixed points" \
+    dc svg "$tmp/fix.svg" "$POLY" "$tmp/fixed.txt" 0.02
+expect "--fixed --png: grey outside the polygon, white inside, the points dark" \
+    dc png "$tmp/fix.png" "$POLY" "$tmp/fix.out"
+run fixsq --radius 0.02 --fixed "$tmp/fixed.txt" --verify
+expect "--fixed on the unit square: exit 0, R apart and clearances kept, covered" \
+    eval '[ "$rc" -eq 0 ] && dc spacing "$tmp/fixsq.out" 0.02 "$tmp/fixed.txt" &&
+          dc covered "$tmp/fixsq.out" 0.02 "polygon:$tmp/square.txt" "$tmp/fixed.txt" 0.01'
+printf '# nothing\n\n' > "$tmp/nofixed.txt"
+run fixnone --radius 0.02 --fixed "$tmp/nofixed.txt"
+run plain --radius 0.02
+expect "--fixed with an empty file: the plain pattern" \
+    eval '[ "$rc" -eq 0 ] && cmp -s "$tmp/plain.out" "$tmp/fixnone.out"'
+
 # ---- --mask ------------------------------------------------------------------------------
 run mask --radius 0.02 --mask "$tmp/mask.pgm" --domain 0 0 1.5 1 --verify --stats \
     --svg "$tmp/mask.svg" --png "$tmp/mask.png"
@@ -138,6 +177,12 @@ expect "--mask --svg: the mask and its pixel outline" dc svg "$tmp/mask.svg" "$M
 expect "--mask --png: grey outside the pixels, white inside" \
     dc png "$tmp/mask.png" "$MASK" "$tmp/mask.out"
 
+# ---- pictures without a shape stay as they were ----------------------------------------
+expect "--fixed only: the box drawn as before (white, outlined), and the fixed group" \
+    eval '"$cli" --radius 0.05 --fixed "$tmp/fixed.txt" --svg "$tmp/fsq.svg" > /dev/null &&
+          grep -q "<rect id=\"domain\" .* fill=\"white\" stroke=\"black\"" "$tmp/fsq.svg" &&
+          grep -q "<g id=\"fixed\"" "$tmp/fsq.svg" && ! grep -q "id=\"outline\"" "$tmp/fsq.svg"'
+
 # ---- options that do not go together, and --help ---------------------------------------
 usage_case "--polygon --periodic" '--periodic cannot be used with --polygon: a torus has no outline' \
     --radius 0.02 --polygon "$tmp/shape.txt" --periodic
@@ -149,8 +194,9 @@ usage_case "--polygon --domain" "--domain cannot be used with --polygon: the pol
     --radius 0.02 --polygon "$tmp/shape.txt" --domain 0 0 2 2
 usage_case "--polygon ''" "--polygon: expected a file name, got ''" --radius 0.02 --polygon ''
 run help --help
-expect "--help lists --polygon and --mask" \
-    eval 'grep -q "^  --polygon FILE " "$tmp/help.out" && grep -q "^  --mask FILE " "$tmp/help.out"'
+expect "--help lists --polygon, --mask and --fixed" \
+    eval 'grep -q "^  --polygon FILE " "$tmp/help.out" && grep -q "^  --mask FILE " "$tmp/help.out" &&
+          grep -q "^  --fixed FILE " "$tmp/help.out"'
 
 # ---- malformed files: exit 1, the file and where named, nothing written -------------------
 # file_case DESCRIPTION PATTERN ARGS...: the run also asks for --output, --svg and
@@ -212,6 +258,24 @@ file_case "--mask, a truncated raster" "--mask $bad/short.pgm: " --radius 0.02 -
 file_case "--mask, a colour PPM" "--mask $bad/colour.ppm: " --radius 0.02 --mask "$bad/colour.ppm"
 file_case "--mask, a grey level above maxval" "--mask $bad/level.pgm: " \
     --radius 0.02 --mask "$bad/level.pgm"
+
+printf '0.5 0.5\n# an obstacle\n0.2 0.2 0.1 7\n' > "$bad/four.txt"
+printf '0.5 0.5\n0.5 nan\n' > "$bad/nan.txt"
+printf '0.5 0.5 0\n' > "$bad/zero.txt"
+printf '0.5 0.5\n\n1.5 0.5\n' > "$bad/outside.txt"
+file_case "--fixed, 4 numbers on a line" "--fixed $bad/four.txt: line 3: expected \"x y\" or \"x y clearance\"" \
+    --radius 0.02 --fixed "$bad/four.txt"
+file_case "--fixed, nan" "--fixed $bad/nan.txt: line 2: " --radius 0.02 --fixed "$bad/nan.txt"
+file_case "--fixed, a clearance of 0" "--fixed $bad/zero.txt: line 1: the clearance \"0\" is not > 0" \
+    --radius 0.02 --fixed "$bad/zero.txt"
+file_case "--fixed, a point outside the bounding box" \
+    "--fixed $bad/outside.txt: line 3: the point \(1\.5, 0\.5\) lies outside the domain's bounding box \[0,1\]x\[0,1\]" \
+    --radius 0.02 --fixed "$bad/outside.txt"
+file_case "--fixed outside the polygon's bounding box" "--fixed $bad/outside.txt: line 3: " \
+    --radius 0.02 --polygon "$tmp/shape.txt" --fixed "$bad/outside.txt"
+# A bad second file: the first was read, still nothing is written.
+file_case "--polygon good, --fixed bad" "--fixed $bad/four.txt: line 3: " \
+    --radius 0.02 --polygon "$tmp/shape.txt" --fixed "$bad/four.txt"
 
 # ---- the README's island (make island-picture, make island-data) -----------------------
 # Run from the top of the tree: the committed data is what docs/island.py draws, and

@@ -98,7 +98,7 @@ static int opt_domain(void *ctx, const struct cli_option *opt, const char *const
     return CLI_OK;
 }
 
-/* --polygon, --mask: file names, read once all options are (cli_domain.c). */
+/* --polygon, --mask, --fixed: file names, read once all options are (cli_domain.c). */
 static int opt_domain_file(void *ctx, const struct cli_option *opt, const char *const *v)
 {
     struct cli_domain *d = &((struct options *)ctx)->domain;
@@ -107,8 +107,10 @@ static int opt_domain_file(void *ctx, const struct cli_option *opt, const char *
         return CLI_BAD(0);
     if (strcmp(opt->name, "--polygon") == 0)
         d->polygon = v[0];
-    else
+    else if (strcmp(opt->name, "--mask") == 0)
         d->mask = v[0];
+    else
+        d->fixed = v[0];
     return CLI_OK;
 }
 
@@ -185,6 +187,11 @@ static const struct cli_option option_list[] = {
       "than mid-grey (grey level under half maxval) is inside; the image is stretched over "
       "--domain, its top row along Y1, and the domain is the union of the inside pixels' "
       "squares, exactly; not with --polygon or --periodic" },
+    { "--fixed", 1, "FILE", 0, NULL, opt_domain_file, "a file name",
+      "points already there, \"x y\" or \"x y clearance\" per line ('#' comments): every "
+      "new point keeps at least the clearance from each (default: the radius in force "
+      "there), they count for maximality, and the output holds only the new points; each "
+      "must lie in the domain's bounding box" },
     { "--refine", 1, "R2", CLI_REPEAT, NULL, opt_refine, "a finite number > 0",
       "when the pattern is maximal, continue at the smaller radius R2 keeping every "
       "point; may be repeated, each R2 no larger than the radius before it; with "
@@ -282,9 +289,9 @@ static int domain_check(const struct options *o)
     if (d->polygon != NULL && o->domain_values > 1)
         return cli_usage_error(&cli, "--domain cannot be used with --polygon: the polygon's "
                                "bounding box is the domain");
-    if (o->out.spectrum_from != NULL && shape != NULL)
+    if (o->out.spectrum_from != NULL && (shape != NULL || d->fixed != NULL))
         return cli_usage_error(&cli, "%s cannot be used with --spectrum-from: the patterns are "
-                               "read, not made", shape);
+                               "read, not made", shape != NULL ? shape : "--fixed");
     return 0;
 }
 

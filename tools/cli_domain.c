@@ -24,7 +24,7 @@ static int is_blank(int c)
 }
 
 /*
- * Where the index-th vertex of a text file is: the number of its
+ * Where the index-th vertex (or point) of a text file is: the number of its
  * line, counting from 1, or 0 when the file cannot be read again or is
  * GeoJSON (*json set: its first non-blank character is '{' or '['). A
  * vertex is a line with something before any '#' (shape_files.h: comment
@@ -68,6 +68,19 @@ static size_t data_line(const char *path, size_t index, int *json)
         found = line;
     fclose(f);
     return found;
+}
+
+/* "line N" for the index-th vertex or point of a text file, "" when it cannot say. */
+static const char *where_text(char *buf, size_t size, const char *path, size_t index)
+{
+    int json;
+    size_t line = data_line(path, index, &json);
+
+    if (line > 0)
+        snprintf(buf, size, "line %zu: ", line);
+    else
+        buf[0] = '\0';
+    return buf;
 }
 
 static int load_mask(const char *prog, struct cli_domain *d)
@@ -118,7 +131,7 @@ static int load_mask(const char *prog, struct cli_domain *d)
 
 int cli_domain_load(const char *prog, struct cli_domain *d, double box[4])
 {
-    char msg[512];
+    char msg[512], where[48];
     size_t k;
 
     if (d->polygon != NULL) {
@@ -143,6 +156,23 @@ int cli_domain_load(const char *prog, struct cli_domain *d, double box[4])
         if (rc != 0)
             return rc;
         d->area *= (box[2] - box[0]) * (box[3] - box[1]);
+    }
+    if (d->fixed != NULL) {
+        const struct fixed_points *p = &d->points;
+        if (fixed_points_read(d->fixed, &d->points, msg, sizeof msg) != 0) {
+            fprintf(stderr, "%s: --fixed %s\n", prog, msg);
+            return CLI_EXIT_LIBRARY;
+        }
+        for (k = 0; k < p->n; k++) {
+            double x = p->xy[2 * k], y = p->xy[2 * k + 1];
+            if (x < box[0] || x > box[2] || y < box[1] || y > box[3]) {
+                fprintf(stderr, "%s: --fixed %s: %sthe point (%g, %g) lies outside the "
+                                "domain's bounding box [%g,%g]x[%g,%g]\n", prog, d->fixed,
+                        where_text(where, sizeof where, d->fixed, k), x, y, box[0], box[2],
+                        box[1], box[3]);
+                return CLI_EXIT_LIBRARY;
+            }
+        }
     }
     return 0;
 }
@@ -199,12 +229,18 @@ int cli_domain_configure(const char *prog, pds_sampler *s, const struct cli_doma
         fprintf(stderr, "%s: --mask %s: %s\n", prog, d->mask, pds_errmsg(s));
         return CLI_EXIT_LIBRARY;
     }
+    if (d->fixed != NULL && d->points.n > 0
+        && (rc = pds_set_fixed(s, d->points.xy, d->points.clearance, d->points.n)) < 0) {
+        fprintf(stderr, "%s: --fixed %s: %s\n", prog, d->fixed, pds_errmsg(s));
+        return CLI_EXIT_LIBRARY;
+    }
     return 0;
 }
 
 void cli_domain_free(struct cli_domain *d)
 {
     shape_rings_free(&d->rings);
+    fixed_points_free(&d->points);
     free(d->inside);
     d->inside = NULL;
 }

@@ -1,7 +1,8 @@
 /*
  * cli_domain.h - the domain files of the poissondisk program: --polygon FILE
- * (GeoJSON or "x y" text, shape_files.h) and --mask FILE (a PGM image,
- * pgm.h), given to the library as pds_set_polygon and pds_set_mask (1.4).
+ * (GeoJSON or "x y" text, shape_files.h), --mask FILE (a PGM image, pgm.h)
+ * and --fixed FILE ("x y [clearance]" lines), given to the library as
+ * pds_set_polygon, pds_set_mask and pds_set_fixed (1.4).
  *
  * The files are read whole, and every error in them reported, before the
  * sampler exists and so before any output is opened: a malformed file
@@ -28,9 +29,12 @@
 struct cli_domain {
     const char *polygon;       /* --polygon FILE; NULL: not given */
     const char *mask;          /* --mask FILE; NULL: not given */
+    const char *fixed;         /* --fixed FILE; NULL: not given */
+    int polygon_is_text;       /* the polygon file is "x y" lines, not GeoJSON */
     struct shape_rings rings;  /* the polygon as read */
     size_t mask_w, mask_h;     /* the mask's size, the image's */
     unsigned char *inside;     /* mask_w * mask_h, 1 inside; row 0 along y0 */
+    struct fixed_points points;/* the fixed points as read (clearance 0: not given) */
     double area;               /* the domain's area, for --stats; 0: the box's */
 };
 
@@ -38,17 +42,19 @@ struct cli_domain {
 int cli_domain_shaped(const struct cli_domain *d);
 
 /*
- * Reads the file given. With a polygon, box (x0 y0 x1 y1, in: --domain)
- * becomes the vertices' bounding box, as the library makes it; a mask spans
- * box. Returns 0, or CLI_EXIT_LIBRARY after "PROG: --OPTION FILE: WHERE:
- * WHAT" on stderr.
+ * Reads the files given, in the order polygon, mask, fixed points. With a
+ * polygon, box (x0 y0 x1 y1, in: --domain) becomes the vertices' bounding
+ * box, as the library makes it; a mask spans box. Checks what the library
+ * would only find at the first point: a fixed point outside box. Returns 0,
+ * or CLI_EXIT_LIBRARY after "PROG: --OPTION FILE: WHERE: WHAT" on stderr.
  */
 int cli_domain_load(const char *prog, struct cli_domain *d, double box[4]);
 
 /*
  * Gives the loaded domain to s (after pds_set_domain): the polygon or the
- * mask; a polygon's area is then measured into *area_out (NULL: not
- * wanted). Returns 0 or an exit status after a message naming the file.
+ * mask, then (once *area_out is measured: the domain's area, NULL: not
+ * wanted) the fixed points. Returns 0 or an exit status after a message
+ * naming the file.
  */
 int cli_domain_configure(const char *prog, pds_sampler *s, const struct cli_domain *d,
                          double *area_out);

@@ -45,9 +45,17 @@ int cli_write_points(const char *prog, const pds_sampler *s, const struct cli_ou
     return 0;
 }
 
-/* The shape to draw, from the files read (cli_domain.h). */
-static void shape_of(struct pattern_shape *ps, const struct cli_domain *d)
+/*
+ * The shape to draw, from the files read (cli_domain.h); clear[k] is fixed
+ * point k's clearance, the default (0 in the file) being the radius in force
+ * there: R, or the map's radius at the point.
+ */
+static void shape_of(struct pattern_shape *ps, double *clear, const struct cli_where *w,
+                     double radius)
 {
+    const struct cli_domain *d = w->shape;
+    size_t k;
+
     memset(ps, 0, sizeof *ps);
     if (d->polygon != NULL) {
         ps->rings_xy = d->rings.xy;
@@ -58,6 +66,14 @@ static void shape_of(struct pattern_shape *ps, const struct cli_domain *d)
         ps->mask_w = d->mask_w;
         ps->mask_h = d->mask_h;
     }
+    for (k = 0; k < d->points.n; k++) {
+        double x = d->points.xy[2 * k], y = d->points.xy[2 * k + 1];
+        clear[k] = d->points.clearance[k] > 0 ? d->points.clearance[k]
+                 : w->field != NULL ? cli_field_at(w->field, w->box, x, y, radius) : radius;
+    }
+    ps->fixed_xy = d->points.xy;
+    ps->clearance = clear;
+    ps->nfixed = d->points.n;
 }
 
 int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_outputs *o,
@@ -65,7 +81,7 @@ int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_
 {
     struct pattern p;
     struct pattern_shape shape;
-    double *xy, *radii = NULL;
+    double *xy, *radii = NULL, *clear = NULL;
     int status = 0;
 
     if (o->svg == NULL && o->png == NULL)
@@ -74,9 +90,12 @@ int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_
     xy = malloc((p.n > 0 ? p.n : 1) * 2 * sizeof *xy);
     if (w->field != NULL)
         radii = malloc((p.n > 0 ? p.n : 1) * sizeof *radii);
-    if (xy == NULL || (w->field != NULL && radii == NULL)) {
+    if (w->shape != NULL)
+        clear = malloc((w->shape->points.n > 0 ? w->shape->points.n : 1) * sizeof *clear);
+    if (xy == NULL || (w->field != NULL && radii == NULL) || (w->shape != NULL && clear == NULL)) {
         free(xy);
         free(radii);
+        free(clear);
         fprintf(stderr, "%s: out of memory for the pictures\n", prog);
         return CLI_EXIT_LIBRARY;
     }
@@ -94,7 +113,7 @@ int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_
     p.periodic = w->periodic;
     p.shape = NULL;
     if (w->shape != NULL) {
-        shape_of(&shape, w->shape);
+        shape_of(&shape, clear, w, p.radius);
         p.shape = &shape;
     }
     if (o->svg != NULL && pattern_write_svg(&p, o->disks, o->svg) != 0)
@@ -103,5 +122,6 @@ int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_
         status = write_failed(prog, o->png);
     free(xy);
     free(radii);
+    free(clear);
     return status;
 }

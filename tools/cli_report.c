@@ -165,11 +165,14 @@ void cli_print_stats(const char *prog, const pds_sampler *s, const struct cli_wh
         spacing(space, sizeof space, s, w, &u);
         exact(radius, sizeof radius, pds_radius(s));
     }
-    /* What shapes the domain, after the box: " polygon" or " mask". */
+    /* What shapes the domain, after the box: " polygon" or " mask", " fixed=K". */
     shape[0] = '\0';
-    if (w->shape != NULL)
-        snprintf(shape, sizeof shape, "%s", w->shape->polygon != NULL ? " polygon"
-                                            : w->shape->mask != NULL  ? " mask" : "");
+    if (w->shape != NULL) {
+        int n = snprintf(shape, sizeof shape, "%s", w->shape->polygon != NULL ? " polygon"
+                                                    : w->shape->mask != NULL  ? " mask" : "");
+        if (w->shape->fixed != NULL)
+            snprintf(shape + n, sizeof shape - (size_t)n, " fixed=%zu", w->shape->points.n);
+    }
     fprintf(stderr,
             "%s: N=%zu R=%s%s domain=[%g,%g%cx[%g,%g%c%s%s coverage=%s %s%s %s %.3f s\n", prog,
             pds_count(s), radius,

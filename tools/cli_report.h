@@ -20,15 +20,15 @@ struct cli_where {
     int periodic;  /* --periodic: a torus, the points in [x0,x1)x[y0,y1) */
     size_t count;  /* --count N, or 0 when --radius or --radius-map gives the radius */
     const struct cli_field *field; /* --radius-map, once loaded; NULL: one radius */
-    struct cli_domain *shape;      /* --polygon, --mask, once loaded (box is then a
-                                      polygon's bounding box); NULL: none */
+    struct cli_domain *shape;      /* --polygon, --mask, --fixed, once loaded (box is
+                                      then a polygon's bounding box); NULL: none */
 };
 
 /*
  * Prints the --stats line to stderr: N, the radius (with the fewest digits
  * that read back exactly, so a chosen radius can be checked), the domain
  * (half-open and "periodic" on a torus; the bounding box followed by
- * "polygon" or "mask" with those options), the coverage
+ * "polygon" or "mask" and "fixed=K" with the domain options), the coverage
  * (the share of the domain where no point fits), maximal or not, verified,
  * then the packing density pi R^2 N / (4A) (the share covered by the disks
  * of radius R/2; A the polygon's or mask's area, when shaped),

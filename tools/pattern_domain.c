@@ -1,7 +1,7 @@
 /*
  * pattern_domain.c - the shaped domain in the pictures (see
- * pattern_pictures.h): a polygon's rings or a mask's pixel boundary, in SVG
- * and in the PNG raster. The PNG fills the domain by
+ * pattern_pictures.h): a polygon's rings or a mask's pixel boundary, and the
+ * fixed points, in SVG and in the PNG raster. The PNG fills the domain by
  * scanlines, 4 x 4 samples per pixel as the dots: a sample is inside when a
  * horizontal ray from it crosses the rings an odd number of times (the
  * library's even-odd rule), or when its mask pixel is inside.
@@ -127,6 +127,30 @@ int pattern_svg_outline(FILE *f, const struct pattern *p, double line)
             return -1;
         fputs("\"/>\n", f);
     }
+    return ferror(f) ? -1 : 0;
+}
+
+int pattern_svg_fixed(FILE *f, const struct pattern *p, double line, double dot, int clearances)
+{
+    const struct pattern_shape *m = p->shape;
+    double ysum = p->box[1] + p->box[3];
+    size_t k;
+
+    if (m->nfixed == 0)
+        return 0;
+    if (clearances) {
+        fprintf(f, "<g id=\"clearances\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"%.10g\" "
+                   "stroke-dasharray=\"%.10g %.10g\">\n", line / 2, 2 * line, line);
+        for (k = 0; k < m->nfixed; k++)
+            fprintf(f, "<circle cx=\"%.10g\" cy=\"%.10g\" r=\"%.10g\"/>\n", m->fixed_xy[2 * k],
+                    ysum - m->fixed_xy[2 * k + 1], m->clearance[k]);
+    } else {
+        fputs("<g id=\"fixed\" fill=\"#d62728\">\n", f);
+        for (k = 0; k < m->nfixed; k++)
+            fprintf(f, "<circle cx=\"%.10g\" cy=\"%.10g\" r=\"%.10g\"/>\n", m->fixed_xy[2 * k],
+                    ysum - m->fixed_xy[2 * k + 1], 1.5 * dot);
+    }
+    fputs("</g>\n", f);
     return ferror(f) ? -1 : 0;
 }
 
@@ -324,4 +348,35 @@ int pattern_png_outline(unsigned char *pix, unsigned w, unsigned h, const struct
         return 0;
     }
     return mask_boundary(p, png_segment, &r);
+}
+
+void pattern_png_fixed(unsigned char *pix, unsigned w, unsigned h, const struct pattern *p,
+                       double scale, double dot_px)
+{
+    const struct pattern_shape *m = p->shape;
+    double radius = fmax(1.6 * dot_px, 2.5), half = fmax(0.5, 0.2 * radius);
+    struct raster r;
+    size_t k;
+    long x, y;
+    int a, c;
+
+    r.pix = pix;
+    r.w = w;
+    r.h = h;
+    for (k = 0; k < m->nfixed; k++) {
+        double cx = (m->fixed_xy[2 * k] - p->box[0]) * scale;
+        double cy = (p->box[3] - m->fixed_xy[2 * k + 1]) * scale;
+        long x0 = (long)floor(cx - radius - half), x1 = (long)floor(cx + radius + half);
+        long y0 = (long)floor(cy - radius - half), y1 = (long)floor(cy + radius + half);
+        for (y = y0 < 0 ? 0 : y0; y <= y1 && y < (long)h; y++)
+            for (x = x0 < 0 ? 0 : x0; x <= x1 && x < (long)w; x++) {
+                int ring = 0;
+                for (a = 0; a < SUB; a++)
+                    for (c = 0; c < SUB; c++)
+                        ring += fabs(hypot(x + (a + 0.5) / SUB - cx, y + (c + 0.5) / SUB - cy)
+                                     - radius) <= half;
+                if (ring > 0)
+                    ink(&r, x, y, (double)ring / (SUB * SUB), 0);
+            }
+    }
 }

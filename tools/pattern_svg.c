@@ -58,23 +58,28 @@ int pattern_write_svg(const struct pattern *p, int disks, const char *path)
         fprintf(f, "<title>poissondisk: %zu points, R = %.10g, domain "
                    "[%.10g,%.10g%cx[%.10g,%.10g%c%s</title>\n", p->n, p->radius, b[0], b[2],
                 close, b[1], b[3], close, p->periodic ? ", periodic" : "");
+    /* "; K fixed points" only when there are some (%.0zu prints nothing for 0). */
     if (shaped)
-        fprintf(f, "<desc>domain: %s</desc>\n", m->rings_xy != NULL
-                ? "a polygon (even-odd rings)" : "the inside pixels of a mask");
+        fprintf(f, "<desc>domain: %s%s%.0zu%s</desc>\n",
+                m->rings_xy != NULL ? "a polygon (even-odd rings)"
+                : m->inside != NULL ? "the inside pixels of a mask" : "the box",
+                m->nfixed > 0 ? "; " : "", m->nfixed, m->nfixed > 0 ? " fixed points" : "");
     fprintf(f, "<desc>y grows upwards: the point (x, y) is drawn at (x, %.10g - y)</desc>\n",
             b[1] + b[3]);
     fprintf(f, "<defs><clipPath id=\"box\"><rect x=\"%.10g\" y=\"%.10g\" width=\"%.10g\" "
                "height=\"%.10g\"/></clipPath></defs>\n", b[0], b[1], w, h);
     /* A polygon or mask fills part of the box: the box grey, the domain white. */
-    if (shaped)
+    if (shaped && (m->rings_xy != NULL || m->inside != NULL))
         fprintf(f, "<rect id=\"domain\" x=\"%.10g\" y=\"%.10g\" width=\"%.10g\" "
                    "height=\"%.10g\" fill=\"#e6e6e6\" stroke=\"none\"/>\n", b[0], b[1], w, h);
     else
         fprintf(f, "<rect id=\"domain\" x=\"%.10g\" y=\"%.10g\" width=\"%.10g\" "
                    "height=\"%.10g\" fill=\"white\" stroke=\"black\" stroke-width=\"%.10g\"/>\n",
                 b[0], b[1], w, h, line);
-    if (shaped)
+    if (shaped) {
         rc |= pattern_svg_outline(f, p, line);
+        rc |= pattern_svg_fixed(f, p, line, dot, 1);
+    }
     if (disks) {
         /* On a torus the disks are clipped to the box, and the parts that cross a
            side come back on the other side: the picture then tiles. */
@@ -97,7 +102,10 @@ int pattern_write_svg(const struct pattern *p, int disks, const char *path)
     }
     fputs("<g id=\"points\" fill=\"black\">\n", f);
     rc |= circles(f, p, dot, NULL, 0, 0);
-    fputs("</g>\n</svg>\n", f);
+    fputs("</g>\n", f);
+    if (shaped)
+        rc |= pattern_svg_fixed(f, p, line, dot, 0);
+    fputs("</svg>\n", f);
     if (ferror(f))
         rc = -1;
     if (fclose(f) != 0)

@@ -9,7 +9,7 @@
  * and --periodic makes the pattern tile the plane; --radius-map gives each
  * point a radius of its own, from a grey-scale image (cli_field.c: black
  * dense, white sparse, as a stippling). --polygon and --mask shape the
- * domain (cli_domain.c). --format and --output
+ * domain, --fixed gives points already there (cli_domain.c). --format and --output
  * choose how and where the points go; --svg, --png and the --spectrum
  * options draw and analyse the pattern (cli_outputs.c, cli_spectrum.c).
  *
@@ -96,7 +96,7 @@ int main(int argc, char **argv)
     }
     /* Every input file is read before the sampler exists, the outputs long after:
        a malformed file leaves no output behind. */
-    if (o.domain.polygon != NULL || o.domain.mask != NULL) {
+    if (o.domain.polygon != NULL || o.domain.mask != NULL || o.domain.fixed != NULL) {
         if ((status = cli_domain_load(PROG, &o.domain, o.where.box)) != 0)
             goto done;
         o.where.shape = &o.domain;
