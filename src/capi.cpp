@@ -73,6 +73,9 @@ PDS_API int pds_set_periodic(pds_sampler* s, int periodic) PDS_NOEXCEPT {
     if (periodic != 0 && s->core->has_shape())
         return fail(s, PDS_EINVAL, "pds_set_periodic: a polygon or mask domain (pds_set_polygon, pds_set_mask) "
                     "is not periodic");
+    if (periodic != 0 && s->core->has_fixed())
+        return fail(s, PDS_EINVAL, "pds_set_periodic: fixed points (pds_set_fixed) are not supported on a "
+                    "periodic domain");
     return guarded(s, "pds_set_periodic", [&] {
         s->core->set_periodic(periodic != 0);
         return 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "capi_handle.hpp"
 #include "domain/polygon.hpp"
@@ -64,6 +65,33 @@ PDS_API int pds_set_mask(pds_sampler* s, size_t w, size_t h, const unsigned char
     if (const int rc = refuse_periodic(s, "pds_set_mask")) return rc;
     return guarded(s, "pds_set_mask", [&] {
         s->core->set_mask(w, h, inside);
+        return 0;
+    });
+}
+
+PDS_API int pds_set_fixed(pds_sampler* s, const double* xy, const double* clearance, size_t n) PDS_NOEXCEPT {
+    if (s == nullptr) return PDS_EINVAL;
+    if (const int rc = refuse_shape(s, "pds_set_fixed")) return rc;
+    if (n != 0 && xy == nullptr) return fail(s, PDS_EINVAL, "pds_set_fixed: xy is NULL with %zu points", n);
+    if (n != 0 && s->core->frame().periodic())
+        return fail(s, PDS_EINVAL, "pds_set_fixed: fixed points are not supported on a periodic domain");
+    if (n > SIZE_MAX / 2 / sizeof(double))
+        return fail(s, PDS_EINVAL, "pds_set_fixed: %zu points do not fit in memory", n);
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!std::isfinite(xy[2 * k]) || !std::isfinite(xy[2 * k + 1]))
+            return fail(s, PDS_EINVAL, "pds_set_fixed: point %zu: a coordinate is not finite", k);
+        if (clearance != nullptr && !(std::isfinite(clearance[k]) && clearance[k] >= 0.0))
+            return fail(s, PDS_EINVAL, "pds_set_fixed: point %zu: the clearance %g must be finite and >= 0", k,
+                        clearance[k]);
+    }
+    return guarded(s, "pds_set_fixed", [&] {
+        std::vector<pds::Point> points(n);
+        std::vector<double> clearances(n, 0.0);
+        for (std::size_t k = 0; k < n; ++k) {
+            points[k] = pds::Point{xy[2 * k], xy[2 * k + 1]};
+            if (clearance != nullptr) clearances[k] = clearance[k];
+        }
+        s->core->set_fixed(std::move(points), std::move(clearances));
         return 0;
     });
 }

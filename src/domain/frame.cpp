@@ -185,6 +185,10 @@ Point Frame::to_user(const Point& p) const {
     return Point{std::ldexp(p.x, -scale_exp_), std::ldexp(p.y, -scale_exp_)};
 }
 
+Point Frame::to_internal(const Point& user) const {
+    return Point{std::ldexp(user.x, scale_exp_), std::ldexp(user.y, scale_exp_)};
+}
+
 double Frame::area_to_user(double a) const { return std::ldexp(a, -2 * scale_exp_); }
 
 }  // namespace pds

@@ -131,6 +131,7 @@ public:
     static std::size_t max_points();
 
     Point to_user(const Point& p) const;
+    Point to_internal(const Point& user) const;
     double area_to_user(double a) const;
     // A user radius in the internal frame, capped as r() is.
     double internal_radius(double user_radius) const;

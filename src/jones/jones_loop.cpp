@@ -309,11 +309,15 @@ VerifyReport JonesLoop<Space, Rule>::verify() const {
         // Each disk is checked against the points after it: their ranks.
         std::vector<std::size_t> rank(dt_.vertex_count(), 0);
         for (std::size_t k = 0; k < count(); ++k) rank[order_.vertex(k)] = k;
-        rep = space_.verify(dt_, r_, &rank);
+        rep = space_.verify(dt_, r_, &rank, fixed_);
     } else {
-        rep = space_.verify(dt_, r_, nullptr);
+        rep = space_.verify(dt_, r_, nullptr, fixed_);
     }
-    if (rep.vertex != kNoVertex) name_point(rep, order_.point(rep.vertex));
+    if (rep.vertex != kNoVertex) {
+        const PointIndex k = order_.point(rep.vertex);
+        if (k < fixed_) rep.failure += " (fixed point " + std::to_string(k) + ")";
+        else name_point(rep, k - fixed_);
+    }
     if (rep.valid && !rep.maximal && count() > 0 && tree_.total() == 0.0) {
         rep.valid = false;
         rep.failure = "the sampler reported a maximal pattern, but " + rep.failure;

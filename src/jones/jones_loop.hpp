@@ -91,6 +91,7 @@ public:
     const TorusCopies& torus_copies() const override { return space_.copies(); }
     bool is_copy(VertexIndex v) const override { return space_.is_copy(v); }
     const JonesStats& stats() const override { return stats_; }
+    void set_fixed(std::size_t n) override { fixed_ = n; }
     void set_batch_size(std::size_t n) override { batch_size_ = n < 1 ? 1 : (n > kMaxBatch ? kMaxBatch : n); }
 
 private:
@@ -159,6 +160,7 @@ private:
     WeightUndo undo_[2 * kMaxBatch];          // at most two weight changes per candidate
     std::size_t undo_count_ = 0;
     JonesStats stats_;  // counters only: never steer the sampling
+    std::size_t fixed_ = 0;  // the first points are fixed (set_fixed)
 };
 
 }  // namespace pds

@@ -70,6 +70,9 @@ public:
     // Draws the next batches n at a time (1 <= n <= kMaxBatch) until the
     // adaptation changes it: lets a test put several cells in one batch.
     virtual void set_batch_size(std::size_t n) = 0;
+    // The first n points adopted are fixed points: verify does not check
+    // them against each other, and names the others from n on.
+    virtual void set_fixed(std::size_t n) = 0;
 };
 
 // The domain and r in the internal frame, torus on for a periodic domain;

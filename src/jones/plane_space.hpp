@@ -101,8 +101,8 @@ public:
     void widen_margin(Loop&) {}
     bool pending() const { return false; }
 
-    VerifyReport verify(const Delaunay& dt, double r, const std::vector<std::size_t>* rank) const {
-        return verify_pattern(dt, domain_, r, rank);
+    VerifyReport verify(const Delaunay& dt, double r, const std::vector<std::size_t>* rank, std::size_t fixed) const {
+        return verify_pattern(dt, domain_, r, rank, nullptr, fixed);
     }
 
 private:

@@ -35,8 +35,8 @@ public:
     bool inside(const Point& p) const { return polygon_->contains(p); }
     OutlineClip* outline_clip() const { return clip_.get(); }
 
-    VerifyReport verify(const Delaunay& dt, double r, const std::vector<std::size_t>* rank) const {
-        return verify_pattern(dt, Rectangle(polygon_->bounds()), r, rank, polygon_.get());
+    VerifyReport verify(const Delaunay& dt, double r, const std::vector<std::size_t>* rank, std::size_t fixed) const {
+        return verify_pattern(dt, Rectangle(polygon_->bounds()), r, rank, polygon_.get(), fixed);
     }
 
 private:

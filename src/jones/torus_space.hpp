@@ -93,7 +93,8 @@ public:
     void widen_margin(Loop& loop);
     bool pending() const { return widen_pending_; }
 
-    VerifyReport verify(const Delaunay& dt, double r, const std::vector<std::size_t>* rank) const {
+    VerifyReport verify(const Delaunay& dt, double r, const std::vector<std::size_t>* rank,
+                        std::size_t /*fixed: none on the torus*/) const {
         return verify_torus(dt, copies_, is_copy_, r, rank);
     }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "domain/mask_outline.hpp"
 
@@ -22,7 +23,7 @@ Sampler::Sampler(double radius, std::uint64_t seed)
     : frame_(Box{0.0, 0.0, 1.0, 1.0}, radius), seed_(seed), rng_(seed) {}
 
 bool Sampler::use_darts() const {
-    return !skip_darts_ &&
+    return !skip_darts_ && !has_fixed() &&
            opening_stage_suits(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr);
 }
 
@@ -68,12 +69,43 @@ std::size_t Sampler::field_count_bound() const {
     return map < cap ? std::min(oler, static_cast<std::size_t>(map)) : oler;
 }
 
+void Sampler::set_fixed(std::vector<Point> points, std::vector<double> clearances) {
+    if (count() != 0) throw std::logic_error("set_fixed after the first point");
+    forget_stages();
+    fixed_ = std::move(points);
+    fixed_clearance_ = std::move(clearances);
+}
+
+void Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
+    const PointRadii radii = *point_radii(frame_);
+    std::vector<Point> points;
+    std::vector<double> values;
+    points.reserve(fixed_.size());
+    values.reserve(fixed_.size());
+    const double rmax = field_ ? field_->rmax() : fixed_radius_;
+    for (std::size_t k = 0; k < fixed_.size(); ++k) {
+        const Point p = frame_.to_internal(fixed_[k]);
+        if (!frame_.box().contains(p))
+            throw DomainError("fixed point " + std::to_string(k) + " lies outside the domain's bounding box");
+        // A value the field's scaling turns into the clearance, now and after a refine.
+        const double c = fixed_clearance_[k];
+        values.push_back(c > 0.0 ? c / frame_.user_radius() * rmax : radii.value_at(p));
+        points.push_back(p);
+    }
+    std::vector<std::uint32_t> order(fixed_.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
+    jones.reserve(room + fixed_.size());
+    jones.adopt(points, order.data(), &values, Poll{});
+    jones.set_fixed(fixed_.size());
+}
+
 void Sampler::forget_stages() {
     // Without points the stages hold nothing but the old frame, and a first
     // point drawn but refused by a radius field: the generator goes back to
     // the seed, so the points are a fresh sampler's with these settings.
     darts_.reset();
     jones_.reset();
+    adopted_fixed_ = 0;
     rng_ = Rng(seed_);
 }
 
@@ -177,25 +209,33 @@ void Sampler::prepare(std::size_t points) {
             if (at_lowest != Limit::ok) throw LimitError(at_lowest, lowest.user_radius(), JudgedRadius::count_lowest);
         }
         // Built aside, kept only when both exist: std::bad_alloc changes nothing.
+        if (has_fixed() && !field_) {
+            fixed_radius_ = frame_.user_radius();
+            fixed_field_ = RadiusField::function(
+                [](void* r, double, double) { return *static_cast<const double*>(r); }, &fixed_radius_,
+                fixed_radius_, fixed_radius_);
+        }
         const std::optional<PointRadii> radii = point_radii(frame_);
         auto jones = make_jones_stage(frame_.domain(), frame_.r(), frame_.torus(), radii ? &*radii : nullptr,
                                       frame_.shared_polygon());
         std::unique_ptr<OpeningStage> darts;
         if (use_darts())
             darts = make_opening_stage(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr);
+        if (has_fixed()) adopt_fixed(*jones, points);
         jones_ = std::move(jones);
         darts_ = std::move(darts);
+        adopted_fixed_ = fixed_.size();
     }
     // One growth policy for every call: at least double what is there, up
     // to what the pattern can hold, so small calls cost O(1) amortized. The
     // Jones stage gets room for the dart stage's points too (the hand-over
     // may come with any point), and each reserve is all or nothing.
-    const bool room = jones_->has_room_for(points) && (!darts_ || darts_->has_room_for(points));
+    const bool room = jones_->has_room_for(points + adopted_fixed_) && (!darts_ || darts_->has_room_for(points));
     if (room) return;
     const std::size_t cap = std::min(smallest_frame().count_bound_points(), Frame::max_points());
     constexpr std::size_t kFirstRoom = 64;  // points reserved at the first growth, at least
     const std::size_t want = std::max(points, std::min(2 * count() + kFirstRoom, cap));
-    jones_->reserve(want);
+    jones_->reserve(want + adopted_fixed_);
     if (darts_) darts_->reserve(want);
 }
 
@@ -345,7 +385,7 @@ std::size_t Sampler::copy_points(std::size_t first, std::size_t n, double* xy) c
     n = std::min(n, have - first);
     const Stage& s = stage();
     for (std::size_t i = 0; i < n; ++i) {
-        const Point p = frame_.to_user(s.point(first + i));
+        const Point p = frame_.to_user(s.point(adopted_fixed_ + first + i));
         xy[2 * i] = p.x;
         xy[2 * i + 1] = p.y;
     }
@@ -358,7 +398,7 @@ std::size_t Sampler::copy_radii(std::size_t first, std::size_t n, double* r) con
     n = std::min(n, have - first);
     const std::optional<PointRadii> radii = point_radii(frame_);
     for (std::size_t i = 0; i < n; ++i)
-        r[i] = radii ? radii->user_radius_of(stage().value(first + i)) : frame_.user_radius();
+        r[i] = radii ? radii->user_radius_of(stage().value(adopted_fixed_ + first + i)) : frame_.user_radius();
     return n;
 }
 

@@ -63,6 +63,11 @@ public:
     void set_mask(std::size_t w, std::size_t h, const std::uint8_t* inside);
     // A polygon or a mask is set.
     bool has_shape() const { return shape_ != nullptr; }
+    // Fixed points (user units) that sampled points keep clearances[k] from
+    // (0: the radius in force at the point, R or the field's value); not
+    // checked against each other, never returned. Empty: none.
+    void set_fixed(std::vector<Point> points, std::vector<double> clearances);
+    bool has_fixed() const { return !fixed_.empty(); }
     void set_periodic(bool periodic);
     // Count mode: the radius is chosen, and lowered by 1% whenever the
     // pattern is maximal with fewer than n points (0 turns it off).
@@ -93,7 +98,7 @@ public:
     // Continues with a smaller radius; requires 0 < radius <= radius().
     void refine(double radius);
 
-    std::size_t count() const { return started() ? stage().count() : 0; }
+    std::size_t count() const { return started() ? stage().count() - adopted_fixed_ : 0; }
     std::size_t copy_points(std::size_t first, std::size_t n, double* xy) const;
     // Each point's radius in force (user units): R for all without a field.
     std::size_t copy_radii(std::size_t first, std::size_t n, double* r) const;
@@ -124,9 +129,15 @@ private:
     // its radius (the same points, at the same speed).
     bool varying_field() const { return field_ && !field_->constant(); }
     // What the stages see of a varying field.
+    // Fixed points need them too (each disk its own radius), from a
+    // constant field at the radius of the first point when there is no field.
     std::optional<PointRadii> point_radii(const Frame& frame) const {
-        return varying_field() ? std::optional<PointRadii>(PointRadii(*field_, frame)) : std::nullopt;
+        if (varying_field() || (has_fixed() && field_)) return PointRadii(*field_, frame);
+        if (has_fixed() && fixed_field_) return PointRadii(*fixed_field_, frame);
+        return std::nullopt;
     }
+    // Makes the fixed points the Jones stage's first vertices.
+    void adopt_fixed(JonesStage& jones, std::size_t room);
     bool use_darts() const;
     // A varying field's bound on the size of any pattern (the smaller of
     // Oler's at rmin and the map's own), saturated as count_bound_points().
@@ -150,6 +161,11 @@ private:
     std::shared_ptr<const Polygon> shape_;       // the polygon or the mask's outline, user units
     std::size_t mask_w_ = 0, mask_h_ = 0;        // a mask, kept to follow the rectangle
     std::vector<std::uint8_t> mask_;
+    std::vector<Point> fixed_;                   // user units
+    std::vector<double> fixed_clearance_;        // user units, 0: the radius at the point
+    double fixed_radius_ = 0.0;                  // fixed_field_'s value
+    std::optional<RadiusField> fixed_field_;     // constant, for fixed points without a field
+    std::size_t adopted_fixed_ = 0;              // fixed points in the stage (its first vertices)
     std::uint64_t seed_;
     Rng rng_;  // at seed_'s state while count() == 0
     bool skip_darts_ = false;

@@ -25,7 +25,7 @@ using E = Expansion;
 // A variable radius: each point outside every earlier point's disk, by that
 // disk's radius (rank: the order the points were added). The radii classes
 // find each pair that could break it from the side of its smaller radius.
-bool check_rule(const Delaunay& dt, const std::vector<std::size_t>& rank, VerifyReport& rep) {
+bool check_rule(const Delaunay& dt, const std::vector<std::size_t>& rank, std::size_t fixed, VerifyReport& rep) {
     const std::vector<Point>& pts = dt.points();
     for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
         if (!RadiusLayers::usable(dt.radius(static_cast<VertexIndex>(i)))) {
@@ -41,6 +41,7 @@ bool check_rule(const Delaunay& dt, const std::vector<std::size_t>& rank, Verify
         VertexIndex inside = kNoVertex;  // the later point of a pair that breaks the rule
         layers.for_each_near(pts[i], ri, [&](std::uint32_t j, int, int, bool same) {
             if (j == i || inside != kNoVertex) return;
+            if (rank[i] < fixed && rank[j] < fixed) return;  // two fixed points may overlap
             ++rep.pairs_examined;
             const bool j_first = rank[j] < rank[i];
             if (same && !j_first) return;  // j's own visit checks this pair
@@ -57,17 +58,19 @@ bool check_rule(const Delaunay& dt, const std::vector<std::size_t>& rank, Verify
 }
 
 bool check_points(const Delaunay& dt, const Rectangle& domain, double r, const std::vector<std::size_t>* rank,
-                  const Polygon* polygon, VerifyReport& rep) {
+                  const Polygon* polygon, std::size_t fixed, VerifyReport& rep) {
     const std::vector<Point>& pts = dt.points();
     const Box& box = domain.bounds();
     for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
-        if (!domain.contains(pts[i]) || (polygon && !polygon->contains(pts[i]))) {
+        // A fixed point may lie in a hole or outside the outline (an obstacle).
+        const bool is_fixed = rank && (*rank)[i] < fixed;
+        if (!domain.contains(pts[i]) || (polygon && !is_fixed && !polygon->contains(pts[i]))) {
             rep.failure = "a point lies outside the domain";
             rep.vertex = static_cast<VertexIndex>(i);
             return false;
         }
     }
-    if (rank) return check_rule(dt, *rank, rep);
+    if (rank) return check_rule(dt, *rank, fixed, rep);
     const SpatialHash grid(pts, Delaunay::kGhosts, box, r);
     for (std::size_t i = Delaunay::kGhosts; i < pts.size(); ++i) {
         bool close = false;
@@ -210,9 +213,9 @@ void name_point(VerifyReport& rep, PointIndex k) {
 }
 
 VerifyReport verify_pattern(const Delaunay& dt, const Rectangle& domain, double radius,
-                            const std::vector<std::size_t>* rank, const Polygon* polygon) {
+                            const std::vector<std::size_t>* rank, const Polygon* polygon, std::size_t fixed) {
     VerifyReport rep;
-    if (!check_points(dt, domain, radius, rank, polygon, rep) || !check_mesh(dt, rep)) {
+    if (!check_points(dt, domain, radius, rank, polygon, fixed, rep) || !check_mesh(dt, rep)) {
         rep.valid = false;
         return rep;
     }

@@ -48,8 +48,11 @@ struct VerifyReport {
 // depends on it), and maximality is judged on the power diagram.
 // polygon: a polygonal domain inside the rectangle (verify_outline.cpp): points
 // must lie in it, and maximality is judged in it.
+// fixed: on a weighted mesh, the points of rank below it are fixed points,
+// whose disks are not checked against each other.
 VerifyReport verify_pattern(const Delaunay& dt, const Rectangle& domain, double radius,
-                            const std::vector<std::size_t>* rank = nullptr, const Polygon* polygon = nullptr);
+                            const std::vector<std::size_t>* rank = nullptr, const Polygon* polygon = nullptr,
+                            std::size_t fixed = 0);
 // Exact: the circumcentre of the counterclockwise triangle (a, b, c) lies in
 // the closed box and farther than r from the corners.
 bool voronoi_vertex_uncovered(const Point& a, const Point& b, const Point& c, const Box& box, double r);

@@ -31,6 +31,7 @@ Suite* progress_suite();
 Suite* polygon_suite();
 Suite* polygon_domain_suite();
 Suite* outline_clip_suite();
+Suite* fixed_points_suite();
 
 // Under Valgrind (PDS_TEST_LIGHT set) loops shrink; every behaviour still runs.
 inline bool test_light() { return std::getenv("PDS_TEST_LIGHT") != nullptr; }
