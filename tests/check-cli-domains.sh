@@ -149,6 +149,25 @@ expect "--fixed --svg: the outline's rings, the clearances and the fixed points"
     dc svg "$tmp/fix.svg" "$POLY" "$tmp/fixed.txt" 0.02
 expect "--fixed --png: grey outside the polygon, white inside, the points dark" \
     dc png "$tmp/fix.png" "$POLY" "$tmp/fix.out"
+# The library scales given clearances with the radius (--refine, --count): the SVG
+# draws them at the final radius. Drawn too large, the points break them (spacing);
+# drawn too small, the probes between the drawn and the true circle go uncovered.
+run fixref --radius 0.04 --refine 0.02 --polygon "$tmp/shape.txt" --fixed "$tmp/fixed.txt" \
+    --svg "$tmp/fixref.svg"
+printf '0.2 0.3\n0.75 0.3 0.06\n0.5 0.6 0.025\n' > "$tmp/fixed-half.txt"
+expect "--fixed --refine 0.04 -> 0.02: the clearances halved, kept and covered" \
+    eval '[ "$rc" -eq 0 ] && dc spacing "$tmp/fixref.out" 0.02 "$tmp/fixed-half.txt" &&
+          dc covered "$tmp/fixref.out" 0.02 "$POLY" "$tmp/fixed-half.txt" 0.005'
+expect "--fixed --refine: the SVG draws the halved clearances" \
+    dc svg "$tmp/fixref.svg" "$POLY" "$tmp/fixed-half.txt" 0.02
+run fixcount --count 300 --polygon "$tmp/shape.txt" --fixed "$tmp/fixed.txt" --stats \
+    --svg "$tmp/fixcount.svg"
+fr=$(sed -n 's/^poissondisk: N=300 R=\([^ ]*\) (chosen for --count) .*/\1/p' "$tmp/fixcount.err")
+dc clearances "$tmp/fixcount.svg" > "$tmp/fixcount.fixed" 2> /dev/null
+expect "--fixed --count 300: 300 points, the SVG's clearances kept by them and covering (R='$fr')" \
+    eval '[ "$rc" -eq 0 ] && [ "$(lines "$tmp/fixcount.out")" -eq 300 ] && [ -n "$fr" ] &&
+          dc spacing "$tmp/fixcount.out" "$fr" "$tmp/fixcount.fixed" &&
+          dc inside "$tmp/fixcount.out" "$POLY"'
 run fixsq --radius 0.02 --fixed "$tmp/fixed.txt" --verify
 expect "--fixed on the unit square: exit 0, R apart and clearances kept, covered" \
     eval '[ "$rc" -eq 0 ] && dc spacing "$tmp/fixsq.out" 0.02 "$tmp/fixed.txt" &&
@@ -188,6 +207,8 @@ usage_case "--polygon --periodic" '--periodic cannot be used with --polygon: a t
     --radius 0.02 --polygon "$tmp/shape.txt" --periodic
 usage_case "--mask --periodic" '--periodic cannot be used with --mask' \
     --radius 0.02 --mask "$tmp/mask.pgm" --periodic
+usage_case "--fixed --periodic" '--periodic cannot be used with --fixed' \
+    --radius 0.02 --fixed "$tmp/fixed.txt" --periodic
 usage_case "--polygon --mask" '--mask cannot be used with --polygon' \
     --radius 0.02 --polygon "$tmp/shape.txt" --mask "$tmp/mask.pgm"
 usage_case "--polygon --domain" "--domain cannot be used with --polygon: the polygon's bounding box" \

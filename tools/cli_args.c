@@ -190,8 +190,9 @@ static const struct cli_option option_list[] = {
     { "--fixed", 1, "FILE", 0, NULL, opt_domain_file, "a file name",
       "points already there, \"x y\" or \"x y clearance\" per line ('#' comments): every "
       "new point keeps at least the clearance from each (default: the radius in force "
-      "there), they count for maximality, and the output holds only the new points; each "
-      "must lie in the domain's bounding box" },
+      "there; a given one scales with the radius, as --refine or --count change it), they "
+      "count for maximality, and the output holds only the new points; each must lie in "
+      "the domain's bounding box; not with --periodic" },
     { "--refine", 1, "R2", CLI_REPEAT, NULL, opt_refine, "a finite number > 0",
       "when the pattern is maximal, continue at the smaller radius R2 keeping every "
       "point; may be repeated, each R2 no larger than the radius before it; with "
@@ -286,6 +287,9 @@ static int domain_check(const struct options *o)
         return cli_usage_error(&cli, "--periodic cannot be used with %s: a torus has no "
                                "outline, and the library samples %s on the plane only", shape,
                                d->polygon != NULL ? "polygons" : "masks");
+    if (d->fixed != NULL && o->where.periodic)
+        return cli_usage_error(&cli, "--periodic cannot be used with --fixed: the library "
+                               "takes fixed points on the plane only");
     if (d->polygon != NULL && o->domain_values > 1)
         return cli_usage_error(&cli, "--domain cannot be used with --polygon: the polygon's "
                                "bounding box is the domain");

@@ -35,6 +35,8 @@ struct cli_domain {
     size_t mask_w, mask_h;     /* the mask's size, the image's */
     unsigned char *inside;     /* mask_w * mask_h, 1 inside; row 0 along y0 */
     struct fixed_points points;/* the fixed points as read (clearance 0: not given) */
+    double radius0;            /* pds_radius as the run starts: the library scales every
+                                  clearance by pds_radius / radius0 (--refine, --count) */
     double area;               /* the domain's area, for --stats; 0: the box's */
 };
 

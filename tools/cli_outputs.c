@@ -47,8 +47,10 @@ int cli_write_points(const char *prog, const pds_sampler *s, const struct cli_ou
 
 /*
  * The shape to draw, from the files read (cli_domain.h); clear[k] is fixed
- * point k's clearance, the default (0 in the file) being the radius in force
- * there: R, or the map's radius at the point.
+ * point k's clearance at the final radius: the default (0 in the file) the
+ * radius in force there, R or the map's radius at the point; one given in
+ * the file scaled as the library scales it, by the final radius over the
+ * first (--refine, --count).
  */
 static void shape_of(struct pattern_shape *ps, double *clear, const struct cli_where *w,
                      double radius)
@@ -68,7 +70,8 @@ static void shape_of(struct pattern_shape *ps, double *clear, const struct cli_w
     }
     for (k = 0; k < d->points.n; k++) {
         double x = d->points.xy[2 * k], y = d->points.xy[2 * k + 1];
-        clear[k] = d->points.clearance[k] > 0 ? d->points.clearance[k]
+        double given = d->points.clearance[k];
+        clear[k] = given > 0 ? given * (radius / d->radius0)
                  : w->field != NULL ? cli_field_at(w->field, w->box, x, y, radius) : radius;
     }
     ps->fixed_xy = d->points.xy;

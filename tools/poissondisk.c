@@ -126,6 +126,8 @@ int main(int argc, char **argv)
     }
     if ((status = cli_configure(PROG, s, &o.where, o.refines.radius)) != 0)
         goto done;
+    /* The radius the clearances are taken at (count mode has chosen its first). */
+    o.domain.radius0 = pds_radius(s);
 
     /* Caught until the points are written; a second Ctrl-C ends the program at once. */
     cli_interrupt_begin();

@@ -22,6 +22,7 @@ exiting 0 when every assertion holds, 1 after the first that does not:
                                    fixed point's clearance: maximality
     area DOMAIN                    prints the domain's area
     svg FILE DOMAIN FIXED R        the outline path and the fixed points' groups
+    clearances FILE                prints the SVG's clearance circles as "x y r" lines
     png FILE DOMAIN OUT            grey outside, white inside, the points dark
 """
 import json
@@ -329,6 +330,16 @@ def check_svg(path, spec, fixed, r):
                   % (x, y, e.attrib, c))
 
 
+def print_clearances(path):
+    """The clearance circles of an SVG as a fixed-point file: "x y r" lines."""
+    root = ET.parse(path).getroot()
+    box = [e for e in root.iter(NS + "rect") if e.get("id") == "domain"][0]
+    ysum = 2 * float(box.get("y")) + float(box.get("height"))
+    groups = {g.get("id"): g for g in root.iter(NS + "g")}
+    for c in groups["clearances"].findall(NS + "circle"):
+        print("%s %.17g %s" % (c.get("cx"), ysum - float(c.get("cy")), c.get("r")))
+
+
 def check_png(path, spec, out):
     d = domain(spec)
     w, h, rows = decode_png(path)
@@ -360,7 +371,7 @@ def check_png(path, spec, out):
 
 CHECKS = {
     "inside": check_inside, "spacing": check_spacing, "covered": check_covered,
-    "area": print_area, "svg": check_svg, "png": check_png,
+    "area": print_area, "svg": check_svg, "png": check_png, "clearances": print_clearances,
 }
 
 if __name__ == "__main__":
