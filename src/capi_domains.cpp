@@ -60,7 +60,7 @@ PDS_API int pds_set_mask(pds_sampler* s, size_t w, size_t h, const unsigned char
         });
     }
     if (inside == nullptr) return fail(s, PDS_EINVAL, "pds_set_mask: the mask is NULL (%zu x %zu)", w, h);
-    if (w > (SIZE_MAX - 1) / 4 / (h + 1))
+    if (h > (SIZE_MAX - 1) / 4 || w > (SIZE_MAX - 1) / 4 / (h + 1))
         return fail(s, PDS_EINVAL, "pds_set_mask: a %zu x %zu mask does not fit in memory", w, h);
     if (const int rc = refuse_periodic(s, "pds_set_mask")) return rc;
     return guarded(s, "pds_set_mask", [&] {

@@ -7,6 +7,30 @@ export type RadiusMap =
   | { width: number; height: number; radii: ArrayLike<number> }
   | { width: number; height: number; grey: ArrayLike<number>; rmin: number; rmax: number; maxval?: number };
 
+/** A ring: [x, y] pairs, or flat numbers x0, y0, x1, y1, ... (either way round; closing vertex optional). */
+export type Ring = ArrayLike<readonly [number, number] | ArrayLike<number>> | ArrayLike<number>;
+
+/** GeoJSON geometries and features that enclose an area (positions may carry a z, dropped). */
+export type GeoJSONArea =
+  | { type: 'Polygon'; coordinates: ArrayLike<ArrayLike<ArrayLike<number>>> }
+  | { type: 'MultiPolygon'; coordinates: ArrayLike<ArrayLike<ArrayLike<ArrayLike<number>>>> }
+  | { type: 'GeometryCollection'; geometries: ArrayLike<GeoJSONArea> }
+  | { type: 'Feature'; geometry: GeoJSONArea; properties?: unknown }
+  | { type: 'FeatureCollection'; features: ArrayLike<{ type: 'Feature'; geometry: GeoJSONArea }> };
+
+/** An image mask, TOP row first (along y1), each value a boolean or 0/1: rows, or row-major values. */
+export type Mask =
+  | ArrayLike<ArrayLike<boolean | number>>
+  | { width: number; height: number; inside: ArrayLike<boolean | number> };
+
+/** Fixed points: flat x, y numbers (such as points() returns), [x, y] or [x, y, clearance] rows
+ *  (mixed: an [x, y] row has clearance 0), or { points, clearances }; a clearance 0 means the
+ *  radius in force there. */
+export type FixedPoints =
+  | ArrayLike<number>
+  | ArrayLike<readonly [number, number] | readonly [number, number, number]>
+  | { points: ArrayLike<number> | ArrayLike<readonly [number, number]>; clearances?: ArrayLike<number> };
+
 export interface SamplerOptions {
   /** 0 <= seed < 2**64 (a BigInt beyond 2**53); random when omitted (read it back from `.seed`). */
   seed?: number | bigint;
@@ -14,6 +38,13 @@ export interface SamplerOptions {
   bounds?: [number, number, number, number] | ArrayLike<number>;
   /** Sample the rectangle as a flat torus: the pattern tiles the plane. */
   periodic?: boolean;
+  /** The domain is a polygon: rings (even-odd rule: holes and outer rings alike, either way round)
+   *  or GeoJSON; its bounding box becomes `bounds` (give no bounds). Not with periodic. */
+  polygon?: ArrayLike<Ring> | Ring | GeoJSONArea;
+  /** The domain is the union of a mask's inside pixels spread over `bounds`, top row along y1. */
+  mask?: Mask;
+  /** Points already there: new points keep their clearance; they count for coverage and are not returned. */
+  fixed?: FixedPoints;
   /** Exactly this many points; the library chooses the radius (radius may then be null). */
   count?: number;
   /** A variable radius from a map (radius null). */
@@ -34,6 +65,7 @@ export class Sampler {
   static create(radius: number | null | ((x: number, y: number) => number),
     options?: SamplerOptions): Promise<Sampler>;
   readonly seed: bigint;
+  /** [x0, y0, x1, y1]: as given, or the polygon's bounding box. */
   readonly bounds: number[];
   readonly periodic: boolean;
   /** Add points until maximal (true) or until maxNew were added (false). Synchronous. */

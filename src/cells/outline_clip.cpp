@@ -25,12 +25,11 @@ double magnitude(const cell_stream::Vtx& v) { return std::fabs(v.x) + std::fabs(
 
 }  // namespace
 
-void OutlineClip::cut_cell(const Point& site, const Box& box, double r) {
-    segments_.clear();
+bool OutlineClip::cut_cell(const Point& site, const Box& box, double r) {
     edges_.clear();
     cut_ = false;
     doubtful_ = false;
-    if (cell_.empty()) return;
+    if (cell_.empty()) return false;
     // The cell's box, widened by its vertices' errors and the margin.
     double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL, err = 0.0, scale = 0.0;
     for (const Vtx& v : cell_) {
@@ -49,13 +48,9 @@ void OutlineClip::cut_cell(const Point& site, const Box& box, double r) {
     for (std::size_t row = r0; row <= r1 && inside; ++row)
         for (std::size_t col = c0; col <= c1 && inside; ++col)
             inside = index.cell_place(col, row) == PolygonIndex::kInside;
-    if (inside) {
-        // Uncut: the cell as it came, edge by edge in order.
-        for (std::size_t i = 0; i < cell_.size(); ++i)
-            segments_.push_back(Segment{cell_[i], cell_[(i + 1) % cell_.size()]});
-        return;
-    }
+    if (inside) return false;
     cut_ = true;
+    segments_.clear();
     index.edges_near(near, edges_);
     // Only the edges whose box meets the cell's: the grid's lists are wider.
     const PolygonRings& rings = polygon_.rings();
@@ -68,6 +63,7 @@ void OutlineClip::cut_cell(const Point& site, const Box& box, double r) {
                  edges_.end());
     keep_cell_edges(site, box, margin);
     keep_outline_edges(site, box, margin);
+    return true;
 }
 
 void OutlineClip::keep_cell_edges(const Point& site, const Box& box, double margin) {

@@ -80,7 +80,17 @@ public:
         void edge(const Vtx&, const Vtx&) {}
         bool done() const { return false; }
         void finish() {
-            clip_.cut_cell(site_, box_, r_);
+            if (!clip_.cut_cell(site_, box_, r_)) {
+                // Uncut: the cell as it came, as the pipeline's own fan feeds it.
+                const std::vector<Vtx>& cell = clip_.cell_;
+                for (std::size_t i = 0; i < cell.size(); ++i) {
+                    sink_.vertex(cell[i]);
+                    if (i > 0) sink_.edge(cell[i - 1], cell[i]);
+                }
+                if (!cell.empty()) sink_.edge(cell.back(), cell.front());
+                sink_.finish();
+                return;
+            }
             for (const Segment& s : clip_.segments_) {
                 sink_.vertex(s.a);
                 sink_.vertex(s.b);
@@ -101,8 +111,9 @@ private:
     struct Segment {
         Vtx a, b;
     };
-    // cell_ -> segments_ (and cut_, doubtful_, edges_).
-    void cut_cell(const Point& site, const Box& box, double r);
+    // cell_ -> segments_ (and cut_, doubtful_, edges_); returns cut_. An
+    // uncut cell leaves segments_ alone: cell_ is its boundary.
+    bool cut_cell(const Point& site, const Box& box, double r);
     void keep_cell_edges(const Point& site, const Box& box, double margin);
     void keep_outline_edges(const Point& site, const Box& box, double margin);
 

@@ -34,6 +34,11 @@ int main(void)
     srunner_add_suite(runner, messages_suite());
     srunner_add_suite(runner, documented_suite());
     srunner_add_suite(runner, field_bound_suite());
+    srunner_add_suite(runner, domain_args_suite());
+    srunner_add_suite(runner, domain_points_suite());
+    srunner_add_suite(runner, domain_raster_suite());
+    srunner_add_suite(runner, domain_law_suite());
+    srunner_add_suite(runner, domain_fixed_suite());
 
     if (test_light())
         printf("PDS_TEST_LIGHT is set: heavy loops shrunk, calibration skipped\n");

@@ -20,6 +20,11 @@
  *   messages_suite     pds_errmsg names the radius or callback at fault    (messages.c)
  *   documented_suite   measured facts the man pages state                  (documented.c)
  *   field_bound_suite  how an unbounded run with a radius map is judged    (field_bound.c)
+ *   domain_args_suite  pds_set_polygon, pds_set_mask: refusals, states     (domain_args.c)
+ *   domain_points_suite  polygons: inside, spaced, maximal; runs           (domain_points.c)
+ *   domain_raster_suite  a mask as the domain; a radius map with a polygon (domain_raster.c)
+ *   domain_law_suite   the law in a polygon against dart throwing         (domain_law.c)
+ *   domain_fixed_suite pds_set_fixed: refusals, clearances, runs, the law  (domain_fixed.c)
  */
 #ifndef PDS_TESTS_API_SUITES_H
 #define PDS_TESTS_API_SUITES_H
@@ -44,5 +49,10 @@ Suite *field_range_suite(void);
 Suite *messages_suite(void);
 Suite *documented_suite(void);
 Suite *field_bound_suite(void);
+Suite *domain_args_suite(void);
+Suite *domain_points_suite(void);
+Suite *domain_raster_suite(void);
+Suite *domain_law_suite(void);
+Suite *domain_fixed_suite(void);
 
 #endif /* PDS_TESTS_API_SUITES_H */

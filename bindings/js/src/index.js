@@ -1,5 +1,6 @@
 // poissondisk: exact maximal Poisson-disk sampling (libpoissondisk in WebAssembly).
-export { Sampler, poissonDisk, version, radiusMapValues } from './sampler.js';
+export { Sampler, poissonDisk, version } from './sampler.js';
+export { radiusMapValues } from './options.js';
 export { init } from './wasm.js';
 export {
   PoissonDiskError, InvalidArgumentError, OutOfMemoryError, StateError, RangeError,

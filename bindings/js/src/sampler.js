@@ -3,6 +3,9 @@ import {
   CanceledError, DONE, ECANCELED, EINTERNAL, InternalError, MORE, StateError, errorFor,
 } from './errors.js';
 import { init, registerCallbacks, unregisterCallbacks } from './wasm.js';
+import {
+  boundingBox, fixedArrays, maskBytes, polygonArrays, radiusMapValues, toSize, withRingLabel,
+} from './options.js';
 
 const UNIT_SQUARE = [0, 0, 1, 1];
 const registry = typeof FinalizationRegistry !== 'undefined'
@@ -20,6 +23,27 @@ function cString(api, ptr) {
 
 function strerrorOf(api, code) { return cString(api, api.exports.pds_strerror(code)); }
 
+// fn(...pointers) with each typed array copied into the module's memory (null
+// stays a NULL pointer), freed after. The views are made once every malloc is
+// done, as a malloc may grow (and so replace) the memory's buffer.
+function withCopies(api, arrays, fn) {
+  const ex = api.exports;
+  const ptrs = [];
+  try {
+    for (const a of arrays) {
+      const p = a === null ? 0 : ex.malloc(Math.max(a.byteLength, 8));
+      if (a !== null && p === 0) throw errorFor(-2, `malloc of ${a.byteLength} bytes failed`, strerrorOf(api, -2));
+      ptrs.push(p);
+    }
+    arrays.forEach((a, i) => {
+      if (a !== null) new Uint8Array(api.memory.buffer, ptrs[i], a.byteLength).set(new Uint8Array(a.buffer, a.byteOffset, a.byteLength));
+    });
+    return fn(...ptrs);
+  } finally {
+    for (const p of ptrs) if (p !== 0) ex.free(p);
+  }
+}
+
 // A random seed (Node 18 has Web Crypto only as node:crypto's webcrypto).
 async function randomSeed() {
   const crypto = globalThis.crypto ?? (await import('node:crypto')).webcrypto;
@@ -35,47 +59,6 @@ function toSeed(seed) {
   return value;
 }
 
-function toSize(value, name, least) {
-  if (!Number.isSafeInteger(value) || value < least || value > 0xffffffff) {
-    throw new TypeError(`${name} must be an integer in [${least}, 2**32), got ${value}`);
-  }
-  return value;
-}
-
-// The radius map as w*h doubles, row 0 along y0: `radii` as given, or
-// `grey` levels of an image (top row first, as images are stored: the top row
-// lies along y1) mapped linearly from rmin (0, black) to rmax (maxval), as
-// the CLI's --radius-map does.
-export function radiusMapValues(map) {
-  const { width, height } = map;
-  toSize(width, 'radiusMap.width', 0);
-  toSize(height, 'radiusMap.height', 0);
-  const n = width * height;
-  if (map.radii !== undefined) {
-    if (map.radii.length !== n) {
-      throw new TypeError(`radiusMap.radii must hold width*height = ${n} values, got ${map.radii.length}`);
-    }
-    return Float64Array.from(map.radii);
-  }
-  const { grey, rmin, rmax } = map;
-  const maxval = map.maxval ?? 255;
-  if (grey === undefined || grey.length !== n) {
-    throw new TypeError(`radiusMap needs radii or grey, width*height = ${n} values`);
-  }
-  if (!(rmin > 0 && rmax >= rmin && Number.isFinite(rmax))) {
-    throw new TypeError(`radiusMap with grey needs finite 0 < rmin <= rmax, got ${rmin}, ${rmax}`);
-  }
-  const out = new Float64Array(n);
-  for (let row = 0; row < height; ++row) {
-    for (let col = 0; col < width; ++col) {
-      const g = grey[row * width + col];
-      let r = g >= maxval ? rmax : rmin + (rmax - rmin) * (g / maxval);
-      if (r > rmax) r = rmax;
-      out[(height - 1 - row) * width + col] = r;
-    }
-  }
-  return out;
-}
 
 export class Sampler {
   #api;
@@ -112,7 +95,7 @@ export class Sampler {
   #setup(api, radius, options) {
     const {
       seed, bounds = UNIT_SQUARE, periodic = false, count, radiusMap,
-      rmin, rmax, progress, signal,
+      rmin, rmax, progress, signal, polygon, mask, fixed,
     } = options;
     let { radiusFn } = options;
     if (typeof radius === 'function') {  // create((x, y) => r, { rmin, rmax })
@@ -127,6 +110,13 @@ export class Sampler {
       throw new TypeError(`bounds must be [x0, y0, x1, y1], got ${bounds}`);
     }
     this.bounds = Array.from(bounds, Number);
+    if (polygon !== undefined && (mask !== undefined || options.bounds !== undefined)) {
+      throw new TypeError('give polygon alone: its bounding box is the domain\'s rectangle (bounds goes with a rectangle or a mask)');
+    }
+    // Shapes are checked before the library sees anything; values by the library.
+    const rings = polygon !== undefined ? polygonArrays(polygon) : null;
+    const raster = mask !== undefined ? maskBytes(mask) : null;
+    const points = fixed !== undefined ? fixedArrays(fixed) : null;
     this.periodic = Boolean(periodic);
     const field = radiusMap !== undefined ? 'radiusMap' : radiusFn !== undefined ? 'radiusFn' : null;
     if (radiusMap !== undefined && radiusFn !== undefined) throw new TypeError('give radiusMap or radiusFn, not both');
@@ -158,16 +148,23 @@ export class Sampler {
       this.#check(ex.pds_set_domain(this.#handle, x0, y0, x1, y1));
       if (this.periodic) this.#check(ex.pds_set_periodic(this.#handle, 1));
       if (count !== undefined) this.#check(ex.pds_set_count(this.#handle, toSize(count, 'count', 0)));
+      if (rings !== null) {
+        const rc = withCopies(api, [rings.xy, rings.ends],
+          (xy, ends) => ex.pds_set_polygon(this.#handle, xy, ends, rings.ends.length));
+        this.#check(rc, rings.labels);
+        this.bounds = boundingBox(rings.xy);  // the library's rectangle now
+      } else if (raster !== null) {
+        const { width, height, inside } = raster;
+        this.#check(withCopies(api, [inside], (p) => ex.pds_set_mask(this.#handle, width, height, p)));
+      }
+      if (points !== null) {
+        const { n, xy, clearances } = points;
+        this.#check(withCopies(api, [xy, clearances], (p, c) => ex.pds_set_fixed(this.#handle, p, c, n)));
+      }
       if (radiusMap !== undefined) {
         const values = radiusMapValues(radiusMap);
-        const ptr = ex.malloc(Math.max(values.length, 1) * 8);
-        if (ptr === 0) throw errorFor(-2, 'malloc for the radius map failed', strerrorOf(api, -2));
-        try {
-          new Float64Array(api.memory.buffer, ptr, values.length).set(values);
-          this.#check(ex.pds_set_radius_map(this.#handle, radiusMap.width, radiusMap.height, ptr));
-        } finally {
-          ex.free(ptr);
-        }
+        this.#check(withCopies(api, [values],
+          (p) => ex.pds_set_radius_map(this.#handle, radiusMap.width, radiusMap.height, p)));
       } else if (radiusFn !== undefined) {
         this.#radiusFn = radiusFn;
         this.#check(ex.pdsjs_set_radius_fn(this.#handle, this.#id, Number(rmin), Number(rmax)));
@@ -241,11 +238,12 @@ export class Sampler {
     }
   }
 
-  #check(rc) {
+  #check(rc, ringLabels = null) {
     if (rc >= 0) return rc;
     const api = this.#api;
     if (this.#errors.length > 0) throw this.#errors[0];
-    const message = this.#handle !== 0 ? cString(api, api.exports.pds_errmsg(this.#handle)) : '';
+    let message = this.#handle !== 0 ? cString(api, api.exports.pds_errmsg(this.#handle)) : '';
+    if (ringLabels !== null) message = withRingLabel(message, ringLabels);
     const strerror = strerrorOf(api, rc);
     const options = rc === ECANCELED && this.#signal?.aborted ? { cause: this.#signal.reason } : undefined;
     throw errorFor(rc, message || strerror, strerror, options);

@@ -26,21 +26,23 @@ from ._errors import (CanceledError, InternalError, InvalidArgumentError, OutOfM
 from ._args import UNIT_SQUARE, Points, ProgressFn, Radii, RadiusFn, random_seed
 from ._sampler import Sampler
 
-__version__ = "1.3.5"  # of this package; version() is the loaded library's
+__version__ = "1.4.0"  # of this package; version() is the loaded library's
 
 
-def sample(radius: Optional[float], *, bounds: Sequence[Sequence[float]] = UNIT_SQUARE,
+def sample(radius: Optional[float], *, bounds: Optional[Sequence[Sequence[float]]] = None,
            seed: Optional[int] = None, periodic: bool = False,
            count: Optional[int] = None, radius_map: Any = None,
            radius_fn: Optional[RadiusFn] = None, rmin: Optional[float] = None,
-           rmax: Optional[float] = None) -> Points:
+           rmax: Optional[float] = None, domain: Any = None, mask: Any = None,
+           fixed: Any = None) -> Points:
     """A maximal pattern in one call: Sampler(...) run to the end, its points.
 
     Same arguments as Sampler; returns a float64 array of shape (N, 2) (a
-    list of (x, y) tuples without numpy).
+    list of (x, y) tuples without numpy). Fixed points are not among them.
     """
     with Sampler(radius, bounds=bounds, seed=seed, periodic=periodic, count=count,
-                 radius_map=radius_map, radius_fn=radius_fn, rmin=rmin, rmax=rmax) as s:
+                 radius_map=radius_map, radius_fn=radius_fn, rmin=rmin, rmax=rmax,
+                 domain=domain, mask=mask, fixed=fixed) as s:
         s.run()
         return s.points
 

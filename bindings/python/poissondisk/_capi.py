@@ -52,7 +52,8 @@ DOUBLE_P = ctypes.POINTER(ctypes.c_double)
 # Functions of later minor versions: a library without them still loads, and
 # what needs them raises NotImplementedError when called.
 OPTIONAL = {"pds_set_periodic": "1.2", "pds_set_count": "1.2", "pds_set_progress": "1.2",
-            "pds_set_radius_map": "1.3", "pds_set_radius_fn": "1.3", "pds_radii": "1.3"}
+            "pds_set_radius_map": "1.3", "pds_set_radius_fn": "1.3", "pds_radii": "1.3",
+            "pds_set_polygon": "1.4", "pds_set_mask": "1.4", "pds_set_fixed": "1.4"}
 
 
 def _installed_libdirs() -> List[str]:
@@ -123,6 +124,9 @@ def _declare(lib: ctypes.CDLL) -> Set[str]:
         "pds_set_radius_map": (i, [vp, sz, sz, DOUBLE_P]),
         "pds_set_radius_fn": (i, [vp, RADIUS_FN, vp, dbl, dbl]),
         "pds_radii": (sz, [vp, sz, sz, DOUBLE_P]),
+        "pds_set_polygon": (i, [vp, DOUBLE_P, ctypes.POINTER(sz), sz]),
+        "pds_set_mask": (i, [vp, sz, sz, ctypes.POINTER(ctypes.c_ubyte)]),
+        "pds_set_fixed": (i, [vp, DOUBLE_P, DOUBLE_P, sz]),
     }
     missing = set()
     for name, (restype, argtypes) in table.items():

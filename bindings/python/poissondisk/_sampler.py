@@ -9,29 +9,53 @@ otherwise; the radii (pds_radii) likewise, shape (N,) or a list of floats.
 from __future__ import annotations
 
 import ctypes
-import math
 import operator
 from typing import Any, Callable, List, Optional, Sequence, Tuple, cast
 
 from . import _capi
 from ._args import (UNIT_SQUARE, Bounds, Points, ProgressFn, Radii, RadiusFn, _check_bounds,
                     _check_field, _check_seed, _map_buffer, _np, _size_arg)
+from ._callbacks import progress_callback, radius_callback
+from ._domain import fixed_buffers, mask_buffer, pointer
 from ._errors import error_for
+from ._geo import Rings, from_domain, ring_label
 
 
 class Sampler:
-    """Exact maximal Poisson-disk sampling in a rectangle or on a torus.
+    """Exact maximal Poisson-disk sampling in a rectangle, a polygon, an image
+    mask or on a torus, around fixed points if given.
 
     Every pair of points is at least `radius` apart (decided exactly), each
     new point is uniform over the area where a point may still go, and run()
-    returns True once no point of the domain is farther than `radius` from
-    every sample (maximal).
+    returns True once every point of the domain, its outline included, lies
+    within `radius` of a sample or within a fixed point's clearance (maximal).
 
     Args:
         radius: the minimum distance R, finite and > 0. May be None when
             `count` is given (the library then chooses it); must be None
             when `radius_map` or `radius_fn` gives the radius.
-        bounds: ((x0, y0), (x1, y1)), the closed rectangle [x0,x1]x[y0,y1].
+        bounds: ((x0, y0), (x1, y1)), the closed rectangle [x0,x1]x[y0,y1];
+            the unit square by default. With `mask`, the rectangle the mask
+            is spread over.
+        domain: a polygon (library 1.4): a sequence of rings, each a sequence
+            of (x, y) pairs or an (n, 2) array (one ring alone too), or a
+            GeoJSON-like Polygon, MultiPolygon, Feature, FeatureCollection or
+            GeometryCollection, as a mapping or through __geo_interface__
+            (shapely, geopandas). The region is what the rings enclose by
+            the even-odd rule (holes and outer rings alike, either way
+            round), outline included; its bounding box is `bounds` then
+            (give no bounds). Copied.
+        mask: an image domain (library 1.4): a 2-D array of booleans (or
+            0/1), shape (h, w), in the image convention: row 0 is the TOP
+            row, along y1, column 0 along x0 (as numpy shows an image; note
+            radius_map's row 0 lies along y0). The domain is the union of
+            the True pixels' squares over `bounds`. Copied.
+        fixed: points already there (library 1.4): an (n, 2) array of
+            (x, y), or (n, 3) of (x, y, clearance), inside the domain's
+            bounding box. Every new point keeps at least the clearance from
+            each (0, or (n, 2): the radius in force there, following
+            refine()); they count for coverage but are not returned by
+            `points` nor counted by len(). Copied.
         seed: an int in [0, 2**64); the same seed and library version give
             the same points. None draws one from os.urandom; read it back
             from `.seed` to repeat the pattern.
@@ -91,17 +115,26 @@ class Sampler:
     # as the library is still using the handle. Shared with the callbacks.
     _calls: Sequence[str] = ()  # the instance's own list from __init__ on
 
-    def __init__(self, radius: Optional[float], *, bounds: Sequence[Sequence[float]] = UNIT_SQUARE,
+    def __init__(self, radius: Optional[float], *,
+                 bounds: Optional[Sequence[Sequence[float]]] = None,
                  seed: Optional[int] = None, periodic: bool = False,
                  count: Optional[int] = None, progress: Optional[ProgressFn] = None,
                  radius_map: Any = None, radius_fn: Optional[RadiusFn] = None,
-                 rmin: Optional[float] = None, rmax: Optional[float] = None) -> None:
+                 rmin: Optional[float] = None, rmax: Optional[float] = None,
+                 domain: Any = None, mask: Any = None, fixed: Any = None) -> None:
         # What the callbacks raised during the current run()/step(), first
         # first. Shared by them; they hold the list, not self (no cycle).
         self._errors: List[BaseException] = []
         self._calls: List[str] = []
         self._seed = _check_seed(seed)
-        self._bounds = _check_bounds(bounds)
+        if domain is not None and (mask is not None or bounds is not None):
+            raise TypeError("give domain= alone: its bounding box is the domain's rectangle "
+                            "(bounds= goes with a rectangle or a mask)")
+        self._bounds = _check_bounds(UNIT_SQUARE if bounds is None else bounds)
+        # The shapes are checked before the C sampler exists; the values by the library.
+        rings = from_domain(domain) if domain is not None else None
+        raster = mask_buffer(mask) if mask is not None else None
+        points = fixed_buffers(fixed) if fixed is not None else None
         field = _check_field(radius, radius_map, radius_fn, rmin, rmax)
         if field is not None:
             if count is not None:
@@ -131,6 +164,18 @@ class Sampler:
                 # 0 is the library's to refuse, with its message.
                 count = _size_arg(count, "count", 0)
                 self._check(_capi.need("pds_set_count")(handle, count), "pds_set_count")
+            if rings is not None:
+                self._set_polygon(rings)
+            elif raster is not None:
+                w, h, inside = raster
+                inside_p = pointer(inside, ctypes.c_ubyte)
+                self._check(_capi.need("pds_set_mask")(handle, w, h, inside_p), "pds_set_mask")
+            if points is not None:
+                n, xy, clearance = points
+                self._check(_capi.need("pds_set_fixed")(
+                    handle, pointer(xy, ctypes.c_double),
+                    None if clearance is None else pointer(clearance, ctypes.c_double), n),
+                    "pds_set_fixed")
             if radius_map is not None:
                 self._set_radius_map(radius_map)
             elif radius_fn is not None:
@@ -199,13 +244,13 @@ class Sampler:
             raise ValueError("operation on a closed Sampler")
         return self._handle
 
-    def _check(self, rc: int, what: str) -> int:
+    def _check(self, rc: int, what: str, rings: Optional[Rings] = None) -> int:
         if rc < 0:
             msg = _capi.text(_capi.lib.pds_errmsg(self._h()))
             # Name the failing function once, whether or not the library did.
             if not msg.startswith(what + ":"):
                 msg = "%s: %s" % (what, msg)
-            raise error_for(rc, msg)
+            raise error_for(rc, ring_label(rings, msg))
         return rc
 
     def _checked_call(self, rc: int, what: str) -> int:
@@ -218,6 +263,12 @@ class Sampler:
             raise exc
         return self._check(rc, what)
 
+    def _set_polygon(self, rings: Rings) -> None:
+        rc = _capi.need("pds_set_polygon")(self._h(), pointer(rings.xy, ctypes.c_double),
+                                           rings.ends, rings.nrings)
+        self._check(rc, "pds_set_polygon", rings)
+        self._bounds = rings.bounding_box()  # the library's rectangle now
+
     def _set_radius_map(self, radius_map: Any) -> None:
         w, h, buf = _map_buffer(radius_map)
         if _np is not None and isinstance(buf, _np.ndarray):
@@ -228,32 +279,8 @@ class Sampler:
         self._check(_capi.need("pds_set_radius_map")(self._h(), w, h, ptr), "pds_set_radius_map")
 
     def _set_radius_fn(self, fn: RadiusFn, rmin: float, rmax: float) -> None:
-        call = fn
-        errors = self._errors  # no reference to self: no cycle through C
-        calls = self._calls
-        nan = math.nan
+        callback = radius_callback(fn, self._errors, self._calls)
         rmin, rmax = float(rmin), float(rmax)  # the library judges them
-
-        def radius_at(user: Any, x: float, y: float) -> float:
-            if errors:
-                return nan  # fn raised: refuse every point until the call returns
-            calls.append("the radius function")
-            try:
-                value = call(x, y)
-                try:
-                    if isinstance(value, (str, bytes, bytearray)):
-                        raise TypeError(value)
-                    return float(value)
-                except (TypeError, ValueError):
-                    raise TypeError("radius_fn(%r, %r) must return a number, got %r"
-                                    % (x, y, value)) from None
-            except BaseException as exc:  # never let it unwind through C
-                errors.append(exc)
-                return nan  # not finite: the library stops before the point
-            finally:
-                calls.pop()
-
-        callback = _capi.RADIUS_FN(radius_at)
         self._check(_capi.need("pds_set_radius_fn")(self._h(), callback, None, rmin, rmax),
                     "pds_set_radius_fn")
         self._radius_fn = callback  # only once the library holds it
@@ -313,23 +340,9 @@ class Sampler:
             return
         if not callable(fn):
             raise TypeError("set_progress() needs a callable or None, got %r" % (fn,))
-        call: ProgressFn = fn
-        errors = self._errors  # no reference to self: no cycle through C
-        calls = self._calls
-
-        def report(user: Any, count: int, done: float) -> int:
-            calls.append("the progress callback")
-            try:
-                return 1 if call(int(count), float(done)) else 0
-            except BaseException as exc:  # never let it unwind through C
-                errors.append(exc)
-                return 1
-            finally:
-                calls.pop()
-
-        callback = _capi.PROGRESS_FN(report)
+        callback = progress_callback(fn, self._errors, self._calls)
         self._check(setter(handle, callback, None), "pds_set_progress")
-        self._progress = (callback, errors)  # only once the library holds it
+        self._progress = (callback, self._errors)  # only once the library holds it
 
     # -- reading it ---------------------------------------------------------------
 
@@ -409,7 +422,7 @@ class Sampler:
 
     @property
     def bounds(self) -> Bounds:
-        """((x0, y0), (x1, y1)) as given."""
+        """((x0, y0), (x1, y1)) as given, or the polygon's bounding box."""
         return self._bounds
 
     @property

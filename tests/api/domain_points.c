@@ -1,0 +1,169 @@
+/*
+ * domain_points.c - patterns in a polygon.
+ *
+ * Contract (poissondisk.h, 1.4): every point lies in the closed polygon (the
+ * even-odd rule, rings either way round, a closing vertex repeated, collinear
+ * runs, holes touching the outer ring at a vertex, spikes narrower than R,
+ * islands, far from the origin or at 1e-6 scale); every sampled point keeps
+ * R from the others; a finished pattern is maximal (checked by
+ * region_covered, independently of the library), and pds_verify says so; the same points however the calls split or a progress
+ * callback cancels them; count mode gives exactly n points; refine keeps the
+ * points and ends maximal at the new radius (domain_runs.c; domain_fixed.c
+ * runs the same with fixed points).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "domain_check.h"
+#include "domain_runs.h"
+#include "helpers.h"
+#include "region.h"
+#include "suites.h"
+
+static pds_sampler *in_polygon(const region *g, double r, uint64_t seed)
+{
+    pds_sampler *s = sampler_new(r, seed);
+    int rc = pds_set_polygon(s, g->xy, g->ends, g->nrings);
+
+    ck_assert_msg(rc == 0, "pds_set_polygon: %d (%s)", rc, pds_errmsg(s));
+    return s;
+}
+
+/* The unit L written in other ways the contract accepts; each with its area. */
+static const double l_reversed_xy[] = {
+    0.0, 0.0, 0.0, 1.0, 0.4, 1.0, 0.4, 0.4, 1.0, 0.4, 1.0, 0.0, 0.0, 0.0,
+    0.1, 0.1, 0.25, 0.1, 0.25, 0.25, 0.1, 0.25, 0.1, 0.1,
+};
+static const size_t l_reversed_ends[] = {7, 12};
+static const double l_collinear_xy[] = {
+    0.0, 0.0, 0.5, 0.0, 1.0, 0.0, 1.0, 0.2, 1.0, 0.4, 0.7, 0.4, 0.4, 0.4, 0.4, 0.7,
+    0.4, 1.0, 0.0, 1.0, 0.0, 0.5,
+    0.1, 0.1, 0.1, 0.25, 0.25, 0.25, 0.25, 0.1,
+};
+static const size_t l_collinear_ends[] = {11, 15};
+/* A triangular hole touching the outer ring at its inner corner (0.4, 0.4). */
+static const double l_touching_xy[] = {
+    0.0, 0.0, 1.0, 0.0, 1.0, 0.4, 0.4, 0.4, 0.4, 1.0, 0.0, 1.0,
+    0.4, 0.4, 0.2, 0.3, 0.3, 0.2,
+};
+static const size_t l_touching_ends[] = {6, 9};
+/* A rectangle and an island far smaller than R, which a point must cover. */
+static const double islands_xy[] = {
+    0.0, 0.0, 1.0, 0.0, 1.0, 0.5, 0.0, 0.5,
+    0.8, 0.9, 0.81, 0.9, 0.81, 0.91, 0.8, 0.91,
+};
+static const size_t islands_ends[] = {4, 8};
+
+/* A square with a spike whose base (0.01) is far narrower than R. */
+static const double spike_xy[] = {
+    0.0, 0.0, 0.5, 0.0, 0.5, 0.5, 0.255, 0.5, 0.25, 1.0, 0.245, 0.5, 0.0, 0.5,
+};
+static const size_t spike_ends[] = {7};
+
+struct shape {
+    const char *name;
+    region g;
+    double area;
+};
+
+static const struct shape shapes[] = {
+    {"the unit L with a hole", {NULL, NULL, 0}, UNIT_L_AREA},
+    {"the L clockwise, closing vertices repeated", {l_reversed_xy, l_reversed_ends, 2},
+     UNIT_L_AREA},
+    {"the L with collinear runs", {l_collinear_xy, l_collinear_ends, 2}, UNIT_L_AREA},
+    {"the L with a hole touching its inner corner", {l_touching_xy, l_touching_ends, 2},
+     0.64 - 0.015},
+    {"a rectangle and a tiny island", {islands_xy, islands_ends, 2}, 0.5 + 1e-4},
+    {"a square with a spike narrower than R", {spike_xy, spike_ends, 1}, 0.25 + 0.0025},
+};
+#define N_SHAPES (sizeof shapes / sizeof shapes[0])
+
+static region shape_region(size_t i)
+{
+    return i == 0 ? UNIT_L : shapes[i].g;
+}
+
+START_TEST(maximal_in_each_shape)
+{
+    const region g = shape_region((size_t)_i);
+    uint64_t seed;
+
+    ck_assert_msg(fabs(region_area(&g) - shapes[_i].area) < 1e-12, "%s: the model's area %.17g",
+                  shapes[_i].name, region_area(&g));
+    for (seed = 1; seed <= pick(3, 1); seed++) {
+        pds_sampler *s = in_polygon(&g, 0.03, seed);
+        char what[128];
+        snprintf(what, sizeof what, "%s, R 0.03, seed %llu", shapes[_i].name,
+                 (unsigned long long)seed);
+        assert_rel_close(pds_free_area(s), shapes[_i].area, 1e-12, what);
+        run_to_end(s);
+        assert_domain_pattern(s, &g, NULL, 0, what);
+        pds_destroy(s);
+    }
+}
+END_TEST
+
+/* The unit L at 1e-6 scale, and moved 1e5 away from the origin. */
+START_TEST(maximal_in_the_l_scaled_and_moved)
+{
+    const double scale[2] = {1e-6, 1.0}, shift[2] = {0.0, 1e5};
+    double xy[20];
+    region g;
+    size_t i;
+    pds_sampler *s;
+    char what[64];
+
+    for (i = 0; i < 20; i++)
+        xy[i] = shift[_i] * (i % 2 ? -1.0 : 1.0) + scale[_i] * UNIT_L.xy[i];
+    g.xy = xy;
+    g.ends = UNIT_L.ends;
+    g.nrings = UNIT_L.nrings;
+    snprintf(what, sizeof what, "the L scaled by %g, moved by %g", scale[_i], shift[_i]);
+    s = in_polygon(&g, 0.03 * scale[_i], 11);
+    assert_rel_close(pds_free_area(s), UNIT_L_AREA * scale[_i] * scale[_i], 1e-9, what);
+    run_to_end(s);
+    assert_domain_pattern(s, &g, NULL, 0, what);
+    pds_destroy(s);
+}
+END_TEST
+
+static const domain_extra nothing = {"the L", NULL, NULL};
+
+START_TEST(same_points_however_split)
+{
+    check_splits(&nothing);
+}
+END_TEST
+
+START_TEST(same_points_canceled_at_every_call)
+{
+    check_cancel(&nothing);
+}
+END_TEST
+
+START_TEST(count_mode_exact)
+{
+    check_count(&nothing);
+}
+END_TEST
+
+START_TEST(refine_keeps_the_points)
+{
+    check_refine(&nothing);
+}
+END_TEST
+
+Suite *domain_points_suite(void)
+{
+    Suite *s = suite_create("domain_points");
+    TCase *tc = new_tcase(s, "polygons");
+    tcase_add_loop_test(tc, maximal_in_each_shape, 0, (int)N_SHAPES);
+    tcase_add_loop_test(tc, maximal_in_the_l_scaled_and_moved, 0, 2);
+    tc = new_tcase(s, "splits, cancel, count, refine");
+    tcase_add_test(tc, same_points_however_split);
+    tcase_add_test(tc, same_points_canceled_at_every_call);
+    tcase_add_test(tc, count_mode_exact);
+    tcase_add_test(tc, refine_keeps_the_points);
+    return s;
+}

@@ -1,0 +1,158 @@
+/*
+ * domain_raster.c - rasters over a domain: an image mask as the domain, and a
+ * radius map spread over a polygon's bounding box.
+ *
+ * Contract (poissondisk.h, 1.4): a mask's domain is the union of its inside
+ * pixels' closed squares over the rectangle of pds_set_domain (set before or
+ * after), row 0 along y0 and column 0 along x0, taken exactly; a radius map
+ * with a polygon is spread over the polygon's bounding box (pds_set_radius_map:
+ * bilinear between pixel centres, constant beyond them). Checked: each point
+ * in an inside pixel by looking the pixel up, maximality on the L polygon the
+ * pixels make (region_covered), each radius against the map where the map is
+ * constant, the rule and coverage with each point's radius.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "domain_check.h"
+#include "helpers.h"
+#include "region.h"
+#include "suites.h"
+
+/* A 4 x 4 raster, row 0 first: the two bottom rows full, the two top rows
+ * only in their left half. Over [1,3] x [-1,1] (pixels of 0.5) that is the
+ * L below, with its foot along y = -1; read upside down, the foot would be
+ * at the top and points would fall outside it. */
+static const unsigned char l_mask[16] = {
+    1, 1, 1, 1,
+    1, 1, 1, 1,
+    1, 1, 0, 0,
+    1, 1, 0, 0,
+};
+static const test_domain mask_box = {1.0, -1.0, 3.0, 1.0};
+static const double l_mask_xy[] = {1, -1, 3, -1, 3, 0, 2, 0, 2, 1, 1, 1};
+static const size_t l_mask_ends[] = {6};
+static const region l_mask_polygon = {l_mask_xy, l_mask_ends, 1};
+
+/* (x, y) lies in the closed square of some inside pixel. */
+static int in_inside_pixel(double x, double y)
+{
+    const double side = 0.5, slack = 1e-12;
+    int i, j;
+
+    for (j = 0; j < 4; j++)
+        for (i = 0; i < 4; i++) {
+            double px = mask_box.x0 + side * i, py = mask_box.y0 + side * j;
+            if (l_mask[4 * j + i] && x >= px - slack && x <= px + side + slack &&
+                y >= py - slack && y <= py + side + slack)
+                return 1;
+        }
+    return 0;
+}
+
+static pds_sampler *masked(double r, uint64_t seed, int domain_first)
+{
+    pds_sampler *s = sampler_new(r, seed);
+
+    if (domain_first)
+        ck_assert_int_eq(pds_set_domain(s, mask_box.x0, mask_box.y0, mask_box.x1, mask_box.y1),
+                         0);
+    ck_assert_int_eq(pds_set_mask(s, 4, 4, l_mask), 0);
+    if (!domain_first)
+        ck_assert_int_eq(pds_set_domain(s, mask_box.x0, mask_box.y0, mask_box.x1, mask_box.y1),
+                         0);
+    return s;
+}
+
+START_TEST(mask_points_in_inside_pixels)
+{
+    uint64_t seed;
+
+    for (seed = 1; seed <= pick(4, 1); seed++) {
+        pds_sampler *s = masked(0.05, seed, 1);
+        double *xy;
+        size_t n, i;
+        char what[64];
+        snprintf(what, sizeof what, "the L mask, seed %llu", (unsigned long long)seed);
+        assert_rel_close(pds_free_area(s), 3.0, 1e-12, "the mask's area: 12 pixels of 0.25");
+        run_to_end(s);
+        xy = points_copy(s, &n);
+        for (i = 0; i < n; i++)
+            ck_assert_msg(in_inside_pixel(xy[2 * i], xy[2 * i + 1]),
+                          "%s: point %zu (%.17g, %.17g) is in no inside pixel", what, i,
+                          xy[2 * i], xy[2 * i + 1]);
+        assert_domain_pattern(s, &l_mask_polygon, NULL, 0, what);
+        free(xy);
+        pds_destroy(s);
+    }
+}
+END_TEST
+
+START_TEST(mask_domain_before_or_after)
+{
+    pds_sampler *a = masked(0.05, 9, 1), *b = masked(0.05, 9, 0);
+
+    assert_same_future(a, b, "pds_set_domain before or after pds_set_mask");
+    pds_destroy(a);
+    pds_destroy(b);
+}
+END_TEST
+
+/* The unit L moved to [2,3] x [5,6]: a map spread over that box, not over
+ * the unit square pds_create set. */
+static const double far_l_xy[] = {
+    2.0, 5.0, 3.0, 5.0, 3.0, 5.4, 2.4, 5.4, 2.4, 6.0, 2.0, 6.0,
+    2.1, 5.1, 2.1, 5.25, 2.25, 5.25, 2.25, 5.1,
+};
+static const size_t far_l_ends[] = {6, 10};
+static const region far_l = {far_l_xy, far_l_ends, 2};
+
+START_TEST(radius_map_over_the_polygon_box)
+{
+    /* 2 x 1: pixel centres at x = 2.25 and 2.75; left of the first the
+     * field is 0.02, right of the second 0.04, bilinear between. */
+    const double map[2] = {0.02, 0.04};
+    uint64_t seed;
+
+    for (seed = 1; seed <= pick(3, 1); seed++) {
+        pds_sampler *s = sampler_new(1.0, seed);
+        double *xy, *r;
+        size_t n, i, left = 0, right = 0;
+        char what[64];
+        snprintf(what, sizeof what, "a radius map over the far L, seed %llu",
+                 (unsigned long long)seed);
+        ck_assert_int_eq(pds_set_radius_map(s, 2, 1, map), 0);
+        ck_assert_int_eq(pds_set_polygon(s, far_l.xy, far_l.ends, far_l.nrings), 0);
+        run_to_end(s);
+        ck_assert_msg(pds_radius(s) == 0.04, "%s: pds_radius %.17g", what, pds_radius(s));
+        domain_pattern(s, &xy, &r, &n);
+        for (i = 0; i < n; i++) {
+            const double x = xy[2 * i];
+            const double want = x <= 2.25 ? 0.02 : x >= 2.75 ? 0.04 : 0.02 + 0.04 * (x - 2.25);
+            ck_assert_msg(fabs(r[i] - want) <= 1e-12 * want,
+                          "%s: point %zu at x %.17g has radius %.17g, the map gives %.17g",
+                          what, i, x, r[i], want);
+            left += x <= 2.25;
+            right += x >= 2.75;
+        }
+        ck_assert_msg(left > 0 && right > 0, "%s: %zu points left, %zu right", what, left,
+                      right);
+        assert_domain_pattern(s, &far_l, NULL, 0, what);
+        free(xy);
+        free(r);
+        pds_destroy(s);
+    }
+}
+END_TEST
+
+Suite *domain_raster_suite(void)
+{
+    Suite *s = suite_create("domain_raster");
+    TCase *tc = new_tcase(s, "mask");
+    tcase_add_test(tc, mask_points_in_inside_pixels);
+    tcase_add_test(tc, mask_domain_before_or_after);
+    tc = new_tcase(s, "radius map");
+    tcase_add_test(tc, radius_map_over_the_polygon_box);
+    return s;
+}
