@@ -114,9 +114,10 @@ $(LIB_A): $(LIB_OBJ)
 # ---- command-line program: public API only, linked against the static library --------
 # The pictures (PNG included: tools/png.c writes it) need nothing beyond libc and libm.
 CLI_SRC := tools/poissondisk.c tools/cli_args.c tools/cli_options.c tools/cli_progress.c tools/cli_report.c \
-           tools/cli_field.c tools/pgm.c \
+           tools/cli_field.c tools/pgm.c tools/cli_domain.c \
+           tools/shape_files.c tools/shape_text.c tools/geojson.c tools/json_check.c \
            tools/cli_sample.c tools/cli_outputs.c tools/cli_output_args.c tools/cli_spectrum.c \
-           tools/out_formats.c tools/pattern_svg.c tools/pattern_png.c tools/pattern_stats.c tools/pattern_layers.c \
+           tools/out_formats.c tools/pattern_svg.c tools/pattern_png.c tools/pattern_domain.c tools/pattern_stats.c tools/pattern_layers.c \
            tools/png.c tools/points_in.c tools/spectrum.c tools/spectrum_out.c \
            tools/spectrum_plot.c
 $(CLI): $(CLI_SRC) $(wildcard tools/*.h) include/poissondisk.h $(LIB_A)
@@ -174,6 +175,27 @@ stipple-picture: $(CLI)
 stipple-image:
 	$(PYTHON) docs/stipple_image.py > docs/stipple.pgm.tmp || { rm -f docs/stipple.pgm.tmp; exit 1; }
 	mv docs/stipple.pgm.tmp docs/stipple.pgm
+
+# ---- island-picture: the README's shaped domain (--polygon) ---------------------------
+# docs/island.geojson is a made-up island, a coast of 420 vertices with a lake (a hole)
+# and an islet, and docs/island.pgm its radius map over the bounding box, dark along
+# every shore; docs/island.py draws both (make island-data draws them again, the same
+# bytes). The points fill the island and the islet but not the lake, dense along the
+# shores: docs/island.svg. tests/check-cli-domains.sh checks that the committed picture
+# is this command's output. Written to a temporary file first, as the tile above.
+ISLAND_ARGS := --polygon docs/island.geojson --radius-map docs/island.pgm --rmin 0.09 \
+               --rmax 0.45 --seed 1 --dot-radius 0.05
+.PHONY: island-picture island-data
+island-picture: $(CLI)
+	$(CLI) $(ISLAND_ARGS) --verify --stats --svg docs/island.svg.tmp > /dev/null \
+	    || { rm -f docs/island.svg.tmp; exit 1; }
+	mv docs/island.svg.tmp docs/island.svg
+island-data:
+	$(PYTHON) docs/island.py geojson > docs/island.geojson.tmp \
+	    || { rm -f docs/island.geojson.tmp; exit 1; }
+	$(PYTHON) docs/island.py pgm > docs/island.pgm.tmp || { rm -f docs/island.pgm.tmp; exit 1; }
+	mv docs/island.geojson.tmp docs/island.geojson
+	mv docs/island.pgm.tmp docs/island.pgm
 
 # ---- tests ---------------------------------------------------------------------------
 deps:
@@ -248,6 +270,7 @@ check-cli: $(CLI)
 	sh tests/check-cli-features.sh $(CLI)
 	sh tests/check-cli-output.sh $(CLI)
 	sh tests/check-cli-field.sh $(CLI)
+	sh tests/check-cli-domains.sh $(CLI)
 
 # check-python: tests/python/run_venv.py pip-installs a copy of bindings/python offline
 # into a scratch venv of SYSTEM_PYTHON (--system-site-packages: Debian's numpy and scipy

@@ -102,7 +102,7 @@ expect "--bogus --version: exit 2 (got $rc)" [ "$rc" -eq 2 ]
 # The help and the parser come from one table: every option the help lists is
 # known to the parser, and each has an entry in the manual.
 grep -Eo '^  --[a-z-]+' "$tmp/help.out" | tr -d ' ' > "$tmp/help-options"
-expect "--help lists the 30 options" [ "$(lines "$tmp/help-options")" -eq 30 ]
+expect "--help lists the 33 options" [ "$(lines "$tmp/help-options")" -eq 33 ]
 sed -n '/^$/q;p' "$tmp/help.out" > "$tmp/help-usage"    # up to the first blank line
 while read -r opt; do
     run optknown "$opt"

@@ -91,9 +91,26 @@ static int opt_domain(void *ctx, const struct cli_option *opt, const char *const
     int k;
 
     (void)opt;
+    ((struct options *)ctx)->domain_values++;
     for (k = 0; k < 4; k++)
         if (cli_parse_double(v[k], &((struct options *)ctx)->where.box[k]) != 0)
             return CLI_BAD(k);
+    return CLI_OK;
+}
+
+/* --polygon, --mask, --fixed: file names, read once all options are (cli_domain.c). */
+static int opt_domain_file(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    struct cli_domain *d = &((struct options *)ctx)->domain;
+
+    if (v[0][0] == '\0')
+        return CLI_BAD(0);
+    if (strcmp(opt->name, "--polygon") == 0)
+        d->polygon = v[0];
+    else if (strcmp(opt->name, "--mask") == 0)
+        d->mask = v[0];
+    else
+        d->fixed = v[0];
     return CLI_OK;
 }
 
@@ -159,6 +176,23 @@ static const struct cli_option option_list[] = {
       "make the domain a torus: distances wrap around in x and y, the points lie in "
       "[X0,X1)x[Y0,Y1) and the pattern tiles the plane; R must not exceed half the "
       "shorter side" },
+    { "--polygon", 1, "FILE", 0, NULL, opt_domain_file, "a file name",
+      "sample inside a polygon instead of the rectangle: GeoJSON (a Polygon, MultiPolygon, "
+      "or a Feature or FeatureCollection of those) or text, an \"x y\" line per vertex and "
+      "a blank line between rings; the rings combine by the even-odd rule (holes too), the "
+      "outline belongs to the domain, and the polygon's bounding box is the domain of "
+      "--radius-map and the pictures; not with --domain, --mask or --periodic" },
+    { "--mask", 1, "FILE", 0, NULL, opt_domain_file, "a file name",
+      "sample inside the dark pixels of a grey-scale PGM image (P2 or P5): a pixel darker "
+      "than mid-grey (grey level under half maxval) is inside; the image is stretched over "
+      "--domain, its top row along Y1, and the domain is the union of the inside pixels' "
+      "squares, exactly; not with --polygon or --periodic" },
+    { "--fixed", 1, "FILE", 0, NULL, opt_domain_file, "a file name",
+      "points already there, \"x y\" or \"x y clearance\" per line ('#' comments): every "
+      "new point keeps at least the clearance from each (default: the radius in force "
+      "there; a given one scales with the radius, as --refine or --count change it), they "
+      "count for maximality, and the output holds only the new points; each must lie in "
+      "the domain's bounding box; not with --periodic" },
     { "--refine", 1, "R2", CLI_REPEAT, NULL, opt_refine, "a finite number > 0",
       "when the pattern is maximal, continue at the smaller radius R2 keeping every "
       "point; may be repeated, each R2 no larger than the radius before it; with "
@@ -240,6 +274,31 @@ static const struct cli_table cli = {
 
 const struct cli_table *cli_program_table(void) { return &cli; }
 
+/* The domain options against the others: 0, or the exit status after the message. */
+static int domain_check(const struct options *o)
+{
+    const struct cli_domain *d = &o->domain;
+    const char *shape = d->polygon != NULL ? "--polygon" : d->mask != NULL ? "--mask" : NULL;
+
+    if (d->polygon != NULL && d->mask != NULL)
+        return cli_usage_error(&cli, "--mask cannot be used with --polygon: the domain is "
+                               "either a polygon or the dark pixels of an image");
+    if (shape != NULL && o->where.periodic)
+        return cli_usage_error(&cli, "--periodic cannot be used with %s: a torus has no "
+                               "outline, and the library samples %s on the plane only", shape,
+                               d->polygon != NULL ? "polygons" : "masks");
+    if (d->fixed != NULL && o->where.periodic)
+        return cli_usage_error(&cli, "--periodic cannot be used with --fixed: the library "
+                               "takes fixed points on the plane only");
+    if (d->polygon != NULL && o->domain_values > 1)
+        return cli_usage_error(&cli, "--domain cannot be used with --polygon: the polygon's "
+                               "bounding box is the domain");
+    if (o->out.spectrum_from != NULL && (shape != NULL || d->fixed != NULL))
+        return cli_usage_error(&cli, "%s cannot be used with --spectrum-from: the patterns are "
+                               "read, not made", shape != NULL ? shape : "--fixed");
+    return 0;
+}
+
 /* Returns 0 to go on, CLI_STOP (--help, --version), or an exit status. */
 int cli_parse_args(int argc, char **argv, struct options *o)
 {
@@ -270,6 +329,8 @@ int cli_parse_args(int argc, char **argv, struct options *o)
             return cli_usage_error(&cli, "--radius-map cannot be used with --spectrum-from: "
                                    "the patterns are read, not made");
     }
+    if ((rc = domain_check(o)) != 0)
+        return rc;
     if (o->where.count > 0 && rf->nrefine > 0)
         return cli_usage_error(&cli, "--refine cannot be used with --count: the library "
                                "chooses the radius");

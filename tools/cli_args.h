@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "cli_domain.h"
 #include "cli_field.h"
 #include "cli_outputs.h"
 #include "cli_report.h"
@@ -19,6 +20,8 @@ struct options {
     uint64_t seed;
     struct cli_where where;   /* --domain, --periodic, --count */
     struct cli_field field;   /* --radius-map, --rmin, --rmax */
+    struct cli_domain domain; /* --polygon, --mask, --fixed */
+    unsigned domain_values;   /* times --domain's values were stored: 1, the default */
     struct cli_refines refines;/* --radius, --refine, --max-points, --progress */
     struct cli_outputs out;   /* --format, --output, --svg, --png, --spectrum... */
     int verify;

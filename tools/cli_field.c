@@ -76,3 +76,35 @@ double cli_field_smallest(const struct cli_field *f, double largest)
 {
     return largest == f->hi ? f->lo : f->lo * (largest / f->hi);
 }
+
+/* Where v lies between the pixel centres along an axis of n pixels over [lo, hi]: the
+   lower centre *i (clamped) and the weight of the upper one. */
+static double between(double v, double lo, double hi, size_t n, size_t *i)
+{
+    double u = (v - lo) / (hi - lo) * (double)n - 0.5;
+
+    if (!(u > 0)) { /* also a NaN from an empty side */
+        *i = 0;
+        return 0;
+    }
+    if (u >= (double)(n - 1)) {
+        *i = n - 1;
+        return 0;
+    }
+    *i = (size_t)u;
+    return u - (double)*i;
+}
+
+double cli_field_at(const struct cli_field *f, const double box[4], double x, double y,
+                    double largest)
+{
+    size_t i, j, i1, j1;
+    double t = between(x, box[0], box[2], f->w, &i), u = between(y, box[1], box[3], f->h, &j);
+    double r;
+
+    i1 = i + 1 < f->w ? i + 1 : i;
+    j1 = j + 1 < f->h ? j + 1 : j;
+    r = (1 - u) * ((1 - t) * f->r[j * f->w + i] + t * f->r[j * f->w + i1])
+        + u * ((1 - t) * f->r[j1 * f->w + i] + t * f->r[j1 * f->w + i1]);
+    return largest == f->hi ? r : r * (largest / f->hi);
+}

@@ -35,4 +35,12 @@ void cli_field_free(struct cli_field *f);
  */
 double cli_field_smallest(const struct cli_field *f, double largest);
 
+/*
+ * The map's radius at (x, y) of box (x0 y0 x1 y1), as the library computes
+ * it: bilinear between pixel centres, constant beyond the outermost ones,
+ * scaled as cli_field_smallest. For the pictures' clearance circles.
+ */
+double cli_field_at(const struct cli_field *f, const double box[4], double x, double y,
+                    double largest);
+
 #endif /* POISSONDISK_CLI_FIELD_H */

@@ -45,11 +45,46 @@ int cli_write_points(const char *prog, const pds_sampler *s, const struct cli_ou
     return 0;
 }
 
+/*
+ * The shape to draw, from the files read (cli_domain.h); clear[k] is fixed
+ * point k's clearance at the final radius: the default (0 in the file) the
+ * radius in force there, R or the map's radius at the point; one given in
+ * the file scaled as the library scales it, by the final radius over the
+ * first (--refine, --count).
+ */
+static void shape_of(struct pattern_shape *ps, double *clear, const struct cli_where *w,
+                     double radius)
+{
+    const struct cli_domain *d = w->shape;
+    size_t k;
+
+    memset(ps, 0, sizeof *ps);
+    if (d->polygon != NULL) {
+        ps->rings_xy = d->rings.xy;
+        ps->ring_ends = d->rings.ring_ends;
+        ps->nrings = d->rings.nrings;
+    } else if (d->mask != NULL) {
+        ps->inside = d->inside;
+        ps->mask_w = d->mask_w;
+        ps->mask_h = d->mask_h;
+    }
+    for (k = 0; k < d->points.n; k++) {
+        double x = d->points.xy[2 * k], y = d->points.xy[2 * k + 1];
+        double given = d->points.clearance[k];
+        clear[k] = given > 0 ? given * (radius / d->radius0)
+                 : w->field != NULL ? cli_field_at(w->field, w->box, x, y, radius) : radius;
+    }
+    ps->fixed_xy = d->points.xy;
+    ps->clearance = clear;
+    ps->nfixed = d->points.n;
+}
+
 int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_outputs *o,
                        const struct cli_where *w)
 {
     struct pattern p;
-    double *xy, *radii = NULL;
+    struct pattern_shape shape;
+    double *xy, *radii = NULL, *clear = NULL;
     int status = 0;
 
     if (o->svg == NULL && o->png == NULL)
@@ -58,9 +93,12 @@ int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_
     xy = malloc((p.n > 0 ? p.n : 1) * 2 * sizeof *xy);
     if (w->field != NULL)
         radii = malloc((p.n > 0 ? p.n : 1) * sizeof *radii);
-    if (xy == NULL || (w->field != NULL && radii == NULL)) {
+    if (w->shape != NULL)
+        clear = malloc((w->shape->points.n > 0 ? w->shape->points.n : 1) * sizeof *clear);
+    if (xy == NULL || (w->field != NULL && radii == NULL) || (w->shape != NULL && clear == NULL)) {
         free(xy);
         free(radii);
+        free(clear);
         fprintf(stderr, "%s: out of memory for the pictures\n", prog);
         return CLI_EXIT_LIBRARY;
     }
@@ -76,11 +114,17 @@ int cli_write_pictures(const char *prog, const pds_sampler *s, const struct cli_
     }
     p.dot = o->dot;
     p.periodic = w->periodic;
+    p.shape = NULL;
+    if (w->shape != NULL) {
+        shape_of(&shape, clear, w, p.radius);
+        p.shape = &shape;
+    }
     if (o->svg != NULL && pattern_write_svg(&p, o->disks, o->svg) != 0)
         status = write_failed(prog, o->svg);
     if (status == 0 && o->png != NULL && pattern_write_png(&p, o->size, o->png) != 0)
         status = write_failed(prog, o->png);
     free(xy);
     free(radii);
+    free(clear);
     return status;
 }

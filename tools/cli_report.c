@@ -142,10 +142,13 @@ void cli_print_stats(const char *prog, const pds_sampler *s, const struct cli_wh
     const double *d = w->box;
     double free_area = pds_free_area(s), covered;
     char close = w->periodic ? ')' : ']';
-    char radius[80], lo[32], hi[32], space[128], cover[32];
+    char radius[80], lo[32], hi[32], space[128], cover[32], shape[64];
     struct scaled u;
 
     scale_domain(&u, d);
+    /* A polygon or mask fills only part of its box: its own area, when known. */
+    if (cli_domain_shaped(w->shape) && w->shape->area > 0 && isfinite(w->shape->area))
+        u.area = ldexp(w->shape->area, -2 * u.e);
     if (w->count > 0 && !verified)
         maximal = free_area == 0.0;
     covered = coverage(free_area, &u, maximal);
@@ -162,11 +165,19 @@ void cli_print_stats(const char *prog, const pds_sampler *s, const struct cli_wh
         spacing(space, sizeof space, s, w, &u);
         exact(radius, sizeof radius, pds_radius(s));
     }
+    /* What shapes the domain, after the box: " polygon" or " mask", " fixed=K". */
+    shape[0] = '\0';
+    if (w->shape != NULL) {
+        int n = snprintf(shape, sizeof shape, "%s", w->shape->polygon != NULL ? " polygon"
+                                                    : w->shape->mask != NULL  ? " mask" : "");
+        if (w->shape->fixed != NULL)
+            snprintf(shape + n, sizeof shape - (size_t)n, " fixed=%zu", w->shape->points.n);
+    }
     fprintf(stderr,
-            "%s: N=%zu R=%s%s domain=[%g,%g%cx[%g,%g%c%s coverage=%s %s%s %s %.3f s\n", prog,
+            "%s: N=%zu R=%s%s domain=[%g,%g%cx[%g,%g%c%s%s coverage=%s %s%s %s %.3f s\n", prog,
             pds_count(s), radius,
             w->count > 0 ? " (chosen for --count)" : "", d[0], d[2], close, d[1], d[3], close,
-            w->periodic ? " periodic" : "", cover,
+            w->periodic ? " periodic" : "", shape, cover,
             maximal ? "maximal" : "not maximal", verified ? " verified" : "", space, seconds);
 }
 

@@ -11,6 +11,7 @@
 
 #include "poissondisk.h"
 
+#include "cli_domain.h"
 #include "cli_field.h"
 
 /* Where the points go, as the command line gave it. */
@@ -19,14 +20,18 @@ struct cli_where {
     int periodic;  /* --periodic: a torus, the points in [x0,x1)x[y0,y1) */
     size_t count;  /* --count N, or 0 when --radius or --radius-map gives the radius */
     const struct cli_field *field; /* --radius-map, once loaded; NULL: one radius */
+    struct cli_domain *shape;      /* --polygon, --mask, --fixed, once loaded (box is
+                                      then a polygon's bounding box); NULL: none */
 };
 
 /*
  * Prints the --stats line to stderr: N, the radius (with the fewest digits
  * that read back exactly, so a chosen radius can be checked), the domain
- * (half-open and "periodic" on a torus), the coverage (the share of the
- * domain where no point fits), maximal or not, verified, then the packing
- * density pi R^2 N / (4A) (the share covered by the disks of radius R/2),
+ * (half-open and "periodic" on a torus; the bounding box followed by
+ * "polygon" or "mask" and "fixed=K" with the domain options), the coverage
+ * (the share of the domain where no point fits), maximal or not, verified,
+ * then the packing density pi R^2 N / (4A) (the share covered by the disks
+ * of radius R/2; A the polygon's or mask's area, when shaped),
  * the smallest pair distance and the mean nearest-neighbour distance in
  * units of R (pattern_stats.c; wrapped on a torus; "-" below two points),
  * and the seconds spent sampling. All are computed with lengths in units of

@@ -25,10 +25,13 @@ int cli_library_error(const char *prog, const struct cli_where *w, int rc, const
 
 int cli_configure(const char *prog, pds_sampler *s, const struct cli_where *w, double radius)
 {
-    /* Always set: the default is the unit square, the library's own default. */
+    /* Set even as the default unit square, the library's own default; not with a
+       polygon, which replaces it (box is then its bounding box, flat when the
+       polygon is: pds_set_polygon names the ring). */
     const double *d = w->box;
     char domain[128];
-    int rc = pds_set_domain(s, d[0], d[1], d[2], d[3]);
+    int polygon = w->shape != NULL && w->shape->polygon != NULL;
+    int rc = polygon ? 0 : pds_set_domain(s, d[0], d[1], d[2], d[3]);
     if (rc < 0) {
         if (rc == PDS_ERANGE)
             return cli_range_error(prog, w, radius, pds_errmsg(s));
@@ -40,6 +43,10 @@ int cli_configure(const char *prog, pds_sampler *s, const struct cli_where *w, d
         fprintf(stderr, "%s: cannot make the domain periodic: %s\n", prog, pds_errmsg(s));
         return CLI_EXIT_LIBRARY;
     }
+    /* Before the radius map, spread over the polygon's bounding box. */
+    if (w->shape != NULL
+        && (rc = cli_domain_configure(prog, s, w->shape, &w->shape->area)) != 0)
+        return rc;
     if (w->field != NULL
         && (rc = pds_set_radius_map(s, w->field->w, w->field->h, w->field->r)) < 0) {
         fprintf(stderr, "%s: cannot use --radius-map %s: %s\n", prog, w->field->path,

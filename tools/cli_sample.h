@@ -48,7 +48,9 @@ int cli_library_error(const char *prog, const struct cli_where *w, int rc, const
                       double value, const char *msg);
 
 /*
- * Sets the domain, --periodic, the radius map and --count on a new sampler.
+ * Sets the domain, --periodic, the polygon, mask and fixed points
+ * (cli_domain.h; w->shape->area measured), the radius map and --count on a
+ * new sampler.
  * Returns 0 or an exit status.
  */
 int cli_configure(const char *prog, pds_sampler *s, const struct cli_where *w, double radius);

@@ -64,6 +64,12 @@ int pattern_write_png(const struct pattern *p, unsigned size, const char *path)
     }
     for (k = 0; k < (size_t)pw * ph; k++)
         pix[k] = 255;
+    /* The box outside a polygon or mask grey, the outline under the dots. */
+    if (p->shape != NULL && (p->shape->rings_xy != NULL || p->shape->inside != NULL)
+        && pattern_png_outline(pix, pw, ph, p, scale) != 0) {
+        free(pix);
+        return -1;
+    }
     for (k = 0; k < p->n; k++) {
         /* Pixel coordinates: x to the right from x0, y downwards from y1. */
         double cx = (p->xy[2 * k] - b[0]) * scale, cy = (b[3] - p->xy[2 * k + 1]) * scale;
@@ -73,6 +79,8 @@ int pattern_write_png(const struct pattern *p, unsigned size, const char *path)
             for (j = -span; j <= span; j++)
                 dot(pix, pw, ph, cx + i * w * scale, cy + j * h * scale, r);
     }
+    if (p->shape != NULL)
+        pattern_png_fixed(pix, pw, ph, p, scale, r);
     rc = png_write_gray(path, pix, pw, ph);
     free(pix);
     return rc;

@@ -37,6 +37,8 @@ int pattern_write_svg(const struct pattern *p, int disks, const char *path)
     double vw = w + 2 * margin, vh = h + 2 * margin;
     double scale = LONG_SIDE_PX / (vw > vh ? vw : vh);
     double dot = p->dot > 0 ? p->dot : (p->radii != NULL ? p->rmin : p->radius) / 8;
+    const struct pattern_shape *m = p->shape;
+    int shaped = m != NULL;
     FILE *f = fopen(path, "w");
     int rc = 0, i, j;
     char close = p->periodic ? ')' : ']';
@@ -56,13 +58,28 @@ int pattern_write_svg(const struct pattern *p, int disks, const char *path)
         fprintf(f, "<title>poissondisk: %zu points, R = %.10g, domain "
                    "[%.10g,%.10g%cx[%.10g,%.10g%c%s</title>\n", p->n, p->radius, b[0], b[2],
                 close, b[1], b[3], close, p->periodic ? ", periodic" : "");
+    /* "; K fixed points" only when there are some (%.0zu prints nothing for 0). */
+    if (shaped)
+        fprintf(f, "<desc>domain: %s%s%.0zu%s</desc>\n",
+                m->rings_xy != NULL ? "a polygon (even-odd rings)"
+                : m->inside != NULL ? "the inside pixels of a mask" : "the box",
+                m->nfixed > 0 ? "; " : "", m->nfixed, m->nfixed > 0 ? " fixed points" : "");
     fprintf(f, "<desc>y grows upwards: the point (x, y) is drawn at (x, %.10g - y)</desc>\n",
             b[1] + b[3]);
     fprintf(f, "<defs><clipPath id=\"box\"><rect x=\"%.10g\" y=\"%.10g\" width=\"%.10g\" "
                "height=\"%.10g\"/></clipPath></defs>\n", b[0], b[1], w, h);
-    fprintf(f, "<rect id=\"domain\" x=\"%.10g\" y=\"%.10g\" width=\"%.10g\" height=\"%.10g\" "
-               "fill=\"white\" stroke=\"black\" stroke-width=\"%.10g\"/>\n",
-            b[0], b[1], w, h, line);
+    /* A polygon or mask fills part of the box: the box grey, the domain white. */
+    if (shaped && (m->rings_xy != NULL || m->inside != NULL))
+        fprintf(f, "<rect id=\"domain\" x=\"%.10g\" y=\"%.10g\" width=\"%.10g\" "
+                   "height=\"%.10g\" fill=\"#e6e6e6\" stroke=\"none\"/>\n", b[0], b[1], w, h);
+    else
+        fprintf(f, "<rect id=\"domain\" x=\"%.10g\" y=\"%.10g\" width=\"%.10g\" "
+                   "height=\"%.10g\" fill=\"white\" stroke=\"black\" stroke-width=\"%.10g\"/>\n",
+                b[0], b[1], w, h, line);
+    if (shaped) {
+        rc |= pattern_svg_outline(f, p, line);
+        rc |= pattern_svg_fixed(f, p, line, dot, 1);
+    }
     if (disks) {
         /* On a torus the disks are clipped to the box, and the parts that cross a
            side come back on the other side: the picture then tiles. */
@@ -85,7 +102,10 @@ int pattern_write_svg(const struct pattern *p, int disks, const char *path)
     }
     fputs("<g id=\"points\" fill=\"black\">\n", f);
     rc |= circles(f, p, dot, NULL, 0, 0);
-    fputs("</g>\n</svg>\n", f);
+    fputs("</g>\n", f);
+    if (shaped)
+        rc |= pattern_svg_fixed(f, p, line, dot, 0);
+    fputs("</svg>\n", f);
     if (ferror(f))
         rc = -1;
     if (fclose(f) != 0)

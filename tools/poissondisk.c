@@ -8,7 +8,8 @@
  * lets the library choose the radius for an exact number of points instead,
  * and --periodic makes the pattern tile the plane; --radius-map gives each
  * point a radius of its own, from a grey-scale image (cli_field.c: black
- * dense, white sparse, as a stippling). --format and --output
+ * dense, white sparse, as a stippling). --polygon and --mask shape the
+ * domain, --fixed gives points already there (cli_domain.c). --format and --output
  * choose how and where the points go; --svg, --png and the --spectrum
  * options draw and analyse the pattern (cli_outputs.c, cli_spectrum.c).
  *
@@ -93,6 +94,13 @@ int main(int argc, char **argv)
         status = cli_spectrum_from_file(PROG, &o.out, &o.where, o.refines.radius);
         goto done;
     }
+    /* Every input file is read before the sampler exists, the outputs long after:
+       a malformed file leaves no output behind. */
+    if (o.domain.polygon != NULL || o.domain.mask != NULL || o.domain.fixed != NULL) {
+        if ((status = cli_domain_load(PROG, &o.domain, o.where.box)) != 0)
+            goto done;
+        o.where.shape = &o.domain;
+    }
     if (o.field.path != NULL) {
         if ((status = cli_field_load(PROG, &o.field)) != 0)
             goto done;
@@ -118,6 +126,8 @@ int main(int argc, char **argv)
     }
     if ((status = cli_configure(PROG, s, &o.where, o.refines.radius)) != 0)
         goto done;
+    /* The radius the clearances are taken at (count mode has chosen its first). */
+    o.domain.radius0 = pds_radius(s);
 
     /* Caught until the points are written; a second Ctrl-C ends the program at once. */
     cli_interrupt_begin();
@@ -159,6 +169,7 @@ int main(int argc, char **argv)
 done:
     pds_destroy(s);
     cli_field_free(&o.field);
+    cli_domain_free(&o.domain);
     free(o.refines.refine);
     return status;
 }
