@@ -422,7 +422,10 @@ PDS_API size_t pds_radii(const pds_sampler *s, size_t first, size_t count, doubl
  *   ring_ends  nrings increasing ends; the last is the vertex count, at
  *              most 2^28.
  * Rings may run either way round, repeat their first vertex at the end,
- * hold collinear runs, and touch each other at vertices. The copy is kept:
+ * hold collinear runs, and touch each other at vertices. Rings that cross
+ * one another or themselves (a bow tie) are taken by the even-odd rule too:
+ * every point stays exact and the pattern maximal, but within a cell of a
+ * crossing the law (uniform over the free region) is not guaranteed. The copy is kept:
  * the arrays may be freed. The domain's bounding box replaces the rectangle
  * of pds_set_domain, and a radius map is spread over that box. A polygon
  * replaces an earlier polygon or mask; nrings == 0 (xy and ring_ends may be

@@ -3,40 +3,37 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace pds {
 
 namespace {
 
-// The side of ring k the inside lies on: +1 left, -1 right, 0 when no edge
-// tells (both sides alike at every edge tried: the ring is cancelled by
-// another, or rings crowd it closer than the probe's offset).
-int inside_side(const PolygonRings& rings, const PolygonIndex& index, std::size_t k) {
+// The side of edge i the inside lies on: +1 left, -1 right, 0 when the
+// probes do not tell (both alike: the edge is cancelled by another, or
+// edges crowd it closer than the probes' offset).
+int edge_side(const PolygonRings& rings, const PolygonIndex& index, std::size_t i) {
     // The offset is 2^-20 of the edge's length: far below any feature a
     // sampled pattern can resolve, far above rounding.
     constexpr double kOffset = 0x1p-20;
-    for (std::size_t i = rings.ring_begin(k); i < rings.ring_begin(k + 1); ++i) {
-        const Point a = rings.edge_start(i), b = rings.edge_end(i);
-        const Point m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
-        const Point normal{-(b.y - a.y) * kOffset, (b.x - a.x) * kOffset};  // to the left
-        const PolygonIndex::Place left = index.locate(Point{m.x + normal.x, m.y + normal.y});
-        const PolygonIndex::Place right = index.locate(Point{m.x - normal.x, m.y - normal.y});
-        if (left == PolygonIndex::kInside && right == PolygonIndex::kOutside) return 1;
-        if (left == PolygonIndex::kOutside && right == PolygonIndex::kInside) return -1;
-    }
+    const Point a = rings.edge_start(i), b = rings.edge_end(i);
+    const Point m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+    const Point normal{-(b.y - a.y) * kOffset, (b.x - a.x) * kOffset};  // to the left
+    const PolygonIndex::Place left = index.locate(Point{m.x + normal.x, m.y + normal.y});
+    const PolygonIndex::Place right = index.locate(Point{m.x - normal.x, m.y - normal.y});
+    if (left == PolygonIndex::kInside && right == PolygonIndex::kOutside) return 1;
+    if (left == PolygonIndex::kOutside && right == PolygonIndex::kInside) return -1;
     return 0;
 }
 
-// The ring's shoelace area, positive when counterclockwise (about its first
-// vertex, to keep the products small).
-double signed_area(const PolygonRings& rings, std::size_t k) {
-    const Point o = rings.points()[rings.ring_begin(k)];
-    double twice = 0.0;
-    for (std::size_t i = rings.ring_begin(k); i < rings.ring_begin(k + 1); ++i) {
-        const Point a = rings.edge_start(i), b = rings.edge_end(i);
-        twice += (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-    }
-    return 0.5 * twice;
+// Edge i's term of the shoelace area, about the centre of the bounding box
+// (one origin for every edge: with sides that vary along a ring, only the
+// whole boundary is a closed curve), positive for a counterclockwise turn.
+double edge_area(const PolygonRings& rings, std::size_t i) {
+    const Box& box = rings.bounds();
+    const Point o{0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1)};
+    const Point a = rings.edge_start(i), b = rings.edge_end(i);
+    return 0.5 * ((a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x));
 }
 
 }  // namespace
@@ -45,14 +42,26 @@ Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rin
     : rings_(std::make_unique<PolygonRings>(xy, ring_ends, rings)),
       index_(std::make_unique<PolygonIndex>(*rings_)),
       perimeter_(rings_->perimeter()) {
-    bool any_side = false;
+    // Each edge's side, probed: the region's boundary, oriented with the
+    // inside on its left, is then known edge by edge, even where rings
+    // cross (a bow tie's two lobes run opposite ways), and the even-odd area
+    // is its boundary integral. An edge the probes cannot tell takes its
+    // ring's side (the majority of its told edges).
     inside_left_.resize(rings_->vertices());
+    std::vector<int> side(rings_->vertices());
+    bool any_side = false;
     for (std::size_t k = 0; k < rings_->rings(); ++k) {
-        const int side = inside_side(*rings_, *index_, k);
-        std::fill(inside_left_.begin() + static_cast<std::ptrdiff_t>(rings_->ring_begin(k)),
-                  inside_left_.begin() + static_cast<std::ptrdiff_t>(rings_->ring_begin(k + 1)), side >= 0);
-        any_side = any_side || side != 0;
-        area_ += side * signed_area(*rings_, k);
+        int votes = 0;
+        for (std::size_t i = rings_->ring_begin(k); i < rings_->ring_begin(k + 1); ++i) {
+            side[i] = edge_side(*rings_, *index_, i);
+            votes += side[i];
+        }
+        for (std::size_t i = rings_->ring_begin(k); i < rings_->ring_begin(k + 1); ++i) {
+            if (side[i] == 0) side[i] = votes > 0 ? 1 : (votes < 0 ? -1 : 0);
+            any_side = any_side || side[i] != 0;
+            inside_left_[i] = side[i] >= 0;
+            area_ += side[i] * edge_area(*rings_, i);
+        }
     }
     if (!any_side || !(area_ > 0.0)) throw DomainError("the outline encloses nothing by the even-odd rule");
     for (std::size_t r = 0; r < index_->rows(); ++r)

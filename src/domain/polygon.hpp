@@ -3,12 +3,11 @@
 // of a domain (rectangle.hpp lists it): contains, bounds, area, perimeter, a
 // count bound, a uniform point, exact scaling.
 //
-// Its area comes from the shoelace areas of the rings, each counted with the
-// sign of the side the inside lies on; that side is found by locating points
-// just either side of one of the ring's edges. This is the even-odd area
-// when rings do not cross one another (they may touch); rings that cross
-// give an estimate, which only steers counts and never a point's place. An
-// outline with nothing inside (a ring traced twice, say) is refused.
+// Each edge's inside side is found by locating two points just either side
+// of its middle; its area is the boundary integral of the edges so
+// oriented: the even-odd area, rings crossing one another or themselves
+// included (a bow tie is two triangles). An outline with nothing inside (a
+// ring traced twice, say) is refused.
 #ifndef PDS_POLYGON_HPP
 #define PDS_POLYGON_HPP
 
