@@ -185,6 +185,30 @@ START_TEST(mask_outline_is_the_union_of_its_pixels) {
 }
 END_TEST
 
+// An outline of 10^5 vertices (a star whose edges are far shorter than R)
+// with a hole: maximal, verified, every point inside by the plain test.
+START_TEST(outline_of_a_hundred_thousand_vertices) {
+    Shape s;
+    std::vector<Point> outer;
+    const int n = 100000;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * M_PI * i / n;
+        const double r = 0.32 + 0.14 * std::cos(5 * a) + 0.004 * std::cos(997 * a);
+        outer.push_back(Point{0.5 + r * std::cos(a), 0.5 + r * std::sin(a)});
+    }
+    s.ring(outer);
+    s.ring({{0.45, 0.45}, {0.45, 0.55}, {0.55, 0.55}, {0.55, 0.45}});
+    pds::Sampler sampler(0.012, 5);
+    sampler.set_polygon(s.polygon());
+    std::size_t added = 0;
+    ck_assert(sampler.run(0, &added) == pds::Sampler::RunEnd::complete);
+    const pds::VerifyReport rep = sampler.verify();
+    ck_assert_msg(rep.valid && rep.maximal, "%s", rep.failure.c_str());
+    ck_assert(sampler.free_area() == 0.0);
+    for (const Point& p : points_of(sampler)) ck_assert(s.contains(p));
+}
+END_TEST
+
 // The second point of a run is uniform over the shape minus the first
 // point's disk: the Jones loop's (cut cells, first exits) against plain
 // rejection sampling, on a grid of bins, by a chi-square test over both
@@ -243,6 +267,7 @@ Suite* outline_clip_suite() {
     tcase_add_test(tc, maximal_patterns_are_covered_cell_by_cell);
     tcase_add_test(tc, mask_outline_is_the_union_of_its_pixels);
     tcase_add_test(tc, second_point_is_uniform_in_a_cut_region);
+    tcase_add_test(tc, outline_of_a_hundred_thousand_vertices);
     suite_add_tcase(s, tc);
     return s;
 }
