@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
     const pds::Box square{0.0, 0.0, 1.0, 1.0};
     const auto room = static_cast<std::size_t>(1.2 * n_target) + 1000;  // a maximal pattern holds about 1.0 N
     pds::Rng rng(seed);
-    pds::DartStage darts(square, radius);
+    pds::DartStage darts(square, nullptr, radius);
     const auto jones_stage = pds::make_jones_stage(square, radius);
     pds::JonesStage& jones = *jones_stage;
     darts.reserve(room);
