@@ -63,7 +63,8 @@ START_TEST(first_point_is_uniform_around_fixed_points) {
         return std::min(nb - 1, static_cast<int>(p.y * nb)) * nb + std::min(nb - 1, static_cast<int>(p.x * nb));
     };
     pds::Rng rng(777);
-    for (int k = 0; k < 30000; ++k) {
+    const int runs = test_light() ? 1500 : 30000;
+    for (int k = 0; k < runs; ++k) {
         pds::Sampler s = make(0.2, static_cast<std::uint64_t>(k) + 1);
         std::size_t added = 0;
         s.run(1, &added);
@@ -92,8 +93,9 @@ START_TEST(first_point_is_uniform_around_fixed_points) {
 END_TEST
 
 START_TEST(maximal_patterns_keep_the_clearances) {
-    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-        pds::Sampler s = make(0.03, seed);
+    const std::uint64_t seeds = test_light() ? 1 : 4;
+    for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+        pds::Sampler s = make(test_light() ? 0.06 : 0.03, seed);
         std::size_t added = 0;
         ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
         ck_assert_uint_eq(added, s.count());
@@ -110,7 +112,7 @@ START_TEST(maximal_patterns_keep_the_clearances) {
         ck_assert_msg(rep.valid && rep.maximal, "%s", rep.failure.c_str());
         ck_assert(s.free_area() == 0.0);
         // Without the fixed points the same seed makes more points.
-        pds::Sampler plain(0.03, seed);
+        pds::Sampler plain(test_light() ? 0.06 : 0.03, seed);
         plain.set_polygon(std::make_shared<const pds::Polygon>(kXY.data(), kEnds.data(), kEnds.size()));
         plain.run(0, &added);
         ck_assert_uint_gt(plain.count(), s.count());
