@@ -21,6 +21,7 @@
  */
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -155,6 +156,14 @@ void fz_op_polygon(fz_state *st, fz_reader *r)
         verdict = 0;
     else
         verdict = fz_shape_polygon(&sh, xy, ends, nrings);
+    if (getenv("PDS_FUZZ_TRACE") != NULL) { /* the rings, for a reproducer */
+        size_t v;
+        for (k = 0, v = 0; k < nrings; k++) {
+            fprintf(stderr, "fuzz:   ring %zu (ends %zu):", k, ends[k]);
+            for (; v < ends[k] && v < n; v++) fprintf(stderr, " %.17g,%.17g", xy[2 * v], xy[2 * v + 1]);
+            fputc('\n', stderr);
+        }
+    }
     rc = pds_set_polygon(st->s, bad == 15 ? NULL : xy, bad == 14 ? NULL : ends, nrings);
     fz_codes(st, "pds_set_polygon", rc, shape_codes(st, verdict));
     if (rc == 0 && st->s != NULL) {

@@ -46,6 +46,7 @@ static int work_allowed(const fz_state *st)
     const double n = fz_count_bound(st);
     double lo, hi;
     if (st->s == NULL || st->budget == 0) return WORK_NONE;
+    if (st->shape.antenna && !fz_strict()) return WORK_NONE; /* found/NOTES: polygon_antenna_hang */
     fz_lib_bound(st, &lo, &hi);
     /* Count mode ends at n points; the dart stage's grid still follows the bound. */
     if (st->target != 0 && (double)st->target <= FZ_TO_END_MAX &&

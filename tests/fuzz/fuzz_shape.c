@@ -245,6 +245,16 @@ int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t 
             if (!fz_strict()) verdict = -1;
         }
     }
+    for (k = 0; k < nrings; k++) { /* a zero-width spike: b - a and c - b opposite */
+        const size_t s = ring_start(sh, k), e = sh->ends[k];
+        const double *u = sh->u;
+        for (v = s; v < e; v++) {
+            const size_t b = v + 1 < e ? v + 1 : s, c = b + 1 < e ? b + 1 : s;
+            const double abx = u[2 * b] - u[2 * v], aby = u[2 * b + 1] - u[2 * v + 1];
+            const double bcx = u[2 * c] - u[2 * b], bcy = u[2 * c + 1] - u[2 * b + 1];
+            if (abx * bcy - aby * bcx == 0.0 && abx * bcx + aby * bcy < 0.0) sh->antenna = 1;
+        }
+    }
     if (!(sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3])) return verdict == 1 ? 0 : -1;
     if (sh->frac == 0.0 && verdict == 1) return 0; /* encloses nothing: a ring traced twice */
     if (!(sh->frac > 1e-6)) return -1;

@@ -470,7 +470,22 @@ SEEDS = {
 # tolerates them unless PDS_FUZZ_STRICT is set, so replay them with
 #   PDS_FUZZ_STRICT=1 $(B)/fuzz/fuzz_api tests/fuzz/found/NAME
 # Once fixed, each moves into SEEDS as regress_NAME.
-FOUND = {}
+FOUND = {
+    # A ring that turns straight back along its last edge (a spike of zero width,
+    # [2.25, 3] x {0}): pds_run never returns (R 0.1, any seed; the Jones loop keeps
+    # drawing in OutlineClip::cut_cell). Replay with -timeout=10.
+    "polygon_antenna_hang": radius_factor(0, 7) + [79]
+    + polygon([ring(5, SCATTER, verts=[(0, 0), (3, 0), (2.25, 0), (2.25, 1.75), (0, 1.75)])])
+    + op(RUN_TO_END),
+    # A ring that crosses itself (a bowtie of two triangles, area 2 by the even-odd
+    # rule, shoelace area 0): PDS_EINVAL "the outline encloses nothing".
+    "polygon_bowtie_refused": radius_factor(0, 7) + [80]
+    + polygon([ring(4, SCATTER, verts=[(0, 0), (2, 2), (2, 0), (0, 2)])]) + op(RUN_TO_END),
+    # A 4 x 4 square (sides with collinear runs) at 1e15: PDS_EINVAL "encloses
+    # nothing"; the side probes, 2^-20 of an edge away, round onto the edge.
+    "polygon_below_resolution": radius_factor(0, 7) + [81]
+    + polygon([ring(8, SIDES, size=(12, 12))], offset=(3, 3)) + op(RUN_TO_END),
+}
 
 
 def main():
