@@ -96,6 +96,8 @@ typedef struct {
     double frac;         /* the even-odd area over the box's */
     int area_known;      /* no two edges cross: the library's area is the even-odd one */
     size_t v_lo, v_hi;   /* a mask: bounds on the outline's vertex count */
+    int crossing;        /* two edges cross: pds_run may end "maximal" early (found/NOTES),
+                          * so no point is asked for unless PDS_FUZZ_STRICT is set */
     int antenna;         /* a ring turns straight back along its last edge: pds_run
                           * never returns (found/NOTES), so no point is asked for
                           * unless PDS_FUZZ_STRICT is set */

@@ -46,7 +46,8 @@ static int work_allowed(const fz_state *st)
     const double n = fz_count_bound(st);
     double lo, hi;
     if (st->s == NULL || st->budget == 0) return WORK_NONE;
-    if (st->shape.antenna && !fz_strict()) return WORK_NONE; /* found/NOTES: polygon_antenna_hang */
+    /* found/NOTES: polygon_antenna_hang, polygon_crossing_maximal_early */
+    if ((st->shape.antenna || st->shape.crossing) && !fz_strict()) return WORK_NONE;
     fz_lib_bound(st, &lo, &hi);
     /* Count mode ends at n points; the dart stage's grid still follows the bound. */
     if (st->target != 0 && (double)st->target <= FZ_TO_END_MAX &&
@@ -220,6 +221,7 @@ static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
     if (before + added > 0 && (rc == PDS_ENOMEM || rc == PDS_ERANGE)) st->run_failed = 1;
     reread_radius(st, "pds_run");
     account(st, added);
+    FZ_CHECK(rc != 0 || st->count > 0, "pds_run(max_new %zu): maximal without a point", max_new);
     if (rc == 0) st->maximal = 1;
     if (sync_now || rc == 0) fz_sync(st);
     if (rc == 0) fz_check_maximal(st);
@@ -300,6 +302,10 @@ void fz_op_domain(fz_state *st, fz_reader *r)
     /* The domain (or a mask's rectangle) in force; the radius function sees
      * it (fuzz_field.c); count mode's start radius follows it (fuzz_domains.c). */
     if (rc == 0) fz_domain_set(st, d);
+    /* An open bug (found/NOTES, mask_domain_refused): the refusal keeps the new
+     * rectangle, which a later mask is spread over. */
+    if (rc == PDS_EINVAL && valid && st->count == 0 && st->shape.kind == FZ_SHAPE_MASK && !fz_strict())
+        memcpy(st->shape.rect, d, sizeof d);
     fz_sync(st);
 }
 

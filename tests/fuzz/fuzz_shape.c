@@ -165,6 +165,7 @@ static void measure(fz_shape *sh)
         sh->u[2 * i + 1] = norm(sh->xy[2 * i + 1], sh->box[1], sh->box[3]);
     }
     sh->frac = slab_area(sh, &crossing);
+    sh->crossing = crossing;
     sh->area_known = !crossing && sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3];
 }
 

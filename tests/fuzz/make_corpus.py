@@ -485,6 +485,18 @@ FOUND = {
     # nothing"; the side probes, 2^-20 of an edge away, round onto the edge.
     "polygon_below_resolution": radius_factor(0, 7) + [81]
     + polygon([ring(8, SIDES, size=(12, 12))], offset=(3, 3)) + op(RUN_TO_END),
+    # Rings that cross: pds_run(s, 0) returns PDS_DONE with no point (seed 71; after
+    # steps, pds_verify says PDS_EINTERNAL: part of the domain near the outline uncovered).
+    "polygon_crossing_maximal_early": radius_factor(0, 7) + [71]
+    + polygon([ring(6, SCATTER, verts=[(-2, -2), (2, 2), (2, -2), (-2, 3), (0, 1), (2, -3)]),
+               ring(4, SCATTER, verts=[(-1, 0), (0, -1), (1, 0), (0, -0.125)])])
+    + op(RUN_TO_END) + op(STEP, 3) + op(RUN_CHUNKS, 3),
+    # An 8 x 8 mask, then pds_set_domain(1e15, 0, 1e15 + 0.25, 0.3): PDS_EINVAL ("ring 0:
+    # 2 distinct vertices": the pixel lines round together), and the refused rectangle
+    # stays: a 1 x 1 mask set next lies at 1e15, where pds_run gives PDS_ERANGE.
+    "mask_domain_refused": radius_factor(0, 7) + [82]
+    + mask(8, 8, [0x49, 0x92, 0x24, 0x49, 0x92, 0x24, 0x49, 0x92])
+    + op(DOMAIN) + domain_relative(1, 0, 7, 0) + mask(1, 1, fill=1) + op(RUN) + [1],
 }
 
 
