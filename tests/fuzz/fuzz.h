@@ -311,6 +311,9 @@ void fz_op_polygon(fz_state *st, fz_reader *r);
 void fz_op_mask(fz_state *st, fz_reader *r);
 /* pds_set_domain succeeded with d: the rectangle, and a mask follows it. */
 void fz_domain_set(fz_state *st, const double d[4]);
+/* A box so long and thin (aspect above 1e8 / factor) that the library's polygon
+ * index takes gigabytes (found/NOTES, polygon_index_aspect): not set unless strict. */
+int fz_index_too_tall(const double box[4], double factor);
 /* pds_set_domain(d) on a sampler with a mask may refuse the outline it makes. */
 int fz_domain_may_refuse(const fz_state *st, const double d[4]);
 /* The replay's sampler t gets the same domain; 0 when memory ran out. */

@@ -92,8 +92,10 @@ static size_t decode_ring(fz_reader *r, double *xy, size_t n, double unit, doubl
             t = xy[2 * a + 1];
             xy[2 * a + 1] = xy[2 * b + 1], xy[2 * b + 1] = t;
         }
-    if ((flags & 0xe0) == 0xe0) /* a hostile coordinate: NaN, inf, 1e300, 2^-1074 ... */
-        xy[2 * (first + fz_u8(r) % (n - first)) + (flags >> 4 & 1)] = fz_hostile(r);
+    if ((flags & 0xe0) == 0xe0) { /* a hostile coordinate: NaN, inf, 1e300, 2^-1074 ... */
+        const size_t at = first + fz_u8(r) % (n - first); /* read before the value */
+        xy[2 * at + (flags >> 4 & 1)] = fz_hostile(r);
+    }
     if (flags & 16) { /* traced twice: encloses nothing by itself */
         const size_t len = n - first;
         memcpy(xy + 2 * n, xy + 2 * first, 2 * len * sizeof *xy);
@@ -116,6 +118,13 @@ static void shape_changed(fz_state *st)
     fz_changed_before_first(st);
     fz_set_torus(st);
     fz_count_radius(st);
+}
+
+int fz_index_too_tall(const double box[4], double factor)
+{
+    const double w = box[2] * 0.5 - box[0] * 0.5, h = box[3] * 0.5 - box[1] * 0.5;
+    const double aspect = (w > h ? w / h : h / w) * factor;
+    return !fz_strict() && !(aspect <= 1e8); /* found/NOTES: polygon_index_aspect */
 }
 
 /* The codes for setting a shape whose arguments the contract says `verdict` of. */
@@ -156,6 +165,10 @@ void fz_op_polygon(fz_state *st, fz_reader *r)
         verdict = 0;
     else
         verdict = fz_shape_polygon(&sh, xy, ends, nrings);
+    if (sh.u != NULL && fz_index_too_tall(sh.box, 1.0)) { /* the library's index would take GBs */
+        fz_shape_free(&sh);
+        return;
+    }
     if (getenv("PDS_FUZZ_TRACE") != NULL) { /* the rings, for a reproducer */
         size_t v;
         for (k = 0, v = 0; k < nrings; k++) {
@@ -207,6 +220,10 @@ void fz_op_mask(fz_state *st, fz_reader *r)
         verdict = 0;
     else
         verdict = fz_shape_mask(&sh, w, h, pix, st->shape.rect);
+    if (w != 0 && h != 0 && verdict != 0 && fz_index_too_tall(st->shape.rect, 8.0)) {
+        fz_shape_free(&sh);
+        return;
+    }
     rc = pds_set_mask(st->s, w, h, null_pix ? NULL : pix);
     fz_codes(st, "pds_set_mask", rc, shape_codes(st, verdict));
     if (rc == 0 && st->s != NULL) {

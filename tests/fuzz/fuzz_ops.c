@@ -286,6 +286,11 @@ void fz_op_domain(fz_state *st, fz_reader *r)
     unsigned allowed;
 
     fz_domain(r, st->s ? st->radius : 1.0, d);
+    /* A mask's outline over a rectangle of extreme aspect: the library's index
+     * would take gigabytes (found/NOTES). */
+    if (st->s != NULL && st->count == 0 && st->shape.kind == FZ_SHAPE_MASK && d[0] < d[2] &&
+        d[1] < d[3] && fz_index_too_tall(d, 8.0))
+        return;
     rc = pds_set_domain(st->s, d[0], d[1], d[2], d[3]);
     valid = isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]) && isfinite(d[3]) &&
             d[0] < d[2] && d[1] < d[3];

@@ -491,6 +491,12 @@ FOUND = {
     + polygon([ring(6, SCATTER, verts=[(-2, -2), (2, 2), (2, -2), (-2, 3), (0, 1), (2, -3)]),
                ring(4, SCATTER, verts=[(-1, 0), (0, -1), (1, 0), (0, -0.125)])])
     + op(RUN_TO_END) + op(STEP, 3) + op(RUN_CHUNKS, 3),
+    # A 5-vertex ring (traced twice) with a vertex at y = 2^53, the others within 2 of
+    # the origin: pds_set_polygon asks for 9 GB (standalone: over 24 GB, killed) in
+    # PolygonIndex, whose rows, sqrt(cells h / w), have no cap for a tall box.
+    # Replay only through the fuzz binary (its -malloc_limit_mb reports it).
+    "polygon_index_aspect": radius_factor(0, 7) + [83]
+    + polygon([ring(5, STAR, TWICE, verts=[2] * 5, hostile_at=(1, 31))]),
     # An 8 x 8 mask, then pds_set_domain(1e15, 0, 1e15 + 0.25, 0.3): PDS_EINVAL ("ring 0:
     # 2 distinct vertices": the pixel lines round together), and the refused rectangle
     # stays: a 1 x 1 mask set next lies at 1e15, where pds_run gives PDS_ERANGE.
