@@ -194,7 +194,9 @@ void fz_check_free_area(fz_state *st)
     /* In count mode "complete" means n points, maximal only at an earlier radius. */
     if (st->maximal && st->target == 0)
         FZ_CHECK(a == 0.0, "pds_free_area is %g on a maximal pattern", a);
-    if (isfinite(area) && area > 1e-290) {
+    /* (A domain whose coordinates cannot be scaled, a nonzero one below 2^-890 of the
+     * largest, gets no point (PDS_ERANGE): its free area is not judged.) */
+    if (isfinite(area) && area > 1e-290 && fz_precision_ok(st, INFINITY)) {
         if (st->count == 0)
             FZ_CHECK(fabs(a - area) <= 1e-9 * area, "pds_free_area is %.17g before the first "
                      "point, the domain's area is %.17g", a, area);
