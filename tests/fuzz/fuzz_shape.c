@@ -253,7 +253,10 @@ int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t 
             const size_t b = v + 1 < e ? v + 1 : s, c = b + 1 < e ? b + 1 : s;
             const double abx = u[2 * b] - u[2 * v], aby = u[2 * b + 1] - u[2 * v + 1];
             const double bcx = u[2 * c] - u[2 * b], bcy = u[2 * c + 1] - u[2 * b + 1];
-            if (abx * bcy - aby * bcx == 0.0 && abx * bcx + aby * bcy < 0.0) sh->antenna = 1;
+            /* (or nearly: a spike 1e-16 wide hangs pds_run too, found/NOTES) */
+            if (fabs(abx * bcy - aby * bcx) <= 1e-9 * hypot(abx, aby) * hypot(bcx, bcy) &&
+                abx * bcx + aby * bcy < 0.0)
+                sh->antenna = 1;
         }
     }
     if (!(sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3])) return verdict == 1 ? 0 : -1;

@@ -497,6 +497,10 @@ FOUND = {
     # Replay only through the fuzz binary (its -malloc_limit_mb reports it).
     "polygon_index_aspect": radius_factor(0, 7) + [83]
     + polygon([ring(5, STAR, TWICE, verts=[2] * 5, hostile_at=(1, 31))]),
+    # The same hang with a spike of width ~1e-16 (a ring's first vertex within rounding of
+    # the edge from its second to its third), as the fuzzer found it (raw bytes).
+    "polygon_thin_spike_hang": list(bytes.fromhex("010007467f010100000000000000000000001200090000000b00000f000f0b0f0b0f0f0b0f0b0f0b"
+        "36010000000003030303030303070b06070f")),
     # An 8 x 8 mask, then pds_set_domain(1e15, 0, 1e15 + 0.25, 0.3): PDS_EINVAL ("ring 0:
     # 2 distinct vertices": the pixel lines round together), and the refused rectangle
     # stays: a 1 x 1 mask set next lies at 1e15, where pds_run gives PDS_ERANGE.
