@@ -259,6 +259,13 @@ int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t 
                 sh->antenna = 1;
         }
     }
+    { /* Every |coordinate| below 2^-500: the library's predicates underflow and call
+       * a star "on one line" (found/NOTES, polygon_tiny_collinear). */
+        double m = 0.0;
+        for (v = 0; v < 2 * sh->nv; v++)
+            if (fabs(sh->xy[v]) > m) m = fabs(sh->xy[v]);
+        if (m < 0x1p-500 && !fz_strict() && verdict == 1) verdict = -1;
+    }
     if (!(sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3])) return verdict == 1 ? 0 : -1;
     if (sh->frac == 0.0 && verdict == 1) return 0; /* encloses nothing: a ring traced twice */
     if (!(sh->frac > 1e-6)) return -1;

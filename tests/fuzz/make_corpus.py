@@ -501,6 +501,10 @@ FOUND = {
     # the edge from its second to its third), as the fuzzer found it (raw bytes).
     "polygon_thin_spike_hang": list(bytes.fromhex("010007467f010100000000000000000000001200090000000b00000f000f0b0f0b0f0f0b0f0b0f0b"
         "36010000000003030303030303070b06070f")),
+    # Two rings at 1e-271 (a star and a rectangle's sides): PDS_EINVAL "ring 0: its vertices
+    # lie on one line" (raw bytes as the fuzzer found them).
+    "polygon_tiny_collinear": list(bytes.fromhex("010007477f010180000000007261646975732066756e6374696f6e0810e815000000000008010000"
+        "000600f80000f80800000834340b0f")),
     # An 8 x 8 mask, then pds_set_domain(1e15, 0, 1e15 + 0.25, 0.3): PDS_EINVAL ("ring 0:
     # 2 distinct vertices": the pixel lines round together), and the refused rectangle
     # stays: a 1 x 1 mask set next lies at 1e15, where pds_run gives PDS_ERANGE.
