@@ -445,6 +445,9 @@ $(ALLOC_BIN): $(wildcard tests/alloc/*.c tests/alloc/*.h) include/poissondisk.h 
 check-alloc: $(ALLOC_BIN)
 	$(ALLOC_BIN) small
 	$(ALLOC_BIN) torus
+	$(ALLOC_BIN) polygon
+	$(ALLOC_BIN) mask
+	$(ALLOC_BIN) field
 	$(ALLOC_BIN)
 
 # ---- benchmark -----------------------------------------------------------------------

@@ -17,7 +17,11 @@
  * check; an abort or a hang in a child is reported, not fatal. A call that
  * fails is retried at once (pds_run with the rest of its budget).
  *
- * "alloc_fail small" tries every k of a ~300-point sequence. The default,
+ * "alloc_fail small" tries every k of a ~300-point sequence. "polygon", "mask"
+ * and "field" run the small sequence in a domain users have (1.4): a star
+ * with a hole (50 vertices), an 8 x 8 mask, and that star with a radius
+ * function; setting the domain (and the field) is one more call whose
+ * allocations fail in turn. The default,
  * ~7000-point sequence tries every k in calls that make at most 3 * SPAN
  * allocations; in larger ones (pds_verify's exact arithmetic makes tens of
  * thousands) the first SPAN, the last SPAN and SPAN spread evenly in
@@ -56,10 +60,18 @@ struct config {
     size_t first_run, second_run;
     int every_k;
     int periodic; /* the torus: copies allocate as points are added */
+    int shape;    /* the domain: the rectangle, a polygon, a mask, a polygon with a field */
 };
-static const struct config kSmall = {"small", 0.05, 0.035, 100, 50, 1, 0};
-static const struct config kLarge = {"large", 0.01, 0.007, 2000, 500, 0, 0};
-static const struct config kTorus = {"torus", 0.05, 0.035, 100, 50, 1, 1};
+enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD };
+static const struct config kSmall = {"small", 0.05, 0.035, 100, 50, 1, 0, RECTANGLE};
+static const struct config kLarge = {"large", 0.01, 0.007, 2000, 500, 0, 0, RECTANGLE};
+static const struct config kTorus = {"torus", 0.05, 0.035, 100, 50, 1, 1, RECTANGLE};
+/* pds_verify's exact arithmetic along an outline makes thousands of
+ * allocations: those calls are sampled (SPAN), the others tried in full. */
+static const struct config kPolygon = {"polygon", 0.05, 0.035, 100, 50, 0, 0, POLYGON};
+static const struct config kMask = {"mask", 0.05, 0.035, 100, 50, 0, 0, MASK};
+/* The field's rmax is 0.06: a refine to 0.045 scales every radius by 3/4. */
+static const struct config kField = {"field", 0.06, 0.045, 100, 50, 0, 0, POLYGON_FIELD};
 static const struct config *cfg = &kLarge;
 #define RADIUS (cfg->radius)
 #define REFINED (cfg->refined)
@@ -68,7 +80,7 @@ static const struct config *cfg = &kLarge;
  * points, still in the dart stage), the queries that triangulate it, a run
  * to the end, a refine, a bounded and an unbounded run, the queries again. */
 enum call {
-    CREATE, RUN_2000, FREE_AREA_1, VERIFY_1, RUN_END_1, REFINE, RUN_500, RUN_END_2,
+    CREATE, SHAPE, RUN_2000, FREE_AREA_1, VERIFY_1, RUN_END_1, REFINE, RUN_500, RUN_END_2,
     POINTS, VERIFY_2, FREE_AREA_2, DESTROY, N_CALLS
 };
 
@@ -281,6 +293,76 @@ static void do_refine(struct trial *t, pds_sampler *s, double r)
     outcome(t, s, rc, pds_radius(s), "pds_refine");
 }
 
+/* The radius field of "field": 0.04 at the left of the unit square, 0.06 at the right. */
+static double field_fn(void *user, double x, double y)
+{
+    (void)user;
+    (void)y;
+    return 0.04 + 0.02 * (x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x);
+}
+
+/* A star of 40 vertices (radii 0.45 and 0.3 about the centre, alternating)
+ * with a 10-vertex hole of radius 0.1 turning the other way. */
+static void star_with_hole(double *xy, size_t ends[2])
+{
+    const double pi = 3.14159265358979323846;
+    int k;
+    for (k = 0; k < 40; k++) {
+        const double a = 2.0 * pi * k / 40.0, r = (k & 1) ? 0.3 : 0.45;
+        xy[2 * k] = 0.5 + r * cos(a);
+        xy[2 * k + 1] = 0.5 + r * sin(a);
+    }
+    for (k = 0; k < 10; k++) {
+        const double a = -2.0 * pi * k / 10.0;
+        xy[80 + 2 * k] = 0.5 + 0.1 * cos(a);
+        xy[80 + 2 * k + 1] = 0.5 + 0.1 * sin(a);
+    }
+    ends[0] = 40;
+    ends[1] = 50;
+}
+
+/* One setter of the domain; retried once after PDS_ENOMEM, which must leave
+ * the sampler as it was (no point, the radius unchanged). */
+static int set_domain_part(struct trial *t, pds_sampler *s, int part)
+{
+    static const unsigned char rows[8] = {0x00, 0x7e, 0x42, 0x5a, 0x5a, 0x42, 0x7e, 0x81};
+    unsigned char inside[64];
+    double xy[100];
+    size_t ends[2];
+    const char *what = part == 0 ? "pds_set_polygon" : part == 1 ? "pds_set_mask" : "pds_set_radius_fn";
+    const double radius = pds_radius(s);
+    int i, tries, rc = 0;
+    for (i = 0; i < 64; i++) inside[i] = (unsigned char)(rows[i / 8] >> (i % 8) & 1);
+    star_with_hole(xy, ends);
+    for (tries = 0; tries < 2; tries++) {
+        long injected = alloc_failures();
+        alloc_arm();
+        if (part == 0)
+            rc = pds_set_polygon(s, xy, ends, 2);
+        else if (part == 1)
+            rc = pds_set_mask(s, 8, 8, inside);
+        else
+            rc = pds_set_radius_fn(s, field_fn, NULL, 0.04, 0.06);
+        alloc_disarm();
+        if (rc != PDS_ENOMEM) break;
+        check_injected(t, injected, s, what);
+        if (pds_count(s) != 0 || pds_radius(s) != radius)
+            error_at(t, what, "PDS_ENOMEM, yet the count is %zu and the radius went from %g to %g",
+                     pds_count(s), radius, pds_radius(s));
+    }
+    if (rc != 0) error_at(t, what, "returned %d (%s)", rc, pds_errmsg(s));
+    return rc;
+}
+
+static void do_shape(struct trial *t, pds_sampler *s)
+{
+    int rc = 0;
+    if (cfg->shape == POLYGON || cfg->shape == POLYGON_FIELD) rc = set_domain_part(t, s, 0);
+    if (cfg->shape == MASK) rc = set_domain_part(t, s, 1);
+    if (cfg->shape == POLYGON_FIELD && rc == 0) rc = set_domain_part(t, s, 2);
+    outcome(t, s, rc, pds_free_area(s), "pds_set_polygon/mask");
+}
+
 /* Copies the final points: into the record, or compared with the reference. */
 static void do_points(struct trial *t, pds_sampler *s)
 {
@@ -312,6 +394,7 @@ static void do_call(struct trial *t, pds_sampler **s, int c)
 {
     switch ((enum call)c) {
     case CREATE: *s = do_create(t); break;
+    case SHAPE: do_shape(t, *s); break;
     case RUN_2000: do_run(t, *s, cfg->first_run); break;
     case RUN_500: do_run(t, *s, cfg->second_run); break;
     case RUN_END_1:
@@ -430,8 +513,14 @@ int main(int argc, char **argv)
         cfg = &kSmall;
     else if (argc > 1 && strcmp(argv[1], "torus") == 0)
         cfg = &kTorus;
+    else if (argc > 1 && strcmp(argv[1], "polygon") == 0)
+        cfg = &kPolygon;
+    else if (argc > 1 && strcmp(argv[1], "mask") == 0)
+        cfg = &kMask;
+    else if (argc > 1 && strcmp(argv[1], "field") == 0)
+        cfg = &kField;
     else if (argc > 1) {
-        printf("usage: alloc_fail [small|torus]\n");
+        printf("usage: alloc_fail [small|torus|polygon|mask|field]\n");
         return 2;
     }
     all = cfg->every_k || (env != NULL && env[0] != '\0' && strcmp(env, "0") != 0);

@@ -79,6 +79,30 @@ typedef struct {
  * as the input chose) comes back inside a band of the domain, and everywhere
  * while `toggled` (set and cleared by an operation between calls). */
 typedef struct fz_state fz_state;
+
+/* A polygon or mask domain as the harness sees it (1.4). dom in fz_state is
+ * then the domain's bounding box; rect is pds_set_domain's rectangle, which a
+ * mask is spread over and nrings 0 goes back to. */
+enum { FZ_SHAPE_NONE, FZ_SHAPE_POLYGON, FZ_SHAPE_MASK };
+typedef struct {
+    int kind;
+    double *xy;          /* the cleaned rings; a mask: one square ring per inside pixel */
+    size_t *ends, nrings, nv;
+    double *u;           /* xy normalized to the box */
+    unsigned char *pix;  /* a mask's pixels, w x h */
+    size_t mw, mh;
+    double rect[4];      /* the rectangle of pds_set_domain */
+    double box[4];       /* the domain's bounding box */
+    double frac;         /* the even-odd area over the box's */
+    int area_known;      /* no two edges cross: the library's area is the even-odd one */
+    size_t v_lo, v_hi;   /* a mask: bounds on the outline's vertex count */
+    int crossing;        /* two edges cross: pds_run may end "maximal" early (found/NOTES),
+                          * so no point is asked for unless PDS_FUZZ_STRICT is set */
+    int antenna;         /* a ring turns straight back along its last edge: pds_run
+                          * never returns (found/NOTES), so no point is asked for
+                          * unless PDS_FUZZ_STRICT is set */
+} fz_shape;
+
 typedef struct {
     double rmin, rmax;  /* the declared bounds */
     double lo, hi;      /* the values span [lo, hi] */
@@ -138,6 +162,8 @@ struct fz_state {
     /* A bad value refused the first point (field_first_point_rng, fixed in 1.3:
      * a change before the first point then gives a fresh sampler's points). */
     int refused_first, known_rng;
+    /* 1.4: a polygon or mask domain (fuzz_shape.c, fuzz_domains.c) */
+    fz_shape shape;
 };
 enum { FZ_FIELD_NONE, FZ_FIELD_MAP, FZ_FIELD_FN };
 
@@ -268,5 +294,38 @@ void fz_op_radius_map(fz_state *st, fz_reader *r);
 void fz_op_radius_fn(fz_state *st, fz_reader *r);
 void fz_op_radii(fz_state *st, fz_reader *r, unsigned arg);
 void fz_op_field_bad(fz_state *st, fz_reader *r);
+
+/* 1.4 (fuzz_shape.c: the model, nothing asked of the library) */
+void fz_shape_free(fz_shape *sh);
+/* Fill sh from the arguments; what the contract says: 1 accepted, 0 refused
+ * (PDS_EINVAL), -1 either. */
+int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t nrings);
+int fz_shape_mask(fz_shape *sh, size_t w, size_t h, const unsigned char *pix, const double rect[4]);
+/* In the closed domain (within 1e-12 of the box from an edge counts as on it). */
+int fz_shape_inside(const fz_shape *sh, double x, double y);
+void fz_shape_vertices(const fz_shape *sh, size_t *lo, size_t *hi);
+double fz_shape_perimeter(const fz_shape *sh, int e);
+void fz_shape_probes(const fz_shape *sh, void (*fn)(void *ctx, double x, double y), void *ctx);
+/* 1.4 (fuzz_domains.c) */
+void fz_op_polygon(fz_state *st, fz_reader *r);
+void fz_op_mask(fz_state *st, fz_reader *r);
+/* pds_set_domain succeeded with d: the rectangle, and a mask follows it. */
+void fz_domain_set(fz_state *st, const double d[4]);
+/* A box so long and thin (aspect above 1e8 / factor) that the library's polygon
+ * index takes gigabytes (found/NOTES, polygon_index_aspect): not set unless strict. */
+int fz_index_too_tall(const double box[4], double factor);
+/* pds_set_domain(d) on a sampler with a mask may refuse the outline it makes. */
+int fz_domain_may_refuse(const fz_state *st, const double d[4]);
+/* The replay's sampler t gets the same domain; 0 when memory ran out. */
+int fz_shape_apply(const fz_state *st, pds_sampler *t);
+/* The domain's area in user units: NaN when not known (rings that cross). */
+double fz_domain_area(const fz_state *st);
+/* The count bound the library judges by, between lo and hi (Oler's on the
+ * rectangle; a polygon's from its area, perimeter and vertices). */
+void fz_lib_bound(const fz_state *st, double *lo, double *hi);
+/* Probes of the polygon each in some point's disk (fz_check_coverage). */
+void fz_shape_coverage(const fz_state *st);
+/* Every nonzero coordinate of the domain within 2^-890 of the largest. */
+int fz_shape_scalable(const fz_state *st);
 
 #endif /* PDS_FUZZ_H */

@@ -27,6 +27,8 @@
  * as before (make_corpus.py's extended() writes the two bytes). Selectors:
  *   0  replay: the determinism check of fuzz_replay.c now, mid-input, on a
  *      sampler that then goes on (costs the read budget, as verify does)
+ *   1  pds_set_polygon with 0-3 decoded rings (1.4, fuzz_domains.c)
+ *   2  pds_set_mask with a raster of up to 8 x 8 (1.4)
  *
  * Checked after every call (fuzz_check.c): the code is one the header allows
  * for that call in that situation; pds_strerror and pds_errmsg are sane; a
@@ -39,7 +41,10 @@
  * progress callback's reports and cancels: fuzz_progress.c. Radius fields:
  * pds_radii, each radius the field's value, later points outside earlier
  * disks, a maximal pattern's disks covering the domain, bad values from the
- * function stopping runs (fuzz_field.c). Before a sampler
+ * function stopping runs (fuzz_field.c). A polygon or mask (1.4): points in
+ * the closed domain and a maximal pattern covering it, by the harness's own
+ * geometry (fuzz_shape.c), its area as pds_free_area's start, periodic
+ * refused (fuzz_domains.c). Before a sampler
  * is dropped, a second one replays its calls without the splits and the
  * callback and must give the same bytes (fuzz_replay.c); with a constant field,
  * so must a plain sampler at that radius.
@@ -96,12 +101,26 @@ static void ext_replay(fz_state *st, fz_reader *r, size_t *reads)
     if (afford_read(st, reads)) fz_replay_check(st);
 }
 
+static void ext_polygon(fz_state *st, fz_reader *r, size_t *reads)
+{
+    (void)reads;
+    fz_op_polygon(st, r);
+}
+
+static void ext_mask(fz_state *st, fz_reader *r, size_t *reads)
+{
+    (void)reads;
+    fz_op_mask(st, r);
+}
+
 /* Append only: a selector keeps its call for good (see the header comment). */
 static const struct {
     const char *name;
     void (*fn)(fz_state *st, fz_reader *r, size_t *reads);
 } ext_ops[] = {
     {"ext/replay", ext_replay},
+    {"ext/polygon", ext_polygon},
+    {"ext/mask", ext_mask},
 };
 #define FZ_EXT_OPS (sizeof ext_ops / sizeof ext_ops[0])
 
@@ -192,6 +211,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_replay_check(&st);
     pds_destroy(st.s);
     fz_field_reset(&st);
+    fz_shape_free(&st.shape);
     free(st.pts);
     free(st.tmp);
     free(st.rad);

@@ -96,12 +96,14 @@ void fz_sync(fz_state *st)
     for (i = 0; i < 2 * st->seen; i++)
         FZ_CHECK(memcmp(&st->tmp[i], &st->pts[i], sizeof(double)) == 0, "point %zu changed "
                  "from %.17g to %.17g (coordinate %zu)", i / 2, st->pts[i], st->tmp[i], i % 2);
-    for (i = 0; i < n; i++) {
+    for (i = st->seen; i < n; i++) { /* the earlier ones are unchanged */
         const double x = st->tmp[2 * i], y = st->tmp[2 * i + 1];
         FZ_CHECK(isfinite(x) && isfinite(y), "point %zu is (%g, %g)", i, x, y);
         FZ_CHECK(fz_inside(st, x, y), "point %zu (%.17g, %.17g) outside [%.17g,%.17g%sx"
-                 "[%.17g,%.17g%s", i, x, y, st->dom[0], st->dom[2], st->periodic ? ")" : "]",
-                 st->dom[1], st->dom[3], st->periodic ? ") or off the quantum grid" : "]");
+                 "[%.17g,%.17g%s%s", i, x, y, st->dom[0], st->dom[2], st->periodic ? ")" : "]",
+                 st->dom[1], st->dom[3], st->periodic ? ") or off the quantum grid" : "]",
+                 st->shape.kind == FZ_SHAPE_POLYGON ? " or its polygon"
+                 : st->shape.kind == FZ_SHAPE_MASK ? " or its mask" : "");
     }
     fz_sync_radii(st, n, st->tmp);
     t = st->pts;
@@ -180,14 +182,9 @@ void fz_check_pattern(const fz_state *st)
     free(p);
 }
 
-static double domain_area(const fz_state *st)
-{
-    return (st->dom[2] - st->dom[0]) * (st->dom[3] - st->dom[1]);
-}
-
 void fz_check_free_area(fz_state *st)
 {
-    const double a = pds_free_area(st->s), area = domain_area(st);
+    const double a = pds_free_area(st->s), area = fz_domain_area(st); /* NaN: not known */
 
     if (st->s == NULL) {
         FZ_CHECK(isnan(a), "pds_free_area(NULL) is %g, not NaN", a);
@@ -197,7 +194,9 @@ void fz_check_free_area(fz_state *st)
     /* In count mode "complete" means n points, maximal only at an earlier radius. */
     if (st->maximal && st->target == 0)
         FZ_CHECK(a == 0.0, "pds_free_area is %g on a maximal pattern", a);
-    if (isfinite(area) && area > 1e-290) {
+    /* (A domain whose coordinates cannot be scaled, a nonzero one below 2^-890 of the
+     * largest, gets no point (PDS_ERANGE): its free area is not judged.) */
+    if (isfinite(area) && area > 1e-290 && fz_precision_ok(st, INFINITY)) {
         if (st->count == 0)
             FZ_CHECK(fabs(a - area) <= 1e-9 * area, "pds_free_area is %.17g before the first "
                      "point, the domain's area is %.17g", a, area);
@@ -260,6 +259,10 @@ void fz_check_coverage(const fz_state *st)
     uint64_t rng = 0x9e3779b97f4a7c15u ^ (uint64_t)st->seen;
     size_t k, i;
 
+    if (st->shape.kind != FZ_SHAPE_NONE) { /* the polygon's own probes */
+        fz_shape_coverage(st);
+        return;
+    }
     if (st->periodic) { /* the torus's periods; the far sides are the near ones */
         w = st->per[0];
         h = st->per[1];
@@ -311,6 +314,9 @@ void fz_reset(fz_state *st, pds_sampler *s, double radius)
     st->n_ev = 0;
     st->run_failed = 0;
     fz_field_reset(st);
+    fz_shape_free(&st->shape);
+    st->shape.rect[0] = st->shape.rect[1] = 0.0;
+    st->shape.rect[2] = st->shape.rect[3] = 1.0;
     msg = s ? pds_errmsg(s) : "";
     FZ_CHECK(s == NULL || strcmp(msg, "no error") == 0, "a new sampler's pds_errmsg is \"%s\"",
              msg);
@@ -338,5 +344,6 @@ int fz_precision_ok(const fz_state *st, double radius)
      * library scales the domain (found by this harness): refused since 1.1.1. */
     for (i = 0; i < 4; i++)
         if (st->dom[i] != 0.0 && fabs(st->dom[i]) < 0x1p-890 * m) return 0;
+    if (!fz_shape_scalable(st)) return 0; /* a polygon's vertex too */
     return m >= 0x1p-890 && radius >= 0x1p-24 * m;
 }

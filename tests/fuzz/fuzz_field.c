@@ -45,6 +45,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -504,6 +505,10 @@ void fz_op_radius_fn(fz_state *st, fz_reader *r)
     f->bad = bad_value(f, b / 4);
     f->change = fz_u8(r) % 12; /* 10, 11: none */
     f->st = st;
+    if (getenv("PDS_FUZZ_TRACE") != NULL)
+        fprintf(stderr, "fuzz:   radius function [%.17g, %.17g], values [%.17g, %.17g], shape %u "
+                "param %u, band %d [%g, %g) bad %g\n", rmin, rmax, f->lo, f->hi, f->shape % 8,
+                f->param, f->band, f->band0, f->band1, f->bad);
     rc = pds_set_radius_fn(null_s ? NULL : st->s, null_fn ? NULL : fz_field_cb, f, rmin, rmax);
     if (null_s) {
         fz_state none;

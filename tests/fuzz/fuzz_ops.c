@@ -44,13 +44,19 @@ enum { WORK_NONE, WORK_BOUNDED, WORK_TO_END };
 static int work_allowed(const fz_state *st)
 {
     const double n = fz_count_bound(st);
+    double lo, hi;
     if (st->s == NULL || st->budget == 0) return WORK_NONE;
+    /* found/NOTES: polygon_antenna_hang, polygon_crossing_maximal_early */
+    if ((st->shape.antenna || st->shape.crossing) && !fz_strict()) return WORK_NONE;
+    fz_lib_bound(st, &lo, &hi);
     /* Count mode ends at n points; the dart stage's grid still follows the bound. */
     if (st->target != 0 && (double)st->target <= FZ_TO_END_MAX &&
         st->target - st->count <= st->budget)
         return WORK_TO_END;
     if (st->target == 0 && n <= FZ_TO_END_MAX && n <= (double)st->budget) return WORK_TO_END;
-    if (n <= FZ_GRID_MAX || n >= FZ_NO_GRID || (fz_varying_field(st) && !fz_field_has_darts(st)))
+    /* (A polygon's dart grid covers its box: n; the library's own bound, lo,
+     * decides whether there is one.) */
+    if (n <= FZ_GRID_MAX || lo >= FZ_NO_GRID || (fz_varying_field(st) && !fz_field_has_darts(st)))
         return WORK_BOUNDED;
     return WORK_NONE;
 }
@@ -78,6 +84,8 @@ static double lowest_radius(const fz_state *st)
     /* sqrt(w) sqrt(h), not sqrt(w h): the area of a domain 1e-204 wide
      * underflows, the library's (in its scaled frame) does not. */
     area = sqrt(st->dom[2] - st->dom[0]) * sqrt(st->dom[3] - st->dom[1]);
+    if (st->shape.kind != FZ_SHAPE_NONE) /* NaN (lenient) when the library's area is not known */
+        area = st->shape.area_known && fz_shape_scalable(st) ? area * sqrt(st->shape.frac) : NAN;
     low = 0.98 * area / sqrt(3.14159265358979323846 * (double)st->target);
     return low < st->radius ? low : st->radius;
 }
@@ -163,7 +171,7 @@ static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
     const size_t bad_before = st->fns[st->fn_active].bad_calls;
     const int rc = fz_run(st, max_new, want_added ? &added : NULL);
     const unsigned cancel = st->prog.on ? FZ_BIT(PDS_ECANCELED) : 0u;
-    double want;
+    double want, want_lo, lo, hi;
 
     if (st->s == NULL) {
         fz_codes(st, "pds_run", rc, FZ_BIT(PDS_EINVAL));
@@ -196,18 +204,24 @@ static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
     /* 1.1.1: PDS_ERANGE only for precision or when the points asked for (capped
      * by the bound; in count mode by n) cannot fit ~3.5e8 indices; and then it
      * must come. */
-    want = st->target != 0 ? (double)st->target : fz_count_bound(st);
+    /* A polygon: the library's bound lies between lo and hi (fz_lib_bound). */
+    fz_lib_bound(st, &lo, &hi);
+    want = st->target != 0 ? (double)st->target : hi;
+    want_lo = st->target != 0 ? (double)st->target : lo;
     if (max_new != 0 && (double)before + (double)max_new < want)
         want = (double)before + (double)max_new;
+    if (max_new != 0 && (double)before + (double)max_new < want_lo)
+        want_lo = (double)before + (double)max_new;
     check_range(st, "pds_run", rc, want, before);
     /* (A field may make the pattern maximal far below its bound: PDS_DONE, checked
      * by fz_check_maximal.) */
     /* (A varying field judges the bound at rmin at the first point only.) */
-    if (FZ_SPEC_111 && want >= 1e9 && !st->maximal && !fz_varying_field(st))
+    if (FZ_SPEC_111 && want_lo >= 1e9 && !st->maximal && !fz_varying_field(st))
         FZ_CHECK(rc == PDS_ERANGE, "pds_run(max_new %zu) returned %d for %.3g points", max_new, rc, want);
     if (before + added > 0 && (rc == PDS_ENOMEM || rc == PDS_ERANGE)) st->run_failed = 1;
     reread_radius(st, "pds_run");
     account(st, added);
+    FZ_CHECK(rc != 0 || st->count > 0, "pds_run(max_new %zu): maximal without a point", max_new);
     if (rc == 0) st->maximal = 1;
     if (sync_now || rc == 0) fz_sync(st);
     if (rc == 0) fz_check_maximal(st);
@@ -272,6 +286,11 @@ void fz_op_domain(fz_state *st, fz_reader *r)
     unsigned allowed;
 
     fz_domain(r, st->s ? st->radius : 1.0, d);
+    /* A mask's outline over a rectangle of extreme aspect: the library's index
+     * would take gigabytes (found/NOTES). */
+    if (st->s != NULL && st->count == 0 && st->shape.kind == FZ_SHAPE_MASK && d[0] < d[2] &&
+        d[1] < d[3] && fz_index_too_tall(d, 8.0))
+        return;
     rc = pds_set_domain(st->s, d[0], d[1], d[2], d[3]);
     valid = isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]) && isfinite(d[3]) &&
             d[0] < d[2] && d[1] < d[3];
@@ -281,18 +300,17 @@ void fz_op_domain(fz_state *st, fz_reader *r)
         allowed = FZ_BIT(PDS_EINVAL) | (st->count > 0 ? FZ_BIT(PDS_ESTATE) : 0u);
     else if (st->count > 0)
         allowed = FZ_BIT(PDS_ESTATE);
-    else
-        allowed = FZ_OK | FZ_BIT(PDS_ENOMEM) | fz_range_unless_111();
+    else /* a mask spread over it may degenerate (found/NOTES) */
+        allowed = FZ_OK | FZ_BIT(PDS_ENOMEM) | fz_range_unless_111() |
+                  (fz_domain_may_refuse(st, d) ? FZ_BIT(PDS_EINVAL) : 0u);
     fz_codes(st, "pds_set_domain", rc, allowed);
-    if (rc == 0) {
-        memcpy(st->dom, d, sizeof d);
-        /* The radius function sees the domain in force (fuzz_field.c). */
-        memcpy(st->fns[0].dom, d, sizeof d);
-        memcpy(st->fns[1].dom, d, sizeof d);
-        fz_changed_before_first(st);
-        fz_set_torus(st);
-        fz_count_radius(st); /* count mode: the start radius follows the domain */
-    }
+    /* The domain (or a mask's rectangle) in force; the radius function sees
+     * it (fuzz_field.c); count mode's start radius follows it (fuzz_domains.c). */
+    if (rc == 0) fz_domain_set(st, d);
+    /* An open bug (found/NOTES, mask_domain_refused): the refusal keeps the new
+     * rectangle, which a later mask is spread over. */
+    if (rc == PDS_EINVAL && valid && st->count == 0 && st->shape.kind == FZ_SHAPE_MASK && !fz_strict())
+        memcpy(st->shape.rect, d, sizeof d);
     fz_sync(st);
 }
 
@@ -355,8 +373,10 @@ void fz_op_step(fz_state *st, unsigned arg)
  * (A varying field: bounded runs, which are judged alike at every point.) */
 static int unbounded_fails(const fz_state *st)
 {
+    double lo, hi;
     if (st->target == 0 && fz_varying_field(st)) return 0;
-    return st->target != 0 ? (double)st->target >= 1e9 : fz_count_bound(st) >= FZ_NO_GRID;
+    fz_lib_bound(st, &lo, &hi);
+    return st->target != 0 ? (double)st->target >= 1e9 : lo >= FZ_NO_GRID;
 }
 
 void fz_op_run(fz_state *st, fz_reader *r, unsigned arg)

@@ -54,6 +54,10 @@ static void replay(fz_state *st, int with_field)
     FZ_CHECK(rc == 0, "replay: pds_set_domain returned %d", rc);
     rc = pds_set_periodic(t, st->periodic);
     FZ_CHECK(rc == 0, "replay: pds_set_periodic returned %d", rc);
+    if (!fz_shape_apply(st, t)) { /* a polygon or mask (1.4); memory ran out */
+        pds_destroy(t);
+        return;
+    }
     if (with_field && st->field == FZ_FIELD_MAP) {
         rc = pds_set_radius_map(t, st->map_w, st->map_h, st->map);
         if (rc == PDS_ENOMEM) ok = 0;

@@ -63,7 +63,9 @@ void fz_set_torus(fz_state *st)
 int fz_inside(const fz_state *st, double x, double y)
 {
     const double *d = st->dom;
-    if (!st->periodic) return d[0] <= x && x <= d[2] && d[1] <= y && y <= d[3];
+    if (!st->periodic)
+        return d[0] <= x && x <= d[2] && d[1] <= y && y <= d[3] &&
+               (st->shape.kind == FZ_SHAPE_NONE || fz_shape_inside(&st->shape, x, y));
     if (!(d[0] <= x && x < d[2] && d[1] <= y && y < d[3])) return 0;
     if (st->q >= DBL_MIN) { /* x / q is exact: a power of two, below 2^52 */
         const double u = x / st->q, v = y / st->q;
@@ -98,6 +100,12 @@ void fz_count_radius(fz_state *st)
     const double *d = st->dom;
 
     if (st->s == NULL || st->target == 0) return;
+    /* A polygon: its area and perimeter, when the harness knows the library's. */
+    const int shaped = st->shape.kind != FZ_SHAPE_NONE;
+    if (shaped && !(st->shape.area_known && fz_shape_scalable(st))) {
+        st->radius = got;
+        return;
+    }
     if (st->count == 0 && scalable(d)) {
         const int e = ilogb(max_abs4(d));
         /* The area is the torus's: its periods rounded down to the quantum;
@@ -106,7 +114,9 @@ void fz_count_radius(fz_state *st)
         const double w = torus ? ldexp(st->per[0], -e) : ldexp(d[2], -e) - ldexp(d[0], -e);
         const double h = torus ? ldexp(st->per[1], -e) : ldexp(d[3], -e) - ldexp(d[1], -e);
         const double n = (double)st->target;
-        const double a = 0.547 * 4.0 * w * h / PI, b = st->periodic ? 0.0 : 0.23 * 2.0 * (w + h);
+        const double area = shaped ? st->shape.frac * w * h : w * h;
+        const double perimeter = shaped ? fz_shape_perimeter(&st->shape, e) : 2.0 * (w + h);
+        const double a = 0.547 * 4.0 * area / PI, b = st->periodic ? 0.0 : 0.23 * perimeter;
         double want = ldexp((b + sqrt(b * b + 4.0 * a * n)) / (2.0 * n) * (1.015 + 10.0 / n), e);
         if (st->periodic && want > half_shorter(d)) want = half_shorter(d);
         /* (want is 0 only on a torus so thin that its area underflows: PDS_ERANGE) */

@@ -17,6 +17,8 @@ RESUME = 2  # RUN_TO_END parameter bit: run again after PDS_ECANCELED
 # The escape (operation 15, parameter 7), then a selector: fuzz_api.c's ext_ops[]
 # (append only, so no seed changes meaning); a selector past its end does nothing.
 EXT_REPLAY = 0  # the determinism check now, on a sampler that goes on
+EXT_POLYGON = 1  # pds_set_polygon (fuzz_domains.c's decoding)
+EXT_MASK = 2  # pds_set_mask
 
 
 def op(code, param=0):
@@ -136,6 +138,49 @@ def field_bad(kind=0):  # the radius function returns bad value `kind` everywher
 
 def field_good():
     return op(CHECK, 15) + [0]
+
+
+def sb(c):  # a coordinate c (a multiple of 1/8 in [-16, 16)) as fuzz_domains.c's sbyte reads it
+    return int(round(c * 8)) & 0xff
+
+
+STAR, SCATTER, SIDES, HOLE = range(4)  # ring modes: a star, small integers, a rectangle's sides, a star
+REVERSE, CLOSING, REPEAT, COLLINEAR, TWICE = 1, 2, 4, 8, 16  # ring flags
+
+
+def ring(nv, mode, flags=0, verts=(), centre=(0, 0), corner=(0, 0), size=(0, 0), hostile_at=None):
+    """One ring: nv vertices; verts are star radii (multiples of 1/8, 1/8 .. 4) or (x, y)
+    pairs for SCATTER; SIDES uses corner and size (1 + byte/4 each side)."""
+    rb = next(b for b in range(256) if b % 10 == nv - 3 and b // 16 % 4 == mode)
+    out = [rb, flags | (0xe0 if hostile_at else 0)]
+    if mode == STAR:
+        out += [sb(centre[0]), sb(centre[1])]
+    out += [sb(corner[0]), sb(corner[1]), size[0], size[1]]
+    if mode in (STAR, HOLE):
+        out += [int(v * 8) - 1 for v in verts]
+    elif mode == SCATTER:
+        out += [sb(c) for xy in verts for c in xy]
+    if hostile_at:
+        out += [hostile_at[0]] + hostile(hostile_at[1])
+    return out
+
+
+def polygon(rings, unit=0, offset=(0, 0), centre=(0, 0), bad=0):
+    """pds_set_polygon: kUnit[unit], kShapeOffset[offset]; bad 13 decreasing ends, 14
+    ring_ends NULL, 15 xy NULL."""
+    n = len(rings)
+    b = next(b for b in range(256) if b // 16 == bad and (b % 8 == 0) == (n == 0)
+             and (n == 0 or b % 3 == n - 1))
+    out = extended(EXT_POLYGON) + [b, unit, offset[0], offset[1], sb(centre[0]), sb(centre[1])]
+    return out + sum(rings, [])
+
+
+def mask(w, h, rows=(), fill=2, special=None):
+    """pds_set_mask: rows are bit masks (fill 2: read them; 0 all out, 1 all in);
+    special 0 w = 0, 1 h = 0, 2 NULL, 3 overflowing size."""
+    b = (w - 1) | (h - 1) << 3 | (192 if special is not None else 0)
+    f = fill | ((special or 0) << 2)
+    return extended(EXT_MASK) + [b, f] + (list(rows) if fill % 4 >= 2 else [])
 
 
 MAX_NEW_0, MAX_NEW_64, MAX_NEW_1000, MAX_NEW_SIZE_MAX = [0], [4], [5], [6]
@@ -369,13 +414,104 @@ SEEDS = {
     + op(REFINE) + refine_by(7) + op(RUN_CHUNKS, 3) + extended(EXT_REPLAY) + extended(255)
     + op(CREATE) + radius_factor(0, 8) + [61] + periodic() + radius_fn(radius_factor(0, 9), R_2, F_GRAD)
     + op(RUN) + MAX_NEW_64 + extended(EXT_REPLAY) + op(RUN_TO_END) + extended(EXT_REPLAY),
+    # ---- polygon and mask domains (1.4) ----
+    # A 12-pointed star with a 7-vertex hole around its centre, to the end (R 0.1).
+    "polygon_star_hole": radius_factor(0, 7) + [70]
+    + polygon([ring(12, STAR, verts=[2, 1.5] * 6), ring(7, HOLE, REVERSE, verts=[0.5] * 7)])
+    + op(FREE_AREA) + op(RUN_TO_END) + op(VERIFY) + op(FREE_AREA) + op(CHECK),
+    # Rings of small integers that cross (even-odd), in steps and chunks.
+    "polygon_crossing": radius_factor(0, 7) + [71]
+    + polygon([ring(6, SCATTER, verts=[(-2, -2), (2, 2), (2, -2), (-2, 2), (0, 3), (1, -3)]),
+               ring(4, SCATTER, verts=[(-1, 0), (0, -1), (1, 0), (0, 1)])])
+    + op(STEP, 3) + op(RUN_CHUNKS, 3) + op(RUN_TO_END) + op(CHECK),
+    # Refused: a ring traced twice, a NaN, two distinct vertices, NULL arrays,
+    # decreasing ends, periodic either way round; nrings 0 goes back to the rectangle.
+    "polygon_refused": radius_factor(0, 7) + [72]
+    + polygon([ring(5, STAR, TWICE, verts=[2] * 5)])
+    + polygon([ring(5, STAR, 0, verts=[2] * 5, hostile_at=(2, 0))])
+    + polygon([ring(3, SCATTER, verts=[(0, 0), (1, 1), (0, 0)])])
+    + polygon([ring(4, SIDES, size=(4, 4))], bad=15) + polygon([ring(4, SIDES, size=(4, 4))], bad=14)
+    + polygon([ring(4, SIDES, size=(4, 4)), ring(4, SIDES, size=(4, 4))], bad=13)
+    + periodic() + polygon([ring(4, SIDES, size=(4, 4))]) + periodic(1)
+    + polygon([ring(8, SIDES, COLLINEAR | CLOSING, size=(4, 4))]) + periodic() + polygon([])
+    + periodic() + op(RUN_TO_END) + op(CHECK),
+    # A rectangle's sides with collinear runs and a repeated closing vertex at 1e15,
+    # a hole touching it at a corner; count mode, then a refine (refused) and a step.
+    "polygon_offset_count": radius_factor(0, 7) + [73]
+    + polygon([ring(8, SIDES, COLLINEAR | CLOSING | REPEAT, size=(12, 12)),
+               ring(4, SIDES, REVERSE, size=(4, 4))], offset=(3, 3)) + count(7)
+    + op(RUN_TO_END) + op(VERIFY) + op(REFINE) + refine_by(7) + op(STEP) + op(CHECK),
+    # A polygon with a radius function (gradient), a domain set after it (no change),
+    # a replay mid-input, then the rectangle again.
+    "polygon_field": radius_factor(0, 7) + [74]
+    + polygon([ring(10, STAR, verts=[3, 2] * 5)], unit=0)
+    + op(DOMAIN) + domain_absolute(0, 0, 0, 0)
+    + radius_fn(radius_factor(0, 9), R_2, F_GRAD) + op(RUN) + MAX_NEW_64 + extended(EXT_REPLAY)
+    + op(RUN_TO_END) + op(VERIFY) + op(CHECK) + radii(0, SIZE_0, SIZE_N)
+    + op(CREATE) + radius_factor(0, 7) + [75] + polygon([ring(6, STAR, verts=[2] * 6)]) + polygon([])
+    + op(RUN_TO_END),
+    # A mask: an 8 x 8 ring of pixels with diagonal neighbours, to the end; then all
+    # out (refused), w = 0, NULL, an overflowing size; a domain after it moves it.
+    "mask_ring": radius_factor(0, 8) + [76]
+    + mask(8, 8, [0x00, 0x7e, 0x42, 0x5a, 0x5a, 0x42, 0x7e, 0x81]) + mask(3, 3, fill=0)
+    + mask(2, 2, fill=1, special=2) + mask(2, 2, fill=1, special=3)
+    + op(DOMAIN) + domain_absolute(0, 0, 0, 0) + op(FREE_AREA)
+    + op(RUN_TO_END) + op(VERIFY) + op(FREE_AREA) + op(CHECK),
+    # A 1 x 1 mask (the rectangle itself), a mask then periodic, w = 0; count mode in a mask.
+    "mask_count": radius_factor(0, 7) + [77] + mask(1, 1, fill=1) + periodic()
+    + mask(3, 2, [5, 2]) + mask(2, 2, special=0) + mask(5, 4, [0x1f, 0x11, 0x11, 0x1f])
+    + count(6) + op(RUN_TO_END) + op(VERIFY) + op(CHECK),
+    # A mask with a radius map over its box.
+    "mask_field": radius_factor(0, 8) + [78] + mask(4, 4, [0x9, 0x6, 0x6, 0x9])
+    + radius_map(1, [3, 3], M_GRAD_X, radius_factor(0, 9), R_2) + op(RUN_TO_END) + op(CHECK),
 }
 
 # Reproducers of open library bugs (found/NOTES), written into found/: the harness
 # tolerates them unless PDS_FUZZ_STRICT is set, so replay them with
 #   PDS_FUZZ_STRICT=1 $(B)/fuzz/fuzz_api tests/fuzz/found/NAME
 # Once fixed, each moves into SEEDS as regress_NAME.
-FOUND = {}
+FOUND = {
+    # A ring that turns straight back along its last edge (a spike of zero width,
+    # [2.25, 3] x {0}): pds_run never returns (R 0.1, any seed; the Jones loop keeps
+    # drawing in OutlineClip::cut_cell). Replay with -timeout=10.
+    "polygon_antenna_hang": radius_factor(0, 7) + [79]
+    + polygon([ring(5, SCATTER, verts=[(0, 0), (3, 0), (2.25, 0), (2.25, 1.75), (0, 1.75)])])
+    + op(RUN_TO_END),
+    # A ring that crosses itself (a bowtie of two triangles, area 2 by the even-odd
+    # rule, shoelace area 0): PDS_EINVAL "the outline encloses nothing".
+    "polygon_bowtie_refused": radius_factor(0, 7) + [80]
+    + polygon([ring(4, SCATTER, verts=[(0, 0), (2, 2), (2, 0), (0, 2)])]) + op(RUN_TO_END),
+    # A 4 x 4 square (sides with collinear runs) at 1e15: PDS_EINVAL "encloses
+    # nothing"; the side probes, 2^-20 of an edge away, round onto the edge.
+    "polygon_below_resolution": radius_factor(0, 7) + [81]
+    + polygon([ring(8, SIDES, size=(12, 12))], offset=(3, 3)) + op(RUN_TO_END),
+    # Rings that cross: pds_run(s, 0) returns PDS_DONE with no point (seed 71; after
+    # steps, pds_verify says PDS_EINTERNAL: part of the domain near the outline uncovered).
+    "polygon_crossing_maximal_early": radius_factor(0, 7) + [71]
+    + polygon([ring(6, SCATTER, verts=[(-2, -2), (2, 2), (2, -2), (-2, 3), (0, 1), (2, -3)]),
+               ring(4, SCATTER, verts=[(-1, 0), (0, -1), (1, 0), (0, -0.125)])])
+    + op(RUN_TO_END) + op(STEP, 3) + op(RUN_CHUNKS, 3),
+    # A 5-vertex ring (traced twice) with a vertex at y = 2^53, the others within 2 of
+    # the origin: pds_set_polygon asks for 9 GB (standalone: over 24 GB, killed) in
+    # PolygonIndex, whose rows, sqrt(cells h / w), have no cap for a tall box.
+    # Replay only through the fuzz binary (its -malloc_limit_mb reports it).
+    "polygon_index_aspect": radius_factor(0, 7) + [83]
+    + polygon([ring(5, STAR, TWICE, verts=[2] * 5, hostile_at=(1, 31))]),
+    # The same hang with a spike of width ~1e-16 (a ring's first vertex within rounding of
+    # the edge from its second to its third), as the fuzzer found it (raw bytes).
+    "polygon_thin_spike_hang": list(bytes.fromhex("010007467f010100000000000000000000001200090000000b00000f000f0b0f0b0f0f0b0f0b0f0b"
+        "36010000000003030303030303070b06070f")),
+    # Two rings at 1e-271 (a star and a rectangle's sides): PDS_EINVAL "ring 0: its vertices
+    # lie on one line" (raw bytes as the fuzzer found them).
+    "polygon_tiny_collinear": list(bytes.fromhex("010007477f010180000000007261646975732066756e6374696f6e0810e815000000000008010000"
+        "000600f80000f80800000834340b0f")),
+    # An 8 x 8 mask, then pds_set_domain(1e15, 0, 1e15 + 0.25, 0.3): PDS_EINVAL ("ring 0:
+    # 2 distinct vertices": the pixel lines round together), and the refused rectangle
+    # stays: a 1 x 1 mask set next lies at 1e15, where pds_run gives PDS_ERANGE.
+    "mask_domain_refused": radius_factor(0, 7) + [82]
+    + mask(8, 8, [0x49, 0x92, 0x24, 0x49, 0x92, 0x24, 0x49, 0x92])
+    + op(DOMAIN) + domain_relative(1, 0, 7, 0) + mask(1, 1, fill=1) + op(RUN) + [1],
+}
 
 
 def main():

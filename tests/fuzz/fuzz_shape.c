@@ -1,0 +1,425 @@
+/*
+ * fuzz_shape.c - the harness's own model of a polygon or mask domain (1.4,
+ * see fuzz.h): what the contract says of given rings, whether a point lies in
+ * the closed domain, its area, and the probes of a maximal pattern's coverage.
+ * Nothing here asks the library.
+ *
+ * Coordinates are normalized to the domain's bounding box, u = (x - x0) /
+ * (x1 - x0) (halves first, so nothing overflows): the rings' vertices are
+ * exact doubles and so are the library's points, so their differences keep
+ * ~1e-16 of the box, and a point within 1e-12 of the box from an edge is
+ * taken as on it (the library decides exactly; this test only rounds).
+ *   - inside: closed, by the even-odd rule (a ray's crossings), or on an edge;
+ *   - area: exact for straight edges: between consecutive vertex (and
+ *     crossing) abscissae the edges do not cross, so the inside of a slab is
+ *     trapezoids, measured at the slab's middle;
+ *   - a mask is one square ring per inside pixel (shared sides cancel in
+ *     pairs), its grid lines x0 + (x1 - x0) * (i / w).
+ */
+#include "fuzz.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define TOL 1e-12
+
+static double norm(double c, double lo, double hi)
+{
+    return (c * 0.5 - lo * 0.5) / (hi * 0.5 - lo * 0.5);
+}
+
+void fz_shape_free(fz_shape *sh)
+{
+    free(sh->xy);
+    free(sh->ends);
+    free(sh->pix);
+    free(sh->u);
+    sh->xy = sh->u = NULL;
+    sh->ends = NULL;
+    sh->pix = NULL;
+    sh->nrings = sh->nv = sh->mw = sh->mh = 0;
+    sh->kind = FZ_SHAPE_NONE;
+}
+
+/* Ring k's cleaned vertices in sh->u (normalized): consecutive repeats and a
+ * repeated closing vertex dropped, as the header allows them. */
+static size_t ring_start(const fz_shape *sh, size_t k) { return k ? sh->ends[k - 1] : 0; }
+
+typedef struct {
+    double ax, ay, bx, by; /* a is the endpoint with the smaller x (then y) */
+} edge;
+
+/* Every edge of nonzero length, in normalized coordinates. */
+static size_t edges_of(const fz_shape *sh, edge *out)
+{
+    size_t k, i, m = 0;
+    for (k = 0; k < sh->nrings; k++) {
+        const size_t s = ring_start(sh, k), e = sh->ends[k];
+        for (i = s; i < e; i++) {
+            const size_t j = i + 1 < e ? i + 1 : s;
+            double ax = sh->u[2 * i], ay = sh->u[2 * i + 1], bx = sh->u[2 * j], by = sh->u[2 * j + 1];
+            if (ax == bx && ay == by) continue;
+            if (bx < ax || (bx == ax && by < ay)) {
+                double t = ax;
+                ax = bx;
+                bx = t;
+                t = ay;
+                ay = by;
+                by = t;
+            }
+            out[m].ax = ax;
+            out[m].ay = ay;
+            out[m].bx = bx;
+            out[m].by = by;
+            m++;
+        }
+    }
+    return m;
+}
+
+static int by_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double orient(double ax, double ay, double bx, double by, double cx, double cy)
+{
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+/* The even-odd area over the box's area, and whether two edges cross
+ * properly (then the library's area is only an estimate). */
+static double slab_area(const fz_shape *sh, int *crossing)
+{
+    const size_t nv = sh->nv;
+    edge *ed = malloc((nv + 1) * sizeof *ed);
+    double *xs, *ys, total = 0.0;
+    size_t m, nx = 0, i, j;
+
+    FZ_CHECK(ed != NULL, "harness out of memory");
+    m = edges_of(sh, ed);
+    xs = malloc((2 * m + m * m + 1) * sizeof *xs);
+    ys = malloc((m + 1) * sizeof *ys);
+    FZ_CHECK(xs != NULL && ys != NULL, "harness out of memory");
+    *crossing = 0;
+    for (i = 0; i < m; i++) {
+        xs[nx++] = ed[i].ax;
+        xs[nx++] = ed[i].bx;
+    }
+    if (sh->kind == FZ_SHAPE_POLYGON) /* a mask's squares never cross */
+        for (i = 0; i < m; i++)
+            for (j = i + 1; j < m; j++) {
+                const edge *p = &ed[i], *q = &ed[j];
+                const double o1 = orient(p->ax, p->ay, p->bx, p->by, q->ax, q->ay);
+                const double o2 = orient(p->ax, p->ay, p->bx, p->by, q->bx, q->by);
+                const double o3 = orient(q->ax, q->ay, q->bx, q->by, p->ax, p->ay);
+                const double o4 = orient(q->ax, q->ay, q->bx, q->by, p->bx, p->by);
+                if (((o1 > 1e-14 && o2 < -1e-14) || (o1 < -1e-14 && o2 > 1e-14)) &&
+                    ((o3 > 1e-14 && o4 < -1e-14) || (o3 < -1e-14 && o4 > 1e-14))) {
+                    *crossing = 1;
+                    xs[nx++] = q->ax + (q->bx - q->ax) * (o1 / (o1 - o2));
+                }
+            }
+    qsort(xs, nx, sizeof *xs, by_double);
+    for (i = 0; i + 1 < nx; i++) {
+        const double x0 = xs[i], x1 = xs[i + 1], xm = 0.5 * (x0 + x1);
+        size_t ny = 0, k;
+        double len = 0.0;
+        if (!(x1 > x0)) continue;
+        for (j = 0; j < m; j++) {
+            const edge *e = &ed[j];
+            if (e->ax <= x0 && e->bx >= x1) /* canonical endpoints: equal edges, equal values */
+                ys[ny++] = e->ay + (e->by - e->ay) * ((xm - e->ax) / (e->bx - e->ax));
+        }
+        qsort(ys, ny, sizeof *ys, by_double);
+        for (k = 0; k + 1 < ny; k += 2) len += ys[k + 1] - ys[k];
+        total += len * (x1 - x0);
+    }
+    free(ed);
+    free(xs);
+    free(ys);
+    return total;
+}
+
+/* The box, the normalized copy and the measures, from xy and ends. */
+static void measure(fz_shape *sh)
+{
+    size_t i;
+    int crossing;
+    sh->box[0] = sh->box[2] = sh->xy[0];
+    sh->box[1] = sh->box[3] = sh->xy[1];
+    for (i = 0; i < sh->nv; i++) {
+        const double x = sh->xy[2 * i], y = sh->xy[2 * i + 1];
+        if (x < sh->box[0]) sh->box[0] = x;
+        if (x > sh->box[2]) sh->box[2] = x;
+        if (y < sh->box[1]) sh->box[1] = y;
+        if (y > sh->box[3]) sh->box[3] = y;
+    }
+    free(sh->u);
+    sh->u = malloc((2 * sh->nv + 2) * sizeof *sh->u);
+    FZ_CHECK(sh->u != NULL, "harness out of memory");
+    for (i = 0; i < sh->nv; i++) {
+        sh->u[2 * i] = norm(sh->xy[2 * i], sh->box[0], sh->box[2]);
+        sh->u[2 * i + 1] = norm(sh->xy[2 * i + 1], sh->box[1], sh->box[3]);
+    }
+    sh->frac = slab_area(sh, &crossing);
+    sh->crossing = crossing;
+    sh->area_known = !crossing && sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3];
+}
+
+/* Copies of the rings (cleaned as the header allows: consecutive repeats and a
+ * closing repeat dropped). Returns what the contract says: 1 accepted, 0
+ * refused (PDS_EINVAL), -1 either (near the edge of the rules, or rings that
+ * cross while PDS_FUZZ_STRICT is not set: found/NOTES). */
+int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t nrings)
+{
+    size_t k, v, start = 0, total = 0, out = 0;
+    int verdict = 1;
+
+    memset(sh, 0, sizeof *sh);
+    sh->kind = FZ_SHAPE_POLYGON;
+    for (k = 0; k < nrings; start = ends[k++])
+        if (ends[k] < start) return 0;
+    total = ends[nrings - 1];
+    for (v = 0; v < 2 * total; v++)
+        if (!isfinite(xy[v])) return 0;
+    sh->xy = malloc((2 * total + 2) * sizeof *sh->xy);
+    sh->ends = malloc(nrings * sizeof *sh->ends);
+    FZ_CHECK(sh->xy != NULL && sh->ends != NULL, "harness out of memory");
+    start = 0;
+    for (k = 0; k < nrings; start = ends[k++]) {
+        const size_t first = out;
+        size_t distinct = 0, i, j;
+        for (v = start; v < ends[k]; v++) {
+            if (out > first && xy[2 * v] == sh->xy[2 * out - 2] && xy[2 * v + 1] == sh->xy[2 * out - 1])
+                continue;
+            sh->xy[2 * out] = xy[2 * v];
+            sh->xy[2 * out + 1] = xy[2 * v + 1];
+            out++;
+        }
+        while (out > first + 1 && sh->xy[2 * out - 2] == sh->xy[2 * first] &&
+               sh->xy[2 * out - 1] == sh->xy[2 * first + 1])
+            out--;
+        for (i = first; i < out; i++) { /* distinct anywhere in the ring */
+            for (j = first; j < i; j++)
+                if (sh->xy[2 * i] == sh->xy[2 * j] && sh->xy[2 * i + 1] == sh->xy[2 * j + 1]) break;
+            distinct += j == i;
+        }
+        if (distinct < 3) return 0;
+        sh->ends[k] = out;
+    }
+    sh->nrings = nrings;
+    sh->nv = out;
+    measure(sh);
+    /* All on one line: refused, but a float test cannot tell near-collinear. */
+    for (k = 0; k < nrings; k++) {
+        const size_t s = ring_start(sh, k), e = sh->ends[k];
+        const double *u = sh->u;
+        double most = 0.0;
+        for (v = s + 2; v < e; v++) {
+            const double o = fabs(orient(u[2 * s], u[2 * s + 1], u[2 * s + 2], u[2 * s + 3], u[2 * v],
+                                         u[2 * v + 1]));
+            if (o > most) most = o;
+        }
+        if (!(most > 1e-9)) verdict = -1;
+    }
+    /* A ring whose edges are all below 2^-32 of the largest |coordinate| (edges of
+     * a few ulps, far below the precision limit 2^-26 of it): the library finds
+     * no side of it (its probes, 2^-20 of an edge away, round onto the edge) and
+     * leaves it out of the area, refusing the outline when no ring is left
+     * (found/NOTES, polygon_below_resolution). */
+    for (k = 0; k < nrings; k++) {
+        const size_t s = ring_start(sh, k), e = sh->ends[k];
+        double m = 0.0, longest = 0.0;
+        for (v = 0; v < 2 * sh->nv; v++)
+            if (fabs(sh->xy[v]) > m) m = fabs(sh->xy[v]);
+        for (v = s; v < e; v++) {
+            const size_t n2 = v + 1 < e ? v + 1 : s;
+            const double l = hypot(sh->xy[2 * n2] * 0.5 - sh->xy[2 * v] * 0.5,
+                                   sh->xy[2 * n2 + 1] * 0.5 - sh->xy[2 * v + 1] * 0.5);
+            if (l > longest) longest = l;
+        }
+        if (longest < 0x1p-30 * m) {
+            sh->area_known = 0;
+            if (!fz_strict()) verdict = -1;
+        }
+    }
+    for (k = 0; k < nrings; k++) { /* a zero-width spike: b - a and c - b opposite */
+        const size_t s = ring_start(sh, k), e = sh->ends[k];
+        const double *u = sh->u;
+        for (v = s; v < e; v++) {
+            const size_t b = v + 1 < e ? v + 1 : s, c = b + 1 < e ? b + 1 : s;
+            const double abx = u[2 * b] - u[2 * v], aby = u[2 * b + 1] - u[2 * v + 1];
+            const double bcx = u[2 * c] - u[2 * b], bcy = u[2 * c + 1] - u[2 * b + 1];
+            /* (or nearly: a spike 1e-16 wide hangs pds_run too, found/NOTES) */
+            if (fabs(abx * bcy - aby * bcx) <= 1e-9 * hypot(abx, aby) * hypot(bcx, bcy) &&
+                abx * bcx + aby * bcy < 0.0)
+                sh->antenna = 1;
+        }
+    }
+    { /* Every |coordinate| below 2^-500: the library's predicates underflow and call
+       * a star "on one line" (found/NOTES, polygon_tiny_collinear). */
+        double m = 0.0;
+        for (v = 0; v < 2 * sh->nv; v++)
+            if (fabs(sh->xy[v]) > m) m = fabs(sh->xy[v]);
+        if (m < 0x1p-500 && !fz_strict() && verdict == 1) verdict = -1;
+    }
+    if (!(sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3])) return verdict == 1 ? 0 : -1;
+    if (sh->frac == 0.0 && verdict == 1) return 0; /* encloses nothing: a ring traced twice */
+    if (!(sh->frac > 1e-6)) return -1;
+    if (!sh->area_known && !fz_strict()) return -1;
+    return verdict;
+}
+
+/* grid line i of n over [lo, hi] */
+static double grid(double lo, double hi, size_t i, size_t n)
+{
+    if (i == 0) return lo;
+    if (i == n) return hi;
+    return lo + (hi - lo) * ((double)i / (double)n);
+}
+
+int fz_shape_mask(fz_shape *sh, size_t w, size_t h, const unsigned char *pix, const double rect[4])
+{
+    size_t i, j, n = 0, out = 0;
+    int verdict = 1;
+
+    memset(sh, 0, sizeof *sh);
+    sh->kind = FZ_SHAPE_MASK;
+    memcpy(sh->rect, rect, sizeof sh->rect);
+    for (i = 0; i < w * h; i++) n += pix[i] != 0;
+    if (n == 0) return 0;
+    sh->pix = malloc(w * h);
+    sh->xy = malloc(8 * n * sizeof *sh->xy);
+    sh->ends = malloc(n * sizeof *sh->ends);
+    FZ_CHECK(sh->pix != NULL && sh->xy != NULL && sh->ends != NULL, "harness out of memory");
+    memcpy(sh->pix, pix, w * h);
+    sh->mw = w;
+    sh->mh = h;
+    for (j = 0; j < h; j++)
+        for (i = 0; i < w; i++) {
+            const double x0 = grid(rect[0], rect[2], i, w), x1 = grid(rect[0], rect[2], i + 1, w);
+            const double y0 = grid(rect[1], rect[3], j, h), y1 = grid(rect[1], rect[3], j + 1, h);
+            double *p = sh->xy + 2 * out;
+            if (!pix[j * w + i]) continue;
+            /* Lines that round together or overflow: the outline degenerates (found/NOTES). */
+            if (!(x0 < x1 && y0 < y1) || !isfinite(x1 - x0) || !isfinite(y1 - y0)) verdict = -1;
+            p[0] = x0, p[1] = y0, p[2] = x1, p[3] = y0, p[4] = x1, p[5] = y1, p[6] = x0, p[7] = y1;
+            out += 4;
+            sh->ends[sh->nrings++] = out;
+        }
+    sh->nv = out;
+    measure(sh);
+    sh->area_known = 1; /* the library's outline touches only at corners */
+    sh->v_lo = 4;
+    sh->v_hi = 4 * n;
+    return verdict;
+}
+
+/* The distance from (px, py) to the segment, squared (normalized units). */
+static double seg_dist2(double px, double py, double ax, double ay, double bx, double by)
+{
+    const double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
+    double t = l2 > 0.0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0.0, ex, ey;
+    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+    ex = px - (ax + t * dx);
+    ey = py - (ay + t * dy);
+    return ex * ex + ey * ey;
+}
+
+/* 1 inside or within tol of an edge, 0 outside; *margin: the distance to the nearest edge. */
+static int locate(const fz_shape *sh, double x, double y, double tol, double *margin)
+{
+    const double px = norm(x, sh->box[0], sh->box[2]), py = norm(y, sh->box[1], sh->box[3]);
+    const double *u = sh->u;
+    double best = INFINITY;
+    int odd = 0;
+    size_t k, i;
+
+    if (!(px >= -tol && px <= 1.0 + tol && py >= -tol && py <= 1.0 + tol)) return 0;
+    for (k = 0; k < sh->nrings; k++) {
+        const size_t s = ring_start(sh, k), e = sh->ends[k];
+        for (i = s; i < e; i++) {
+            const size_t j = i + 1 < e ? i + 1 : s;
+            const double ax = u[2 * i], ay = u[2 * i + 1], bx = u[2 * j], by = u[2 * j + 1];
+            const double d2 = seg_dist2(px, py, ax, ay, bx, by);
+            if (d2 < best) best = d2;
+            if ((ay > py) != (by > py) && px < ax + (py - ay) / (by - ay) * (bx - ax)) odd = !odd;
+        }
+    }
+    if (margin) *margin = sqrt(best);
+    return odd || best <= tol * tol;
+}
+
+int fz_shape_inside(const fz_shape *sh, double x, double y)
+{
+    return locate(sh, x, y, TOL, NULL);
+}
+
+/* The library's vertex count (polygon: the cleaned rings). */
+void fz_shape_vertices(const fz_shape *sh, size_t *lo, size_t *hi)
+{
+    *lo = sh->kind == FZ_SHAPE_MASK ? sh->v_lo : sh->nv;
+    *hi = sh->kind == FZ_SHAPE_MASK ? sh->v_hi : sh->nv;
+}
+
+/* The outline's length (a mask: the sides between inside and outside pixels),
+ * with every coordinate scaled by 2^-e. */
+double fz_shape_perimeter(const fz_shape *sh, int e)
+{
+    double sum = 0.0;
+    size_t k, i, j;
+    if (sh->kind == FZ_SHAPE_MASK) {
+        const size_t w = sh->mw, h = sh->mh;
+        const double *r = sh->rect;
+        for (j = 0; j < h; j++)
+            for (i = 0; i < w; i++) {
+                const double pw = ldexp(grid(r[0], r[2], i + 1, w), -e) - ldexp(grid(r[0], r[2], i, w), -e);
+                const double ph = ldexp(grid(r[1], r[3], j + 1, h), -e) - ldexp(grid(r[1], r[3], j, h), -e);
+                if (!sh->pix[j * w + i]) continue;
+                sum += (j == 0 || !sh->pix[(j - 1) * w + i]) ? pw : 0.0;
+                sum += (j + 1 == h || !sh->pix[(j + 1) * w + i]) ? pw : 0.0;
+                sum += (i == 0 || !sh->pix[j * w + i - 1]) ? ph : 0.0;
+                sum += (i + 1 == w || !sh->pix[j * w + i + 1]) ? ph : 0.0;
+            }
+        return sum;
+    }
+    for (k = 0; k < sh->nrings; k++) {
+        const size_t s = ring_start(sh, k), end = sh->ends[k];
+        for (i = s; i < end; i++) {
+            const size_t n = i + 1 < end ? i + 1 : s;
+            sum += hypot(ldexp(sh->xy[2 * n], -e) - ldexp(sh->xy[2 * i], -e),
+                         ldexp(sh->xy[2 * n + 1], -e) - ldexp(sh->xy[2 * i + 1], -e));
+        }
+    }
+    return sum;
+}
+
+/* Probes of the closed domain: every vertex, points along every edge, and a
+ * grid of points well inside. fn returns 0 to stop. */
+void fz_shape_probes(const fz_shape *sh, void (*fn)(void *ctx, double x, double y), void *ctx)
+{
+    size_t k, i, a, b;
+    for (k = 0; k < sh->nrings; k++) {
+        const size_t s = ring_start(sh, k), e = sh->ends[k];
+        for (i = s; i < e; i++) {
+            const size_t j = i + 1 < e ? i + 1 : s;
+            const double ax = sh->xy[2 * i], ay = sh->xy[2 * i + 1];
+            const double bx = sh->xy[2 * j], by = sh->xy[2 * j + 1];
+            fn(ctx, ax, ay);
+            for (a = 1; a < 4; a++) {
+                const double t = (double)a / 4.0;
+                fn(ctx, ax * (1.0 - t) + bx * t, ay * (1.0 - t) + by * t);
+            }
+        }
+    }
+    for (a = 0; a < 8; a++)
+        for (b = 0; b < 8; b++) {
+            const double x = grid(sh->box[0], sh->box[2], 2 * a + 1, 16);
+            const double y = grid(sh->box[1], sh->box[3], 2 * b + 1, 16);
+            double margin;
+            if (locate(sh, x, y, 0.0, &margin) && margin > 1e-9) fn(ctx, x, y);
+        }
+}
