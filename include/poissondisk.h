@@ -448,8 +448,11 @@ PDS_API int pds_set_polygon(pds_sampler *s, const double *xy, const size_t *ring
  * A mask replaces an earlier polygon or mask; w == 0 or h == 0 (inside may
  * be NULL) goes back to the rectangle.
  * Returns 0, PDS_EINVAL (s NULL, inside NULL with w*h > 0, w*h overflowing,
- * no pixel inside, periodic set), PDS_ENOMEM, PDS_ESTATE (points exist
- * already). (1.4)
+ * no pixel inside, pixel lines that round together in the rectangle,
+ * periodic set), PDS_ENOMEM, PDS_ESTATE (points exist already). While a mask
+ * is set, pds_set_domain re-spreads it and may refuse a rectangle the same
+ * way (PDS_EINVAL, nothing changed). A radius map is spread over the
+ * bounding box of the inside pixels. (1.4)
  */
 PDS_API int pds_set_mask(pds_sampler *s, size_t w, size_t h, const unsigned char *inside) PDS_NOEXCEPT;
 

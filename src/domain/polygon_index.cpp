@@ -52,8 +52,10 @@ PolygonIndex::PolygonIndex(const PolygonRings& rings) : rings_(rings), box_(ring
     const double w = box_.width(), h = box_.height();
     const double cells = std::min(kMaxCells, std::max(kMinCells, kCellsPerEdge * static_cast<double>(rings.vertices())));
     const double smallest = kMinCellShare * box_.largest_magnitude();
-    double rows = std::max(1.0, std::round(std::sqrt(cells * h / w)));
-    double cols = std::max(1.0, std::round(cells / rows));
+    // Square cells where the box allows; a box far taller than wide (or
+    // wider than tall) gets one column (row) and at most `cells` rows (columns).
+    double rows = std::min(cells, std::max(1.0, std::round(std::sqrt(cells * (h / w)))));
+    double cols = std::min(cells, std::max(1.0, std::round(cells / rows)));
     rows = std::max(1.0, std::min(rows, std::floor(h / smallest)));
     cols = std::max(1.0, std::min(cols, std::floor(w / smallest)));
     rows_ = static_cast<std::size_t>(rows);

@@ -28,6 +28,57 @@ bool encloses(const std::vector<Point>& p, std::size_t begin, std::size_t end) {
 
 }  // namespace
 
+namespace {
+
+// Whether the ring turns straight back at b: a, b, c on one line and c
+// behind b. Such a vertex is the tip of a spike of zero width, which holds
+// no area and no point a sampler could draw.
+bool turns_back(const Point& a, const Point& b, const Point& c) {
+    return orient2d(a, b, c) == 0 && (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) < 0.0;
+}
+
+// Drops the tips of zero-width spikes from the ring pts[first..] (and the
+// repeated vertex a spike that comes straight back leaves), until none is
+// left, around the ring's closing vertex too.
+void drop_spikes(std::vector<Point>& pts, std::size_t first) {
+    std::vector<Point> kept;
+    kept.reserve(pts.size() - first);
+    for (std::size_t i = first; i < pts.size(); ++i) {
+        kept.push_back(pts[i]);
+        for (;;) {
+            const std::size_t n = kept.size();
+            if (n >= 2 && kept[n - 1].x == kept[n - 2].x && kept[n - 1].y == kept[n - 2].y) {
+                kept.pop_back();
+                continue;
+            }
+            if (n >= 3 && turns_back(kept[n - 3], kept[n - 2], kept[n - 1])) {
+                kept.erase(kept.end() - 2);
+                continue;
+            }
+            break;
+        }
+    }
+    // Around the closing vertex: the last and the first.
+    for (bool changed = true; changed && kept.size() >= 3;) {
+        changed = false;
+        const std::size_t n = kept.size();
+        if (kept[n - 1].x == kept[0].x && kept[n - 1].y == kept[0].y) {
+            kept.pop_back();
+            changed = true;
+        } else if (turns_back(kept[n - 2], kept[n - 1], kept[0])) {
+            kept.pop_back();
+            changed = true;
+        } else if (turns_back(kept[n - 1], kept[0], kept[1])) {
+            kept.erase(kept.begin());
+            changed = true;
+        }
+    }
+    pts.resize(first);
+    pts.insert(pts.end(), kept.begin(), kept.end());
+}
+
+}  // namespace
+
 PolygonRings::PolygonRings(const double* xy, const std::size_t* ring_ends, std::size_t rings) {
     if (rings == 0) throw DomainError("the outline has no rings");
     if (!xy || !ring_ends) throw DomainError("the outline's coordinates or ring ends are NULL");
@@ -53,6 +104,7 @@ PolygonRings::PolygonRings(const double* xy, const std::size_t* ring_ends, std::
             points_.push_back(q);
         }
         while (points_.size() > first + 1 && same(points_.back(), points_[first])) points_.pop_back();
+        drop_spikes(points_, first);
         const std::size_t distinct = points_.size() - first;
         if (distinct < 3)
             throw DomainError("ring " + std::to_string(k) + ": " + std::to_string(distinct) +

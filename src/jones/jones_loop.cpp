@@ -180,6 +180,7 @@ void JonesLoop<Space, Rule>::draw_batch(std::size_t n, Rng& rng) {
     // batch: the queue was empty, so afterwards the stage is as it was.
     const Rng rng_before = rng;
     const int failures_before = draw_failures_;
+    const std::size_t rejections_before = rejections_;
     const JonesStats stats_before = stats_;
     undo_count_ = 0;
     try {
@@ -191,6 +192,7 @@ void JonesLoop<Space, Rule>::draw_batch(std::size_t n, Rng& rng) {
         }
         rng = rng_before;
         draw_failures_ = failures_before;
+        rejections_ = rejections_before;
         stats_ = stats_before;
         queue_.clear();
         throw;
@@ -267,7 +269,15 @@ void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
             queue_.push_back(Candidate{chosen, v});
             continue;
         }
-        if (drawn == SampleOutcome::rejected) continue;
+        if (drawn == SampleOutcome::rejected) {
+            // A refused draw ends a selection without counting against its
+            // cell. So many in a row, with no point placed, means a free
+            // region rounding cannot reach (a sliver along the outline): a
+            // failure, as below.
+            if (++rejections_ % kRejectionsPerFailure == 0 && ++draw_failures_ % kFailuresPerGiveUp == 0)
+                give_up(site);
+            continue;
+        }
         // A healthy piece practically never fails 64 draws; a cell that keeps
         // failing has a free region below double resolution, or none.
         if (++draw_failures_ % kFailuresPerGiveUp == 0) give_up(site);

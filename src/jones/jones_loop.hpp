@@ -101,6 +101,10 @@ private:
 
     static constexpr int kMaxDraws = 64;  // per piece; a healthy piece accepts > 1/2 of draws
     static constexpr int kFailuresPerGiveUp = 8;
+    // Refused draws in a row (no point placed) that count as one failure:
+    // far beyond what any healthy cell refuses (each keeps a draw with a
+    // probability near 1/2 or more).
+    static constexpr std::size_t kRejectionsPerFailure = 4096;
     // A candidate is checked exactly only against the newer points within
     // this many radii in x and y (any half-side >= R holds the disk).
     static constexpr double kBoxReach = 1.5;
@@ -142,6 +146,7 @@ private:
         rule_.push_value(value);
         since_batch_.push_back(v);
         draw_failures_ = 0;
+        rejections_ = 0;
     }
 
     Rule rule_;
@@ -155,6 +160,7 @@ private:
     std::vector<VertexIndex> since_batch_;    // vertices added since it was drawn
     std::size_t batch_size_ = 1;
     int draw_failures_ = 0;                   // failed chunk samplings since the last point
+    std::size_t rejections_ = 0;              // refused draws since the last point
     Candidate first_{};                       // the first point, drawn over the whole domain
     bool has_first_ = false;
     WeightUndo undo_[2 * kMaxBatch];          // at most two weight changes per candidate

@@ -14,7 +14,14 @@ namespace {
 
 std::shared_ptr<const Polygon> mask_polygon(std::size_t w, std::size_t h, const std::uint8_t* inside, const Box& box) {
     const Outline o = mask_outline(w, h, inside, box);
-    return std::make_shared<const Polygon>(o.xy.data(), o.ring_ends.data(), o.ring_ends.size());
+    try {
+        return std::make_shared<const Polygon>(o.xy.data(), o.ring_ends.data(), o.ring_ends.size());
+    } catch (const DomainError& e) {
+        // The pixel lines rounded together: the rectangle is too small for
+        // the raster at its coordinates.
+        throw DomainError(std::string("the mask's pixels do not fit the rectangle at double precision (") +
+                          e.what() + ")");
+    }
 }
 
 }  // namespace
@@ -111,10 +118,16 @@ void Sampler::forget_stages() {
 
 void Sampler::set_domain(const Box& domain) {
     if (count() != 0) throw std::logic_error("set_domain after the first point");
-    rectangle_ = domain;
     if (!mask_.empty()) {
-        use_shape(mask_polygon(mask_w_, mask_h_, mask_.data(), rectangle_));
-    } else if (!shape_) {
+        // The mask spread over the new rectangle, built first: a refusal
+        // (pixel lines that round together) changes nothing.
+        auto outline = mask_polygon(mask_w_, mask_h_, mask_.data(), domain);
+        rectangle_ = domain;
+        use_shape(std::move(outline));
+        return;
+    }
+    rectangle_ = domain;
+    if (!shape_) {
         forget_stages();
         frame_.set_domain(domain);
         mean_inverse_square_ = RadiusField::MeanInverseSquare{};
