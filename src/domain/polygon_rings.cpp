@@ -104,13 +104,15 @@ PolygonRings::PolygonRings(const double* xy, const std::size_t* ring_ends, std::
             points_.push_back(q);
         }
         while (points_.size() > first + 1 && same(points_.back(), points_[first])) points_.pop_back();
-        drop_spikes(points_, first);
         const std::size_t distinct = points_.size() - first;
         if (distinct < 3)
             throw DomainError("ring " + std::to_string(k) + ": " + std::to_string(distinct) +
                               " distinct vertices (" + std::to_string(end - start) + " given); a ring needs 3");
         if (!encloses(points_, first, points_.size()))
             throw DomainError("ring " + std::to_string(k) + ": its vertices lie on one line, it encloses nothing");
+        drop_spikes(points_, first);
+        if (points_.size() - first < 3 || !encloses(points_, first, points_.size()))
+            throw DomainError("ring " + std::to_string(k) + ": it folds back onto itself and encloses nothing");
         for (std::size_t i = first; i + 1 < points_.size(); ++i) next_.push_back(static_cast<std::uint32_t>(i + 1));
         next_.push_back(static_cast<std::uint32_t>(first));
         start = end;
