@@ -70,9 +70,10 @@ public:
     // the fundamental domain; with keep_to, over the cells kept), aimed,
     // their blocks prefetched.
     void throw_darts(Dart* batch, std::size_t n, Rng& rng) const;
-    // Darts from now on only in the cells that may meet the polygon (all
-    // but those its grid calls outside): uniform over their union, which
-    // holds the polygon. Throws std::bad_alloc and changes nothing.
+    // Darts from now on only where the polygon's grid does not say outside:
+    // uniform over that union of its cells, which holds the polygon (a dart
+    // drawn in an outside cell is drawn again, at the cost of one lookup in
+    // a small array). The polygon must outlive the grid.
     void keep_to(const Polygon& polygon);
     // Whether d is at least R from every point; points[k] is point k.
     bool is_free(const Dart& d, const std::vector<Point>& points, const std::vector<double>&) const;
@@ -81,8 +82,8 @@ public:
     // Frees the cells: the stage is over.
     void release() { cells_.release(); }
 
-    // The sampling rule's scale: the grid's cells.
-    std::size_t cell_count() const { return cols_ * rows_; }
+    // The sampling rule's scale: the grid's cells (those kept, with keep_to).
+    std::size_t cell_count() const { return keep_ ? kept_cells_ : cols_ * rows_; }
     // The hand-over's curve over the grid's cells.
     CurveOrder curve(const Box& domain) const { return CurveOrder(domain, side_x_, side_y_, cols_, rows_); }
     double radius() const { return r_; }
@@ -125,7 +126,8 @@ private:
     Torus torus_;
     std::size_t cols_ = 0, rows_ = 0;  // real cells; the padded row has cols_ + 2 kPad
     std::size_t stride_ = 0;
-    std::vector<std::uint32_t> kept_;  // keep_to's cells (row * cols_ + col), or empty: all
+    const PolygonIndex* keep_ = nullptr;  // keep_to's polygon grid, or none
+    std::size_t kept_cells_ = 0;          // grid cells that meet its cells not outside
     Cells cells_;
     mutable std::size_t exact_checks_ = 0;
 };
@@ -207,13 +209,11 @@ void DartGrid<Cells>::throw_darts(Dart* batch, std::size_t n, Rng& rng) const {
     const double w = static_cast<double>(cols_) * side_x_, h = static_cast<double>(rows_) * side_y_;
     for (std::size_t k = 0; k < n; ++k) {
         Dart& d = batch[k];
-        if (!kept_.empty()) {
-            // A kept cell, then a point uniform in it: three draws.
-            const double pick = std::floor(rng.next_double() * static_cast<double>(kept_.size()));
-            const std::uint32_t cell = kept_[std::min(kept_.size() - 1, static_cast<std::size_t>(pick))];
-            const auto col = static_cast<std::int64_t>(cell % cols_), row = static_cast<std::int64_t>(cell / cols_);
-            d.p.x = cell_x0(col) + rng.next_double() * side_x_;
-            d.p.y = cell_y0(row) + rng.next_double() * side_y_;
+        if (keep_) {
+            do {
+                d.p.x = box_.x0 + rng.next_double() * w;
+                d.p.y = box_.y0 + rng.next_double() * h;
+            } while (keep_->cell_place(keep_->column_of(d.p.x), keep_->row_of(d.p.y)) == PolygonIndex::kOutside);
         } else if (torus_.on()) {
             // On the torus grid, inside the fundamental domain (torus.hpp).
             const double u = rng.next_double(), v = rng.next_double();
@@ -234,9 +234,9 @@ void DartGrid<Cells>::throw_darts(Dart* batch, std::size_t n, Rng& rng) const {
 
 template <class Cells>
 void DartGrid<Cells>::keep_to(const Polygon& polygon) {
-    if (torus_.on() || cols_ * rows_ > UINT32_MAX) return;  // no polygon on the torus; a grid too large to list
+    if (torus_.on()) return;  // no polygon on the torus
     const PolygonIndex& index = polygon.index();
-    std::vector<std::uint32_t> kept;
+    std::size_t kept = 0;
     for (std::size_t row = 0; row < rows_; ++row) {
         const auto y = static_cast<std::int64_t>(row);
         const std::size_t r0 = index.row_of(cell_y0(y)), r1 = index.row_of(cell_y0(y + 1));
@@ -247,10 +247,11 @@ void DartGrid<Cells>::keep_to(const Polygon& polygon) {
             for (std::size_t r = r0; r <= r1 && outside; ++r)
                 for (std::size_t c = c0; c <= c1 && outside; ++c)
                     outside = index.cell_place(c, r) == PolygonIndex::kOutside;
-            if (!outside) kept.push_back(static_cast<std::uint32_t>(row * cols_ + col));
+            if (!outside) ++kept;
         }
     }
-    kept_ = std::move(kept);
+    keep_ = &index;
+    kept_cells_ = kept;
 }
 
 template <class Cells>

@@ -65,7 +65,7 @@ public:
           polygon_(std::move(polygon)),
           grid_(domain.bounds(), std::forward<Args>(args)...),
           curve_(grid_.curve(domain.bounds())) {
-        if (polygon_) grid_.keep_to(*polygon_);
+        if (polygon_) grid_.keep_to(*polygon_);  // before the rule: it scales with the cells kept
         // A window long enough that its acceptance rate is a fair estimate,
         // short enough that the stage ends soon after the rate falls.
         queue_.set_rule(std::max<std::size_t>(darts::kMinWindow, grid_.cell_count() / 16), darts::kMinAcceptance);
