@@ -6,25 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "domain/mask_outline.hpp"
-
 namespace pds {
-
-namespace {
-
-std::shared_ptr<const Polygon> mask_polygon(std::size_t w, std::size_t h, const std::uint8_t* inside, const Box& box) {
-    const Outline o = mask_outline(w, h, inside, box);
-    try {
-        return std::make_shared<const Polygon>(o.xy.data(), o.ring_ends.data(), o.ring_ends.size());
-    } catch (const DomainError& e) {
-        // The pixel lines rounded together: the rectangle is too small for
-        // the raster at its coordinates.
-        throw DomainError(std::string("the mask's pixels do not fit the rectangle at double precision (") +
-                          e.what() + ")");
-    }
-}
-
-}  // namespace
 
 Sampler::Sampler(double radius, std::uint64_t seed)
     : frame_(Box{0.0, 0.0, 1.0, 1.0}, radius), seed_(seed), rng_(seed) {}
@@ -76,36 +58,6 @@ std::size_t Sampler::field_count_bound() const {
     return map < cap ? std::min(oler, static_cast<std::size_t>(map)) : oler;
 }
 
-void Sampler::set_fixed(std::vector<Point> points, std::vector<double> clearances) {
-    if (count() != 0) throw std::logic_error("set_fixed after the first point");
-    forget_stages();
-    fixed_ = std::move(points);
-    fixed_clearance_ = std::move(clearances);
-}
-
-void Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
-    const PointRadii radii = *point_radii(frame_);
-    std::vector<Point> points;
-    std::vector<double> values;
-    points.reserve(fixed_.size());
-    values.reserve(fixed_.size());
-    const double rmax = field_ ? field_->rmax() : fixed_radius_;
-    for (std::size_t k = 0; k < fixed_.size(); ++k) {
-        const Point p = frame_.to_internal(fixed_[k]);
-        if (!frame_.box().contains(p))
-            throw DomainError("fixed point " + std::to_string(k) + " lies outside the domain's bounding box");
-        // A value the field's scaling turns into the clearance, now and after a refine.
-        const double c = fixed_clearance_[k];
-        values.push_back(c > 0.0 ? c / frame_.user_radius() * rmax : radii.value_at(p));
-        points.push_back(p);
-    }
-    std::vector<std::uint32_t> order(fixed_.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
-    jones.reserve(room + fixed_.size());
-    jones.adopt(points, order.data(), &values, Poll{});
-    jones.set_fixed(fixed_.size());
-}
-
 void Sampler::forget_stages() {
     // Without points the stages hold nothing but the old frame, and a first
     // point drawn but refused by a radius field: the generator goes back to
@@ -116,55 +68,6 @@ void Sampler::forget_stages() {
     rng_ = Rng(seed_);
 }
 
-void Sampler::set_domain(const Box& domain) {
-    if (count() != 0) throw std::logic_error("set_domain after the first point");
-    if (!mask_.empty()) {
-        // The mask spread over the new rectangle, built first: a refusal
-        // (pixel lines that round together) changes nothing.
-        auto outline = mask_polygon(mask_w_, mask_h_, mask_.data(), domain);
-        rectangle_ = domain;
-        use_shape(std::move(outline));
-        return;
-    }
-    rectangle_ = domain;
-    if (!shape_) {
-        forget_stages();
-        frame_.set_domain(domain);
-        mean_inverse_square_ = RadiusField::MeanInverseSquare{};
-        if (count_target_ != 0) set_count(count_target_);
-    }
-}
-
-void Sampler::set_polygon(std::shared_ptr<const Polygon> polygon) {
-    if (count() != 0) throw std::logic_error("set_polygon after the first point");
-    mask_.clear();
-    mask_w_ = mask_h_ = 0;
-    use_shape(std::move(polygon));
-}
-
-void Sampler::set_mask(std::size_t w, std::size_t h, const std::uint8_t* inside) {
-    if (count() != 0) throw std::logic_error("set_mask after the first point");
-    if (w == 0 || h == 0) {
-        set_polygon(nullptr);
-        return;
-    }
-    // Built first: a refusal or std::bad_alloc changes nothing.
-    auto outline = mask_polygon(w, h, inside, rectangle_);
-    std::vector<std::uint8_t> copy(inside, inside + w * h);
-    use_shape(std::move(outline));
-    mask_ = std::move(copy);
-    mask_w_ = w;
-    mask_h_ = h;
-}
-
-void Sampler::use_shape(std::shared_ptr<const Polygon> shape) {
-    forget_stages();
-    shape_ = std::move(shape);
-    frame_.set_polygon(shape_);
-    if (!shape_) frame_.set_domain(rectangle_);
-    mean_inverse_square_ = RadiusField::MeanInverseSquare{};
-    if (count_target_ != 0) set_count(count_target_);
-}
 
 void Sampler::set_periodic(bool periodic) {
     if (count() != 0) throw std::logic_error("set_periodic after the first point");
