@@ -42,13 +42,7 @@ bool OutlineClip::cut_cell(const Point& site, const Box& box, double r) {
     const double widen = err + margin + 4.0 * kUnitRoundoff * (std::fabs(site.x) + std::fabs(site.y) + scale);
     const Box near{site.x + x0 - widen, site.y + y0 - widen, site.x + x1 + widen, site.y + y1 + widen};
     const PolygonIndex& index = polygon_.index();
-    const std::size_t c0 = index.column_of(near.x0), c1 = index.column_of(near.x1);
-    const std::size_t r0 = index.row_of(near.y0), r1 = index.row_of(near.y1);
-    bool inside = true;
-    for (std::size_t row = r0; row <= r1 && inside; ++row)
-        for (std::size_t col = c0; col <= c1 && inside; ++col)
-            inside = index.cell_place(col, row) == PolygonIndex::kInside;
-    if (inside) return false;
+    if (index.all_cells(near, PolygonIndex::kInside)) return false;
     cut_ = true;
     segments_.clear();
     index.edges_near(near, edges_);

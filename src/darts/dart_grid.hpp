@@ -239,15 +239,10 @@ void DartGrid<Cells>::keep_to(const Polygon& polygon) {
     std::size_t kept = 0;
     for (std::size_t row = 0; row < rows_; ++row) {
         const auto y = static_cast<std::int64_t>(row);
-        const std::size_t r0 = index.row_of(cell_y0(y)), r1 = index.row_of(cell_y0(y + 1));
         for (std::size_t col = 0; col < cols_; ++col) {
             const auto x = static_cast<std::int64_t>(col);
-            const std::size_t c0 = index.column_of(cell_x0(x)), c1 = index.column_of(cell_x0(x + 1));
-            bool outside = true;
-            for (std::size_t r = r0; r <= r1 && outside; ++r)
-                for (std::size_t c = c0; c <= c1 && outside; ++c)
-                    outside = index.cell_place(c, r) == PolygonIndex::kOutside;
-            if (!outside) ++kept;
+            const Box cell{cell_x0(x), cell_y0(y), cell_x0(x + 1), cell_y0(y + 1)};
+            if (!index.all_cells(cell, PolygonIndex::kOutside)) ++kept;
         }
     }
     keep_ = &index;

@@ -136,6 +136,14 @@ void PolygonIndex::for_each_edge_cell(std::size_t edge, const Visit& visit) cons
     }
 }
 
+bool PolygonIndex::all_cells(const Box& b, Place place) const {
+    const std::size_t c0 = column_of(b.x0), c1 = column_of(b.x1);
+    for (std::size_t r = row_of(b.y0), r1 = row_of(b.y1); r <= r1; ++r)
+        for (std::size_t c = c0; c <= c1; ++c)
+            if (cell_place(c, r) != place) return false;
+    return true;
+}
+
 void PolygonIndex::edges_near(const Box& b, std::vector<std::uint32_t>& out) const {
     const std::size_t from = out.size();
     const std::size_t c0 = column_of(b.x0), c1 = column_of(b.x1), r0 = row_of(b.y0), r1 = row_of(b.y1);

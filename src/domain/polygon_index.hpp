@@ -48,6 +48,8 @@ public:
     std::size_t rows() const { return rows_; }
     std::size_t column_of(double x) const;
     std::size_t row_of(double y) const;
+    // Whether every grid cell box b overlaps is clean with place `place`.
+    bool all_cells(const Box& b, Place place) const;
     // kInside or kOutside for a clean cell, kOnOutline for one an edge may meet.
     Place cell_place(std::size_t col, std::size_t row) const {
         return static_cast<Place>(cell_[row * cols_ + col]);

@@ -53,11 +53,7 @@ VertexIndex uncovered_outline_cell(const Delaunay& dt, const Polygon& polygon, d
                              8.0 * kUnitRoundoff * (std::fabs(c.x) + std::fabs(c.y) + std::fabs(sink.x0) +
                                                     std::fabs(sink.x1) + std::fabs(sink.y0) + std::fabs(sink.y1));
         const Box near{c.x + sink.x0 - widen, c.y + sink.y0 - widen, c.x + sink.x1 + widen, c.y + sink.y1 + widen};
-        bool inside = true;
-        for (std::size_t row = index.row_of(near.y0); row <= index.row_of(near.y1) && inside; ++row)
-            for (std::size_t col = index.column_of(near.x0); col <= index.column_of(near.x1) && inside; ++col)
-                inside = index.cell_place(col, row) == PolygonIndex::kInside;
-        if (inside) continue;  // the Voronoi vertices decide it
+        if (index.all_cells(near, PolygonIndex::kInside)) continue;  // the Voronoi vertices decide it
         edges.clear();
         index.edges_near(near, edges);
         if (!outline_cell_is_covered_exact(c, rc, ring, radii, box, polygon, edges)) return v;
