@@ -300,17 +300,14 @@ void fz_op_domain(fz_state *st, fz_reader *r)
         allowed = FZ_BIT(PDS_EINVAL) | (st->count > 0 ? FZ_BIT(PDS_ESTATE) : 0u);
     else if (st->count > 0)
         allowed = FZ_BIT(PDS_ESTATE);
-    else /* a mask spread over it may degenerate (found/NOTES) */
+    else /* a mask spread over it may degenerate: the header allows EINVAL then */
         allowed = FZ_OK | FZ_BIT(PDS_ENOMEM) | fz_range_unless_111() |
-                  (fz_domain_may_refuse(st, d) ? FZ_BIT(PDS_EINVAL) : 0u);
+                  (fz_domain_may_refuse(st, d) || st->shape.kind == FZ_SHAPE_MASK ? FZ_BIT(PDS_EINVAL) : 0u);
     fz_codes(st, "pds_set_domain", rc, allowed);
     /* The domain (or a mask's rectangle) in force; the radius function sees
      * it (fuzz_field.c); count mode's start radius follows it (fuzz_domains.c). */
     if (rc == 0) fz_domain_set(st, d);
-    /* An open bug (found/NOTES, mask_domain_refused): the refusal keeps the new
-     * rectangle, which a later mask is spread over. */
-    if (rc == PDS_EINVAL && valid && st->count == 0 && st->shape.kind == FZ_SHAPE_MASK && !fz_strict())
-        memcpy(st->shape.rect, d, sizeof d);
+    /* A refusal changes nothing: the mask keeps its rectangle. */
     fz_sync(st);
 }
 
