@@ -74,6 +74,10 @@ public:
     void set_count(std::size_t n);
     std::size_t count_target() const { return count_target_; }
     void set_progress(const ProgressHook& hook) { progress_ = hook; }
+    // Threads a run may use (at least 1). The points never depend on it:
+    // allowed at any time, it takes effect at the next call that adds points.
+    void set_threads(unsigned n) { threads_ = n == 0 ? 1 : n; }
+    unsigned threads() const { return threads_; }
     // A variable radius (radius_field.hpp): the radius in force becomes the
     // field's largest; requires count() == 0 and no count.
     void set_field(const RadiusField& field);
@@ -169,6 +173,7 @@ private:
     std::uint64_t seed_;
     Rng rng_;  // at seed_'s state while count() == 0
     bool skip_darts_ = false;
+    unsigned threads_ = 1;
     std::size_t count_target_ = 0;
     ProgressHook progress_;
     std::optional<RadiusField> field_;
