@@ -52,7 +52,7 @@ AR           ?= ar
 # error bounds and byte-identical output across compilers depend on it.
 # -fno-math-errno: sqrt becomes one instruction (same result, no errno).
 PDS_WARN      := -Wall -Wextra -Wshadow -Wconversion -Wno-sign-conversion
-PDS_CXXFLAGS  := -std=c++17 -fPIC -fvisibility=hidden -fvisibility-inlines-hidden \
+PDS_CXXFLAGS  := -std=c++17 -pthread -fPIC -fvisibility=hidden -fvisibility-inlines-hidden \
                  -ffp-contract=off -fno-fast-math -fno-math-errno \
                  -DPDS_BUILDING_LIBRARY -Iinclude -Isrc $(PDS_WARN)
 PDS_CFLAGS    := -std=c99 -Iinclude -Wall -Wextra -pedantic
@@ -100,7 +100,7 @@ $(B)/obj/%.o: src/%.cpp include/poissondisk.h Makefile
 
 $(LIB_SO): $(LIB_OBJ) $(MAPFILE)
 	$(CXX) -shared -Wl,-soname,$(SONAME) -Wl,--version-script=$(MAPFILE) \
-	    -Wl,--no-undefined -Wl,-z,relro -Wl,-z,now $(LDFLAGS) -o $@ $(LIB_OBJ) -lm
+	    -Wl,--no-undefined -Wl,-z,relro -Wl,-z,now $(LDFLAGS) -o $@ $(LIB_OBJ) -lm -pthread
 
 $(B)/$(SONAME): $(LIB_SO)
 	ln -sf $(REALNAME) $@

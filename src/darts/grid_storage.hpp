@@ -44,6 +44,11 @@ public:
     std::uint64_t get(std::size_t cell) const { return words_[cell]; }
     void set(std::size_t cell, std::uint64_t word) { words_[cell] = word; }
     void prefetch(std::size_t cell) const { pds::prefetch(words_.get() + cell); }
+    // The same, for a grid that threads read while one of them writes (the
+    // space-time stage's bands): relaxed atomic accesses, a plain load or
+    // store on the machines we build for, but defined behaviour.
+    std::uint64_t load(std::size_t cell) const { return __atomic_load_n(words_.get() + cell, __ATOMIC_RELAXED); }
+    void store(std::size_t cell, std::uint64_t word) { __atomic_store_n(words_.get() + cell, word, __ATOMIC_RELAXED); }
 
     // Room for `points` points writing `writes` cells in all (never fails:
     // the array is whole); asks for huge pages once the points are worth

@@ -2,6 +2,7 @@
 #include "darts/opening_stage.hpp"
 
 #include "darts/dart_stage.hpp"
+#include "darts/space_time_stage.hpp"
 #include "domain/frame.hpp"
 #include "radius/point_radii.hpp"
 #include "radius/radius_field.hpp"
@@ -10,9 +11,9 @@ namespace pds {
 
 namespace {
 
-enum class Opening { none, dense, sparse, field };
+enum class Opening { none, space_time, dense, sparse, field };
 
-Opening opening_for(const Frame& frame, double count_bound, const RadiusField* field) {
+Opening opening_for(const Frame& frame, double count_bound, const RadiusField* field, bool space_time) {
     const bool fits = count_bound <= static_cast<double>(Frame::max_points());
     if (field) {
         // A grid per layer of radii (layered_grid.hpp), in the plane, while
@@ -29,17 +30,24 @@ Opening opening_for(const Frame& frame, double count_bound, const RadiusField* f
     // darts go to a sparse grid whose memory follows the points: the Jones
     // loop alone would start from a sparse mesh whose cells span the domain
     // (on a torus, with copies across whole periods).
-    return fits ? Opening::dense : Opening::sparse;
+    // Asked for, in a rectangle: the space-time process (its darts tied to
+    // space, so threads share its work). On the torus and in a polygon, the
+    // dart grid that handles their copies and outlines.
+    if (!fits) return Opening::sparse;
+    return space_time && !frame.torus().on() && !frame.polygon() ? Opening::space_time : Opening::dense;
 }
 
 }  // namespace
 
 bool opening_stage_suits(const Frame& frame, double count_bound, const RadiusField* field) {
-    return opening_for(frame, count_bound, field) != Opening::none;
+    return opening_for(frame, count_bound, field, false) != Opening::none;
 }
 
-std::unique_ptr<OpeningStage> make_opening_stage(const Frame& frame, double count_bound, const RadiusField* field) {
-    switch (opening_for(frame, count_bound, field)) {
+std::unique_ptr<OpeningStage> make_opening_stage(const Frame& frame, double count_bound, const RadiusField* field,
+                                                std::optional<std::uint64_t> space_time) {
+    switch (opening_for(frame, count_bound, field, space_time.has_value())) {
+    case Opening::space_time:
+        return std::make_unique<SpaceTimeDartStage>(frame.domain(), frame.r(), *space_time);
     case Opening::dense:
         return std::make_unique<DartStage>(frame.domain(), frame.shared_polygon(), frame.r(), frame.torus());
     case Opening::sparse:

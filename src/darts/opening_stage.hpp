@@ -6,7 +6,9 @@
 #define PDS_OPENING_STAGE_HPP
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "core/poll.hpp"
 #include "jones/stage.hpp"
@@ -28,6 +30,9 @@ public:
     // this stage and releases its grid. Calls poll between its steps and
     // every Poll::kEvery points (progress reports).
     virtual void hand_over_to(JonesStage& jones, const Poll& poll = Poll{}) = 0;
+    // Threads the stage may use from its next step on (at least 1); a stage
+    // that runs on one thread ignores it. Never changes the points.
+    virtual void set_threads(unsigned) {}
 };
 
 // Whether a run with these settings opens with darts: frame at the radius in
@@ -38,7 +43,11 @@ public:
 bool opening_stage_suits(const Frame& frame, double count_bound, const RadiusField* field);
 // The opening stage for those settings, or nullptr when the Jones loop runs
 // alone (opening_stage_suits false). Throws std::bad_alloc.
-std::unique_ptr<OpeningStage> make_opening_stage(const Frame& frame, double count_bound, const RadiusField* field);
+// space_time: the handle's seed when the run asked for the parallel opening
+// (one radius in a rectangle then gets the space-time dart process; other
+// settings the same stages as without it).
+std::unique_ptr<OpeningStage> make_opening_stage(const Frame& frame, double count_bound, const RadiusField* field,
+                                                std::optional<std::uint64_t> space_time = std::nullopt);
 
 }  // namespace pds
 

@@ -92,6 +92,16 @@ void Sampler::set_count(std::size_t n) {
     frame_.set_radius(std::min(above * frame_.radius_for_count(static_cast<double>(n)), frame_.max_radius()));
 }
 
+void Sampler::set_threads(unsigned n) {
+    if (!parallel_) {
+        if (count() != 0) throw std::logic_error("set_threads selects the opening before the first point");
+        forget_stages();
+        parallel_ = true;
+    }
+    threads_ = n == 0 ? 1 : n;
+    if (darts_) darts_->set_threads(threads_);
+}
+
 void Sampler::skip_dart_stage() {
     if (count() != 0) throw std::logic_error("skip_dart_stage after the first point");
     forget_stages();
@@ -136,7 +146,8 @@ void Sampler::prepare(std::size_t points) {
                                       frame_.shared_polygon());
         std::unique_ptr<OpeningStage> darts;
         if (use_darts())
-            darts = make_opening_stage(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr);
+            darts = make_opening_stage(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr,
+                                       parallel_ ? std::optional<std::uint64_t>(seed_) : std::nullopt);
         if (has_fixed()) adopt_fixed(*jones, points);
         jones_ = std::move(jones);
         darts_ = std::move(darts);
@@ -146,6 +157,7 @@ void Sampler::prepare(std::size_t points) {
     // to what the pattern can hold, so small calls cost O(1) amortized. The
     // Jones stage gets room for the dart stage's points too (the hand-over
     // may come with any point), and each reserve is all or nothing.
+    if (darts_) darts_->set_threads(threads_);
     const bool room = jones_->has_room_for(points + adopted_fixed_) && (!darts_ || darts_->has_room_for(points));
     if (room) return;
     const std::size_t cap = std::min(smallest_frame().count_bound_points(), Frame::max_points());

@@ -74,10 +74,14 @@ public:
     void set_count(std::size_t n);
     std::size_t count_target() const { return count_target_; }
     void set_progress(const ProgressHook& hook) { progress_ = hook; }
-    // Threads a run may use (at least 1). The points never depend on it:
-    // allowed at any time, it takes effect at the next call that adds points.
-    void set_threads(unsigned n) { threads_ = n == 0 ? 1 : n; }
+    // Threads a run may use (at least 1). The first call, before the first
+    // point, selects the parallel opening (the space-time dart process,
+    // space_time_stage.hpp), whose points depend on the seed and settings,
+    // never on n; afterwards n may change at any time (from the next call
+    // that adds points). Requires count() == 0 or parallel().
+    void set_threads(unsigned n);
     unsigned threads() const { return threads_; }
+    bool parallel() const { return parallel_; }
     // A variable radius (radius_field.hpp): the radius in force becomes the
     // field's largest; requires count() == 0 and no count.
     void set_field(const RadiusField& field);
@@ -174,6 +178,7 @@ private:
     Rng rng_;  // at seed_'s state while count() == 0
     bool skip_darts_ = false;
     unsigned threads_ = 1;
+    bool parallel_ = false;  // set_threads was called: the space-time opening
     std::size_t count_target_ = 0;
     ProgressHook progress_;
     std::optional<RadiusField> field_;

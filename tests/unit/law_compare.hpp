@@ -37,6 +37,7 @@ struct Config {
     oracle::Field field = nullptr;   // or a radius field within [rmin, rmax]
     double rmin = 0, rmax = 0;
     Stages stages = Stages::darts_then_jones;
+    unsigned threads = 0;            // > 0: the parallel opening (set_threads) on that many
     int runs = 0;                    // seeds 1..runs (the dart thrower: 10^6 + seed)
 };
 
@@ -95,6 +96,7 @@ inline void configure(pds::Sampler& s, const Config& c) {
     s.set_periodic(c.periodic);
     if (c.field) s.set_field(pds::RadiusField::function(c.field, nullptr, c.rmin, c.rmax));
     if (c.stages == Stages::jones_only) s.skip_dart_stage();
+    if (c.threads != 0) s.set_threads(c.threads);
 }
 
 // Runs s to the end, checks it ends maximal and returns its points and radii.

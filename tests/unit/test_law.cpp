@@ -55,6 +55,17 @@ START_TEST(law_of_the_jones_loop_alone) {
 }
 END_TEST
 
+START_TEST(law_of_the_parallel_opening) {
+    // The space-time dart process, then the Jones loop, on 1, 2 and 3
+    // threads (3 oversubscribes a 2-core machine). The box is tall enough
+    // for four bands of rows, so darts near the bands' edges are decided
+    // across them.
+    law::Config c = plane(pds::Box{0, 0, 0.6, 2.4}, 0.1, test_light() ? 300 : 2000, Stages::darts_then_jones);
+    c.threads = static_cast<unsigned>(_i);
+    law::compare(c);
+}
+END_TEST
+
 Suite* law_suite() {
     Suite* s = suite_create("law");
     TCase* t = tcase_create("random sequential adsorption");
@@ -63,6 +74,7 @@ Suite* law_suite() {
     tcase_add_test(t, law_in_the_unit_square);
     tcase_add_test(t, law_in_a_rectangle);
     tcase_add_test(t, law_of_the_jones_loop_alone);
+    tcase_add_loop_test(t, law_of_the_parallel_opening, 1, 4);
     suite_add_tcase(s, t);
     return s;
 }

@@ -1,0 +1,56 @@
+// worker_pool.hpp - a few threads that run one task each, side by side, and
+// wait for the next: the parallel stages' workers.
+//
+// The pool starts its threads once and keeps them (an epoch of darts is a
+// few milliseconds; starting threads for each would cost as much). A thread
+// that cannot be started is not an error: the pool runs with the workers it
+// has, and size() says how many. The callers split their work by size(), and
+// their results never depend on it (the darts are tied to space, not to
+// threads), so fewer threads only means less speed.
+//
+// run(task) calls task(i) for i = 0 .. size()-1 at the same time, task(0) on
+// the calling thread, and returns when all have returned. The tasks may wait
+// for one another (the dart stage's bands do): every task runs on its own
+// thread, so a wait always ends. An exception thrown by a task is rethrown by
+// run() once all tasks are done (the first one, by worker index).
+#ifndef PDS_WORKER_POOL_HPP
+#define PDS_WORKER_POOL_HPP
+
+#include <condition_variable>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace pds {
+
+class WorkerPool {
+public:
+    // Up to `wanted` workers (the caller's thread is one of them); never
+    // throws: threads that cannot be started are done without.
+    explicit WorkerPool(unsigned wanted);
+    ~WorkerPool();
+    WorkerPool(const WorkerPool&) = delete;
+    WorkerPool& operator=(const WorkerPool&) = delete;
+
+    unsigned size() const { return static_cast<unsigned>(threads_.size()) + 1; }
+    void run(const std::function<void(unsigned)>& task);
+
+private:
+    void serve(unsigned index);
+
+    std::mutex mutex_;
+    std::condition_variable start_, done_;
+    const std::function<void(unsigned)>* task_ = nullptr;
+    std::size_t generation_ = 0;  // one per run()
+    unsigned running_ = 0;        // helpers still in the current run
+    bool closing_ = false;
+    std::vector<std::exception_ptr> helper_errors_;  // worker i's at i - 1
+    std::vector<std::thread> threads_;
+};
+
+}  // namespace pds
+
+#endif

@@ -1,0 +1,98 @@
+// space_time_grid.cpp - see space_time_grid.hpp.
+#include "darts/space_time_grid.hpp"
+
+#include <algorithm>
+#include <new>
+
+namespace pds {
+
+SpaceTimeGrid::SpaceTimeGrid(const Box& box, double radius) : box_(box), r_(radius) {
+    using namespace darts;
+    side_ = kCellShrink * radius / std::sqrt(2.0);
+    cols_ = cells_along(box.width(), side_);
+    rows_ = cells_along(box.height(), side_);
+    inv_side_ = 1.0 / side_;
+    step_ = side_ / kOffsetSteps;
+    reach_ = radius * inv_side_ + kReachSlack;
+    r2_low_ = radius * radius * (1.0 - kFilterSlack);
+    r2_high_ = radius * radius * (1.0 + kFilterSlack);
+    // A sub-square is certified when its farthest corner lies this far
+    // inside R: far above the rounding of the corners and distances.
+    const double cover = radius - 4.0 * step_;
+    r2_cover_ = cover * cover;
+    stride_ = cols_ + 2 * kPad;
+    const std::size_t padded_rows = rows_ + 2 * kPad;
+    if (padded_rows > static_cast<std::size_t>(-1) / stride_) throw std::bad_alloc();
+    cells_ = DenseCells(stride_ * padded_rows);
+}
+
+SpaceTimeGrid::Aim SpaceTimeGrid::aim(const Point& p) const {
+    const double fx = (p.x - box_.x0) * inv_side_, fy = (p.y - box_.y0) * inv_side_;
+    return aim_in(p, static_cast<std::int64_t>(clamped_cell(fx, cols_)), static_cast<std::int64_t>(clamped_cell(fy, rows_)));
+}
+
+SpaceTimeGrid::Aim SpaceTimeGrid::aim_in(const Point& p, std::int64_t col, std::int64_t row) const {
+    using darts::kPad;
+    Aim a;
+    const double fx = (p.x - box_.x0) * inv_side_, fy = (p.y - box_.y0) * inv_side_;
+    a.col = col;
+    a.row = row;
+    a.cell = padded(col, row);
+    a.x_lo = block_offset(fx - reach_, a.col, kPad);
+    a.x_hi = block_offset(fx + reach_, a.col, kPad);
+    a.y_lo = block_offset(fy - reach_, a.row, kPad);
+    a.y_hi = block_offset(fy + reach_, a.row, kPad);
+    return a;
+}
+
+namespace {
+
+// The sides of a cell's 4 x 4 sub-squares, clipped to the domain: an empty
+// interval is the part of an edge cell beyond it.
+void sub_square_sides(double x0, double y0, double side, const Box& domain, double* xs, double* ys) {
+    const double quarter = side / 4.0;
+    for (int k = 0; k <= 4; ++k) {
+        xs[k] = std::min(std::max(x0 + k * quarter, domain.x0), domain.x1);
+        ys[k] = std::min(std::max(y0 + k * quarter, domain.y0), domain.y1);
+    }
+}
+
+}  // namespace
+
+std::uint16_t SpaceTimeGrid::outside(std::int64_t col, std::int64_t row, const Box& domain) const {
+    double xs[5], ys[5];
+    sub_square_sides(cell_x0(col), cell_y0(row), side_, domain, xs, ys);
+    std::uint16_t mask = 0;
+    for (int b = 0; b < 4; ++b)
+        for (int a = 0; a < 4; ++a)
+            if (!(xs[a] < xs[a + 1]) || !(ys[b] < ys[b + 1])) mask = static_cast<std::uint16_t>(mask | 1u << (4 * b + a));
+    return mask;
+}
+
+std::uint16_t SpaceTimeGrid::covered_by(std::int64_t col, std::int64_t row, const Point& q, const Box& domain) const {
+    // A sub-square's farthest corner is no nearer than its centre: none is
+    // covered when every centre lies beyond R (the usual case for the
+    // cells at the block's corners).
+    const double quarter = side_ / 4.0, half_span = 1.5 * quarter;
+    const double cx = cell_x0(col) + 2.0 * quarter, cy = cell_y0(row) + 2.0 * quarter;
+    const double ex = std::max(std::fabs(q.x - cx) - half_span, 0.0), ey = std::max(std::fabs(q.y - cy) - half_span, 0.0);
+    if (ex * ex + ey * ey >= r_ * r_) return 0;
+    double xs[5], ys[5];
+    sub_square_sides(cell_x0(col), cell_y0(row), side_, domain, xs, ys);
+    // A sub-square lies in the disk iff its farthest corner does: the
+    // farther side along x and along y, apart.
+    double fx[4], fy[4];
+    for (int k = 0; k < 4; ++k) {
+        const double ax = std::max(std::fabs(xs[k] - q.x), std::fabs(xs[k + 1] - q.x));
+        const double ay = std::max(std::fabs(ys[k] - q.y), std::fabs(ys[k + 1] - q.y));
+        fx[k] = ax * ax;
+        fy[k] = ay * ay;
+    }
+    std::uint16_t mask = 0;
+    for (int b = 0; b < 4; ++b)
+        for (int a = 0; a < 4; ++a)
+            if (fx[a] + fy[b] < r2_cover_) mask = static_cast<std::uint16_t>(mask | 1u << (4 * b + a));
+    return mask;
+}
+
+}  // namespace pds

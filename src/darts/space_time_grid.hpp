@@ -1,0 +1,122 @@
+// space_time_grid.hpp - the background grid of the space-time dart process
+// (space_time_stage.hpp): one radius R on the plane, cells of side
+// 0.99 R / sqrt 2 (no two points share one), a word per cell as in
+// dart_grid.hpp (the point's index plus one, its offset in 16 bits a side).
+//
+// Differences from DartGrid, for bands of rows resolved by several threads:
+// - words are read and written with relaxed atomics (a thread reads the rows
+//   next to its band while the neighbour band writes them);
+// - during an epoch, an empty cell that received darts holds the list of
+//   them instead (kEpochFlag set: the band, the first and the count);
+// - covered_by(): which of a cell's 4 x 4 sub-squares one disk covers, so
+//   cells covered by several disks can leave the active set.
+#ifndef PDS_SPACE_TIME_GRID_HPP
+#define PDS_SPACE_TIME_GRID_HPP
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include "core/point.hpp"
+#include "darts/dart_constants.hpp"
+#include "darts/grid_arithmetic.hpp"
+#include "darts/grid_storage.hpp"
+
+namespace pds {
+
+class SpaceTimeGrid {
+public:
+    using Word = std::uint64_t;
+    static constexpr std::uint32_t kEpochFlag = std::uint32_t{1} << 31;
+    static constexpr std::uint16_t kAllCovered = 0xFFFF;
+
+    // A point's place: its cell (padded index), column and row, and the
+    // cells its disk reaches relative to its own (as DartGrid::Dart).
+    struct Aim {
+        std::size_t cell;
+        std::int64_t col, row;
+        int x_lo, x_hi, y_lo, y_hi;
+    };
+
+    SpaceTimeGrid() = default;
+    // box: the domain's bounds (internal frame); throws std::bad_alloc.
+    SpaceTimeGrid(const Box& box, double radius);
+
+    std::size_t cols() const { return cols_; }
+    std::size_t rows() const { return rows_; }
+    std::size_t cell_count() const { return cols_ * rows_; }
+    double side() const { return side_; }
+    double radius() const { return r_; }
+    double cell_x0(std::int64_t col) const { return box_.x0 + static_cast<double>(col) * side_; }
+    double cell_y0(std::int64_t row) const { return box_.y0 + static_cast<double>(row) * side_; }
+    std::size_t padded(std::int64_t col, std::int64_t row) const {
+        return static_cast<std::size_t>(row + darts::kPad) * stride_ + static_cast<std::size_t>(col + darts::kPad);
+    }
+    std::size_t stride() const { return stride_; }
+
+    Aim aim(const Point& p) const;
+    // The same for a point of the closed cell in column col, row row (a dart
+    // drawn in it may round onto its far side: it stays the cell's).
+    Aim aim_in(const Point& p, std::int64_t col, std::int64_t row) const;
+    Word load(std::size_t cell) const { return cells_.load(cell); }
+    // Asks for the rows of the 5 x 5 block around a cell ahead of its reads.
+    void prefetch_block(std::int64_t col, std::int64_t row) const {
+        std::size_t first = padded(col - darts::kPad, row - darts::kPad);
+        for (int i = -darts::kPad; i <= darts::kPad; ++i, first += stride_) {
+            cells_.prefetch(first);
+            cells_.prefetch(first + 2 * darts::kPad);
+        }
+    }
+    void store(std::size_t cell, Word w) { cells_.store(cell, w); }
+    // An epoch's list of candidates in a cell: `count` of them from `first`
+    // in band `band`'s array.
+    static Word list_word(std::uint32_t band, std::uint32_t first, std::uint32_t count) {
+        return (Word{band} << 40) | (Word{count} << 32) | kEpochFlag | first;
+    }
+    static bool is_list(Word w) { return (static_cast<std::uint32_t>(w) & kEpochFlag) != 0; }
+    static std::uint32_t list_band(Word w) { return static_cast<std::uint32_t>(w >> 40) & 0xFF; }
+    static std::uint32_t list_first(Word w) { return static_cast<std::uint32_t>(w) & ~kEpochFlag; }
+    static std::uint32_t list_count(Word w) { return static_cast<std::uint32_t>(w >> 32) & 0xFF; }
+    // Point `index` (possibly flagged) at p, in column col, row row.
+    void write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index) {
+        const std::uint64_t sx = offset_steps(p.x - cell_x0(col), step_);
+        const std::uint64_t sy = offset_steps(p.y - cell_y0(row), step_);
+        cells_.store(padded(col, row), (sy << 48) | (sx << 32) | (std::uint64_t{index} + 1));
+    }
+    static std::uint32_t index_of(Word w) { return static_cast<std::uint32_t>(w) - 1; }
+    // The point a word holds, from its rounded offsets (within 2^-17 of a
+    // cell of the exact point a side).
+    Point rounded(Word w, std::int64_t col, std::int64_t row) const {
+        return Point{cell_x0(col) + (static_cast<double>((w >> 32) & 0xFFFF) + 0.5) * step_,
+                     cell_y0(row) + (static_cast<double>(w >> 48) + 0.5) * step_};
+    }
+    // Whether q, read rounded from a word, lies within R of p: -1 surely
+    // not, 1 surely, 0 too close to R to say from the rounding.
+    int rounded_within(const Point& p, const Point& q) const {
+        const double dx = q.x - p.x, dy = q.y - p.y, d2 = dx * dx + dy * dy;
+        return d2 < r2_low_ ? 1 : d2 < r2_high_ ? 0 : -1;
+    }
+
+    // The sub-squares of the cell in column col, row row (bit 4 b + a for
+    // column a, row b) that lie in the disk of radius R around q: with a
+    // margin far above every rounding, so a bit set is a sub-square covered.
+    // The sub-squares are clipped to `domain` (darts never land outside it).
+    std::uint16_t covered_by(std::int64_t col, std::int64_t row, const Point& q, const Box& domain) const;
+    // The sub-squares of that cell that lie outside `domain` (edge cells).
+    std::uint16_t outside(std::int64_t col, std::int64_t row, const Box& domain) const;
+
+    // Huge pages once the points reserved are worth them (grid_storage.hpp).
+    void reserve(std::size_t points) { cells_.reserve(points, points); }
+    void release() { cells_.release(); }
+
+private:
+    Box box_{0, 0, 1, 1};
+    double r_ = 1.0, side_ = 1.0, inv_side_ = 1.0, step_ = 1.0, reach_ = 1.0;
+    double r2_low_ = 1.0, r2_high_ = 1.0, r2_cover_ = 1.0;
+    std::size_t cols_ = 0, rows_ = 0, stride_ = 0;
+    DenseCells cells_;
+};
+
+}  // namespace pds
+
+#endif

@@ -1,0 +1,388 @@
+// space_time_stage.cpp - the epochs of the space-time dart process (see
+// space_time_stage.hpp).
+#include "darts/space_time_stage.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <thread>
+
+#include "core/predicates.hpp"
+#include "core/prefetch.hpp"
+#include "darts/jones_of_points.hpp"
+#include "darts/space_time_stream.hpp"
+#include "jones/jones_stage.hpp"
+
+namespace pds {
+
+namespace {
+
+// Darts per cell and epoch (the mean of each cell's Poisson count): small,
+// so an epoch's candidates seldom reach one another (most are decided at a
+// glance) and a dart an earlier point covers is dropped by the grid, which
+// is cheaper than by resolving it (measured: 0.125 against 0.25 and 0.5).
+constexpr double kDartsPerCell = 0.125;
+// The stage ends after an epoch in which fewer than this share of the darts
+// (in active cells) became points (measured at 10^6 points against 0.02 and
+// 0.1).
+constexpr double kStopAcceptance = 0.05;
+// A band is at least this many rows: thinner ones would share most of
+// their reads with their neighbours.
+constexpr std::int64_t kMinBandRows = 8;
+// Cells ahead whose grid words are asked for before they are read.
+constexpr std::size_t kAhead = 8;
+// Epochs at most: past them the Jones loop is far cheaper anyway.
+constexpr std::size_t kMaxEpochs = 65535;
+
+// Time order, ties (of probability about 2^-53 a pair) broken by cell and
+// place in the cell, so the order is total and fixed by the seed.
+bool earlier(const SpaceTimeDartStage::Candidate& a, const SpaceTimeDartStage::Candidate& b) {
+    if (a.t != b.t) return a.t < b.t;
+    if (a.cell != b.cell) return a.cell < b.cell;
+    return a.k < b.k;
+}
+
+enum : std::uint8_t { kUndecided = 0, kAccepted = 1, kRejected = 2 };
+
+}  // namespace
+
+struct SpaceTimeDartStage::Band {
+    std::int64_t r0 = 0, r1 = 0;  // its rows
+    std::size_t a0 = 0, a1 = 0;   // its active cells, active_[a0..a1)
+    std::size_t kept = 0;         // active cells still active after the epoch
+    std::size_t thrown = 0;
+    std::vector<Candidate> cands;  // in the order of their cells
+    std::unique_ptr<std::atomic<std::uint8_t>[]> state;  // outcomes, read by every band
+    std::size_t state_room = 0;
+    std::vector<std::uint64_t> stack;     // decide()'s
+    struct Accepted {
+        double t;
+        std::uint32_t k;  // the candidate
+    };
+    std::vector<Accepted> accepted;  // by time once sorted
+    std::vector<std::uint32_t> number;    // an accepted candidate's point index
+    std::size_t head = 0;                 // merge()'s cursor
+};
+
+SpaceTimeDartStage::SpaceTimeDartStage(const Rectangle& domain, double radius, std::uint64_t seed)
+    : domain_(domain), r_(radius), seed_(seed), grid_(domain.bounds(), radius) {
+    curve_ = CurveOrder(domain.bounds(), grid_.side(), grid_.side(), grid_.cols(), grid_.rows());
+    const std::size_t cells = grid_.cell_count();
+    if (cells >= SpaceTimeGrid::kEpochFlag) throw std::bad_alloc();  // cells are 31-bit ids
+    active_.resize(cells);
+    for (std::size_t c = 0; c < cells; ++c) active_[c] = static_cast<std::uint32_t>(c);
+    masks_.assign(cells, 0);
+    const Box& box = domain.bounds();
+    const std::int64_t last_col = static_cast<std::int64_t>(grid_.cols()) - 1, last_row = static_cast<std::int64_t>(grid_.rows()) - 1;
+    for (std::int64_t row = 0; row <= last_row; ++row)
+        masks_[static_cast<std::size_t>(row * (last_col + 1) + last_col)] = grid_.outside(last_col, row, box);
+    for (std::int64_t col = 0; col <= last_col; ++col)
+        masks_[static_cast<std::size_t>(last_row * (last_col + 1) + col)] |= grid_.outside(col, last_row, box);
+}
+
+SpaceTimeDartStage::~SpaceTimeDartStage() = default;
+
+void SpaceTimeDartStage::reserve(std::size_t points) {
+    points_.reserve(points);
+    curve_.reserve(points);
+    grid_.reserve(points);
+}
+
+bool SpaceTimeDartStage::has_room_for(std::size_t points) const {
+    return points_.capacity() >= points && curve_.has_room_for(points);
+}
+
+const Point* SpaceTimeDartStage::next(Rng&) {
+    if (next_pending_ < pending_.size()) return &pending_[next_pending_];
+    while (!over_)
+        if (run_epoch()) return &pending_[next_pending_];
+    return nullptr;
+}
+
+bool SpaceTimeDartStage::run_epoch() {
+    if (active_.empty()) over_ = true;
+    if (over_) return false;
+    if (!pool_ || pool_size_wanted_ != threads_) {
+        pool_.reset();
+        pool_ = std::make_unique<WorkerPool>(threads_);
+        pool_size_wanted_ = threads_;
+    }
+    const unsigned workers = pool_->size();
+    // Bands of rows, a few per worker: their count changes the work's
+    // split, never its outcome.
+    const auto rows = static_cast<std::int64_t>(grid_.rows());
+    const auto cols = static_cast<std::uint64_t>(grid_.cols());
+    const std::size_t n = std::max<std::size_t>(
+        1, std::min<std::size_t>(workers, static_cast<std::size_t>(rows / kMinBandRows)));
+    bands_.resize(n);
+    for (std::size_t b = 0; b < n; ++b) {
+        Band& band = bands_[b];
+        band.r0 = rows * static_cast<std::int64_t>(b) / static_cast<std::int64_t>(n);
+        band.r1 = rows * static_cast<std::int64_t>(b + 1) / static_cast<std::int64_t>(n);
+        const auto first = [&](std::int64_t row) {
+            const std::uint64_t id = static_cast<std::uint64_t>(row) * cols;
+            return static_cast<std::size_t>(std::lower_bound(active_.begin(), active_.end(), id) - active_.begin());
+        };
+        band.a0 = first(band.r0);
+        band.a1 = first(band.r1);
+    }
+    const auto each_band = [&](void (SpaceTimeDartStage::*step)(Band&)) {
+        pool_->run([&](unsigned w) {
+            for (std::size_t b = w; b < n; b += workers) (this->*step)(bands_[b]);
+        });
+    };
+    // (1) Darts and candidates; every allocation of the epoch happens here,
+    // before the grid is written (std::bad_alloc leaves the stage as it was).
+    each_band(&SpaceTimeDartStage::draw);
+    std::size_t candidates = 0, thrown = 0;
+    for (const Band& band : bands_) {
+        candidates += band.cands.size();
+        thrown += band.thrown;
+    }
+    pending_.clear();
+    pending_.reserve(candidates);
+    pool_->run([&](unsigned w) {
+        for (std::size_t b = w; b < n; b += workers) list_candidates(bands_[b], static_cast<std::uint32_t>(b), true);
+    });
+    // (2) The outcomes; (3) numbered by time, into the grid; (4) the cells left.
+    try {
+        each_band(&SpaceTimeDartStage::resolve);
+    } catch (...) {
+        // Only decide()'s stack can fail to grow: take the lists out again.
+        pool_->run([&](unsigned w) {
+            for (std::size_t b = w; b < n; b += workers) list_candidates(bands_[b], 0, false);
+        });
+        throw;
+    }
+    merge();
+    each_band(&SpaceTimeDartStage::write_points);
+    each_band(&SpaceTimeDartStage::drop_covered);
+    std::size_t kept = 0;
+    for (const Band& band : bands_) {
+        std::memmove(active_.data() + kept, active_.data() + band.a0, band.kept * sizeof(std::uint32_t));
+        kept += band.kept;
+    }
+    active_.resize(kept);
+    ++epoch_;
+    thrown_ += thrown;
+    if (static_cast<double>(pending_.size()) < kStopAcceptance * static_cast<double>(thrown) || epoch_ == kMaxEpochs)
+        over_ = true;
+    return !pending_.empty();
+}
+
+void SpaceTimeDartStage::draw(Band& band) {
+    band.cands.clear();
+    band.thrown = 0;
+    // About kDartsPerCell a cell land free early on, fewer later.
+    band.cands.reserve(static_cast<std::size_t>(static_cast<double>(band.a1 - band.a0) * (kDartsPerCell * 1.2)) + 64);
+    const double e = std::exp(-kDartsPerCell);
+    const auto cols = static_cast<std::uint32_t>(grid_.cols());
+    const double side = grid_.side();
+    const auto stride = static_cast<std::ptrdiff_t>(grid_.stride());
+    const Box& box = domain_.bounds();
+    for (std::size_t i = band.a0; i < band.a1; ++i) {
+        // Late in the stage the active cells are scattered: their blocks'
+        // cache misses overlap when asked for a few cells ahead.
+        if (i + kAhead < band.a1) {
+            const std::uint32_t ahead = active_[i + kAhead];
+            grid_.prefetch_block(ahead % cols, ahead / cols);
+        }
+        const std::uint32_t cell = active_[i];
+        const std::int64_t col = cell % cols, row = cell / cols;
+        SpaceTimeStream stream(seed_, cell, epoch_);
+        const unsigned darts = stream.poisson(kDartsPerCell, e);
+        band.thrown += darts;
+        for (unsigned k = 0; k < darts; ++k) {
+            const double t = stream.next_double();
+            const double u = stream.next_double(), v = stream.next_double();
+            const Point p{grid_.cell_x0(col) + u * side, grid_.cell_y0(row) + v * side};
+            if (!domain_.contains(p)) continue;
+            // Only the earlier epochs' points are in the grid now, numbered.
+            const SpaceTimeGrid::Aim a = grid_.aim_in(p, col, row);
+            if (grid_.load(a.cell) != 0) break;  // the cell is covered whole (an active cell has no point)
+            const auto covers = [&](int di, int dj) {
+                const SpaceTimeGrid::Word w = grid_.load(a.cell + static_cast<std::size_t>(di * stride + dj));
+                if (w == 0) return false;
+                const int near = grid_.rounded_within(p, grid_.rounded(w, a.col + dj, a.row + di));
+                if (near != 0) return near > 0;
+                return compare_distance(p, numbered_point(SpaceTimeGrid::index_of(w)), r_) < 0;
+            };
+            if (block_covers(a.x_lo, a.x_hi, a.y_lo, a.y_hi, covers)) {
+                // Covered: the disks that cover this dart may cover whole
+                // sub-squares of its cell. The certificate is paid for by
+                // the covered darts, where it is likely to pass.
+                std::uint16_t& mask = masks_[cell];
+                for (int di = a.y_lo; di <= a.y_hi; ++di) {
+                    for (int dj = a.x_lo; dj <= a.x_hi; ++dj) {
+                        const SpaceTimeGrid::Word w = grid_.load(a.cell + static_cast<std::size_t>(di * stride + dj));
+                        if (w == 0) continue;
+                        const Point q = grid_.rounded(w, a.col + dj, a.row + di);
+                        if (grid_.rounded_within(p, q) < 0) continue;
+                        mask = static_cast<std::uint16_t>(mask | grid_.covered_by(col, row, q, box));
+                    }
+                }
+                if (mask == SpaceTimeGrid::kAllCovered) break;  // its other darts are covered too
+                continue;
+            }
+            band.cands.push_back(Candidate{t, p, cell, k});
+        }
+    }
+    const std::size_t m = band.cands.size();
+    if (band.state_room < m) {
+        band.state.reset(new std::atomic<std::uint8_t>[m]);
+        band.state_room = m;
+    }
+    for (std::size_t i = 0; i < m; ++i) band.state[i].store(kUndecided, std::memory_order_relaxed);
+    band.stack.reserve(1024);
+    band.accepted.clear();
+    band.accepted.reserve(m);
+    band.number.resize(m);
+}
+
+void SpaceTimeDartStage::list_candidates(Band& band, std::uint32_t band_index, bool write) {
+    // A cell's candidates are consecutive (drawn cell by cell); an empty
+    // cell's word holds their list while the epoch is resolved.
+    const auto cols = static_cast<std::uint32_t>(grid_.cols());
+    for (std::size_t i = 0; i < band.cands.size();) {
+        const std::uint32_t cell = band.cands[i].cell;
+        std::size_t j = i + 1;
+        while (j < band.cands.size() && band.cands[j].cell == cell) ++j;
+        const std::size_t padded = grid_.padded(cell % cols, cell / cols);
+        grid_.store(padded, write ? SpaceTimeGrid::list_word(band_index, static_cast<std::uint32_t>(i),
+                                                              static_cast<std::uint32_t>(j - i))
+                                  : 0);
+        i = j;
+    }
+}
+
+void SpaceTimeDartStage::resolve(Band& band) {
+    const std::size_t b = static_cast<std::size_t>(&band - bands_.data());
+    for (std::size_t k = 0; k < band.cands.size(); ++k)
+        if (decide(b, k, band.stack)) band.accepted.push_back(Band::Accepted{band.cands[k].t, static_cast<std::uint32_t>(k)});
+}
+
+bool SpaceTimeDartStage::decide(std::size_t b0, std::size_t k0, std::vector<std::uint64_t>& stack) {
+    const auto state = [&](std::size_t b, std::size_t k) -> std::atomic<std::uint8_t>& { return bands_[b].state[k]; };
+    const std::uint8_t known = state(b0, k0).load(std::memory_order_acquire);
+    if (known != kUndecided) return known == kAccepted;
+    const auto cols = static_cast<std::uint32_t>(grid_.cols());
+    const auto stride = static_cast<std::ptrdiff_t>(grid_.stride());
+    constexpr std::uint64_t kNone = ~std::uint64_t{0};
+    stack.clear();
+    stack.push_back((std::uint64_t{b0} << 56) | k0);
+    while (!stack.empty()) {
+        const std::size_t b = stack.back() >> 56, k = stack.back() & ((std::uint64_t{1} << 56) - 1);
+        if (state(b, k).load(std::memory_order_acquire) != kUndecided) {
+            stack.pop_back();
+            continue;
+        }
+        // c is rejected iff an earlier candidate within R is accepted: look
+        // for one decided accepted, else ask the first undecided one first.
+        const Candidate& c = bands_[b].cands[k];
+        const SpaceTimeGrid::Aim a = grid_.aim_in(c.p, c.cell % cols, c.cell / cols);
+        bool covered = false;
+        std::uint64_t ask = kNone;
+        for (int di = a.y_lo; di <= a.y_hi && !covered; ++di) {
+            for (int dj = a.x_lo; dj <= a.x_hi && !covered; ++dj) {
+                const SpaceTimeGrid::Word w = grid_.load(a.cell + static_cast<std::size_t>(di * stride + dj));
+                if (!SpaceTimeGrid::is_list(w)) continue;
+                const std::uint32_t ob = SpaceTimeGrid::list_band(w), first = SpaceTimeGrid::list_first(w);
+                const std::uint32_t last = first + SpaceTimeGrid::list_count(w);
+                for (std::uint32_t q = first; q < last; ++q) {
+                    const Candidate& o = bands_[ob].cands[q];
+                    if (!earlier(o, c) || compare_distance(c.p, o.p, r_) >= 0) continue;
+                    const std::uint8_t s = state(ob, q).load(std::memory_order_acquire);
+                    if (s == kAccepted) {
+                        covered = true;
+                        break;
+                    }
+                    if (s == kUndecided && ask == kNone) ask = (std::uint64_t{ob} << 56) | q;
+                }
+            }
+        }
+        if (covered) {
+            state(b, k).store(kRejected, std::memory_order_release);
+            stack.pop_back();
+        } else if (ask != kNone) {
+            stack.push_back(ask);  // earlier than c: the chain ends
+        } else {
+            state(b, k).store(kAccepted, std::memory_order_release);
+            stack.pop_back();
+        }
+    }
+    return state(b0, k0).load(std::memory_order_acquire) == kAccepted;
+}
+
+void SpaceTimeDartStage::merge() {
+    // The bands' accepted candidates by time, numbered: a merge of a few
+    // sorted lists.
+    for (Band& band : bands_) {
+        std::sort(band.accepted.begin(), band.accepted.end(), [&](const Band::Accepted& x, const Band::Accepted& y) {
+            return x.t != y.t ? x.t < y.t : earlier(band.cands[x.k], band.cands[y.k]);
+        });
+        band.head = 0;
+    }
+    pending_base_ = points_.size();
+    next_pending_ = 0;
+    for (;;) {
+        Band* best = nullptr;
+        for (Band& band : bands_)
+            if (band.head < band.accepted.size() &&
+                (!best || earlier(band.cands[band.accepted[band.head].k], best->cands[best->accepted[best->head].k])))
+                best = &band;
+        if (!best) break;
+        const std::uint32_t k = best->accepted[best->head++].k;
+        best->number[k] = static_cast<std::uint32_t>(pending_base_ + pending_.size());
+        pending_.push_back(best->cands[k].p);
+    }
+}
+
+void SpaceTimeDartStage::write_points(Band& band) {
+    // Each cell that listed candidates gets its point (at most one: a cell's
+    // diagonal is under R), or is empty again.
+    const auto cols = static_cast<std::uint32_t>(grid_.cols());
+    for (const Candidate& c : band.cands) grid_.store(grid_.padded(c.cell % cols, c.cell / cols), 0);
+    for (const Band::Accepted& x : band.accepted) {
+        const Candidate& c = band.cands[x.k];
+        grid_.write(c.cell % cols, c.cell / cols, c.p, band.number[x.k]);
+    }
+}
+
+void SpaceTimeDartStage::drop_covered(Band& band) {
+    // Cells with a point leave, and so do cells whose sub-squares each lie
+    // in one disk (their masks grow in draw()).
+    const auto cols = static_cast<std::uint32_t>(grid_.cols());
+    std::size_t kept = band.a0;
+    for (std::size_t i = band.a0; i < band.a1; ++i) {
+        const std::uint32_t cell = active_[i];
+        if (masks_[cell] == SpaceTimeGrid::kAllCovered) continue;
+        if (grid_.load(grid_.padded(cell % cols, cell / cols)) != 0) continue;
+        active_[kept++] = cell;
+    }
+    band.kept = kept - band.a0;
+}
+
+void SpaceTimeDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {
+    // Everything the epochs used goes before the Jones stage's mesh grows.
+    over_ = true;
+    grid_.release();
+    pool_.reset();
+    std::vector<Band>().swap(bands_);
+    std::vector<std::uint32_t>().swap(active_);
+    std::vector<std::uint16_t>().swap(masks_);
+    std::vector<Point>().swap(pending_);
+    next_pending_ = 0;
+    const std::uint32_t* order = curve_.order(points_);
+    poll();
+    jones.adopt(points_, order, nullptr, poll);
+}
+
+double SpaceTimeDartStage::free_area() const {
+    return jones_of_points(domain_, nullptr, r_, Torus{}, nullptr, points_, nullptr, curve_)->free_area();
+}
+
+VerifyReport SpaceTimeDartStage::verify() const {
+    return jones_of_points(domain_, nullptr, r_, Torus{}, nullptr, points_, nullptr, curve_)->verify();
+}
+
+}  // namespace pds

@@ -1,0 +1,122 @@
+// space_time_stage.hpp - the opening of a one-radius run in a rectangle:
+// dart throwing as a space-time process, resolved by several threads with
+// the same points on any number of them.
+//
+// The darts. Every cell of the grid (space_time_grid.hpp) receives darts as
+// a Poisson process in time, uniform over the cell, all cells at the same
+// rate: together, a Poisson process on domain x time, so the darts taken in
+// order of time are independent and uniform over the domain. A cell's darts
+// in epoch e (times in [e, e+1)) come from its own stream (space_time_stream.hpp)
+// keyed by (seed, cell, e): the set of darts is fixed by the seed alone.
+//
+// The points. A dart becomes a point iff it lies in the domain and no earlier
+// point lies within R: greedy independent set in order of time. Conditioned
+// on the points before it, the next point is uniform over the free region:
+// random sequential adsorption, the Jones loop's law. A cell certified
+// covered (it holds a point, or each of its 4 x 4 sub-squares lies in one
+// disk) leaves the active set; its darts could never land free, so skipping
+// them changes no point.
+//
+// An epoch, for the active cells, in bands of rows (one per worker): (1) draw
+// the darts and drop those an earlier epoch's point covers; the survivors
+// ("candidates") are listed in their cells' words; (2) decide each one: it
+// is rejected iff an earlier candidate within R was accepted, which asks
+// those first (memoized, so each is decided once; two workers that decide
+// the same one near a band's edge find the same outcome), in the order of
+// the cells, so the reads stay near one another; (3) number the accepted
+// ones by time and write them into the grid; (4) drop the cells now
+// certified covered. The outcome is the greedy set itself, whatever the
+// bands or the scheduling. The stage ends after an epoch whose darts landed
+// free less often than kStopAcceptance: a stopping time, so the Jones loop
+// goes on with the same law.
+//
+// Points are handed out one at a time in order of time (next / add_next), so
+// a run split into calls gives the same points. An epoch is all or nothing:
+// std::bad_alloc during one leaves the stage as it was before it.
+#ifndef PDS_SPACE_TIME_STAGE_HPP
+#define PDS_SPACE_TIME_STAGE_HPP
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/point.hpp"
+#include "core/worker_pool.hpp"
+#include "darts/curve_order.hpp"
+#include "darts/opening_stage.hpp"
+#include "darts/space_time_grid.hpp"
+#include "domain/rectangle.hpp"
+
+namespace pds {
+
+class SpaceTimeDartStage final : public OpeningStage {
+public:
+    // The domain and R in the internal frame; throws std::bad_alloc.
+    SpaceTimeDartStage(const Rectangle& domain, double radius, std::uint64_t seed);
+    ~SpaceTimeDartStage() override;
+
+    void set_threads(unsigned n) override { threads_ = n == 0 ? 1 : n; }
+    void reserve(std::size_t points) override;
+    bool has_room_for(std::size_t points) const override;
+    void hand_over_to(JonesStage& jones, const Poll& poll = Poll{}) override;
+
+    std::size_t count() const override { return points_.size(); }
+    const Point& point(PointIndex k) const override { return points_[k]; }
+    double value(PointIndex) const override { return 0.0; }
+    const Point* next(Rng& rng) override;
+    void add_next() override { points_.push_back(pending_[next_pending_++]); }
+    double free_area() const override;
+    VerifyReport verify() const override;
+
+    // For tests and bench/phases.cpp.
+    std::size_t darts_thrown() const { return thrown_; }
+    std::size_t epochs() const { return epoch_; }
+    std::size_t active_cells() const { return active_.size(); }
+    const std::vector<Point>& points() const { return points_; }
+
+    // A candidate: a dart that no earlier epoch's point covers.
+    struct Candidate {
+        double t;            // time within the epoch
+        Point p;
+        std::uint32_t cell;  // col + row * cols
+        std::uint32_t k;     // the dart's place in its cell's epoch
+    };
+    struct Band;
+
+private:
+    // Runs an epoch; true if it gave points. Sets over_ once the stage ends.
+    bool run_epoch();
+    void draw(Band& band);
+    void list_candidates(Band& band, std::uint32_t band_index, bool write);
+    void resolve(Band& band);
+    bool decide(std::size_t band, std::size_t k, std::vector<std::uint64_t>& stack);
+    void merge();
+    void write_points(Band& band);
+    void drop_covered(Band& band);
+    const Point& numbered_point(std::uint32_t index) const {
+        return index < pending_base_ ? points_[index] : pending_[index - pending_base_];
+    }
+
+    Rectangle domain_;
+    double r_;
+    std::uint64_t seed_;
+    SpaceTimeGrid grid_;
+    CurveOrder curve_;
+    unsigned threads_ = 1;
+    std::unique_ptr<WorkerPool> pool_;
+    unsigned pool_size_wanted_ = 0;
+    std::vector<Band> bands_;
+    std::vector<std::uint32_t> active_;  // active cells, in increasing order
+    std::vector<std::uint16_t> masks_;   // each cell's sub-squares known covered (one disk each)
+    std::vector<Point> points_;          // handed out
+    std::vector<Point> pending_;         // the last epoch's points, by time
+    std::size_t pending_base_ = 0, next_pending_ = 0;
+    std::size_t epoch_ = 0, thrown_ = 0;
+    bool over_ = false;
+};
+
+}  // namespace pds
+
+#endif

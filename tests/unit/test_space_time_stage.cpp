@@ -1,0 +1,169 @@
+// test_space_time_stage.cpp - the parallel opening (the space-time dart
+// process): its points depend on the seed and the settings, never on the
+// number of threads nor on how a run is split into calls; the epochs'
+// greedy set keeps every pair at least R apart; cells certified covered
+// really are; and the whole run ends maximal and verified.
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "darts/space_time_grid.hpp"
+#include "darts/space_time_stage.hpp"
+#include "core/predicates.hpp"
+#include "core/rng.hpp"
+#include "sampler/sampler.hpp"
+#include "suites.hpp"
+
+namespace {
+
+struct Run {
+    std::vector<double> xy;
+    bool maximal = false;
+};
+
+// A sampler with the parallel opening on `threads` threads, run in calls of
+// `chunk` points (0: one call), `threads_later` threads from the second call.
+Run run(const pds::Box& box, double r, std::uint64_t seed, unsigned threads, std::size_t chunk = 0,
+        unsigned threads_later = 0) {
+    pds::Sampler s(r, seed);
+    s.set_domain(box);
+    s.set_threads(threads);
+    Run out;
+    bool first = true;
+    for (;;) {
+        std::size_t added = 0;
+        const pds::Sampler::RunEnd end = s.run(chunk, &added);
+        if (first && threads_later != 0) s.set_threads(threads_later);
+        first = false;
+        if (end == pds::Sampler::RunEnd::complete) {
+            out.maximal = true;
+            break;
+        }
+    }
+    out.xy.resize(2 * s.count());
+    s.copy_points(0, s.count(), out.xy.data());
+    const pds::VerifyReport rep = s.verify();
+    ck_assert_msg(rep.failure.empty(), "verify: %s", rep.failure.c_str());
+    return out;
+}
+
+void assert_same(const Run& a, const Run& b, const char* what) {
+    ck_assert_msg(a.xy.size() == b.xy.size(), "%s: %zu points against %zu", what, a.xy.size() / 2, b.xy.size() / 2);
+    ck_assert_msg(std::memcmp(a.xy.data(), b.xy.data(), a.xy.size() * sizeof(double)) == 0, "%s: other points", what);
+}
+
+}  // namespace
+
+START_TEST(same_points_on_any_number_of_threads) {
+    // Wide and tall domains (many bands of rows), and one too small for two.
+    const pds::Box boxes[] = {{0, 0, 1, 1}, {0, 0, 3, 0.7}, {-1, 2, -0.6, 5}, {0, 0, 0.1, 0.1}};
+    const double radii[] = {0.01, 0.01, 0.008, 0.02};
+    const unsigned most = test_light() ? 4 : 8;
+    for (int b = 0; b < 4; ++b) {
+        const Run one = run(boxes[b], radii[b], 11, 1);
+        ck_assert(one.maximal);
+        for (unsigned t = 2; t <= most; ++t) assert_same(one, run(boxes[b], radii[b], 11, t), "threads");
+    }
+}
+END_TEST
+
+START_TEST(same_points_in_any_calls) {
+    const pds::Box box{0, 0, 2, 1};
+    const Run whole = run(box, 0.01, 5, 2);
+    assert_same(whole, run(box, 0.01, 5, 1, 1), "one point a call");
+    assert_same(whole, run(box, 0.01, 5, 3, 777), "777 a call");
+    assert_same(whole, run(box, 0.01, 5, 1, 5000, 4), "threads changed between calls");
+}
+END_TEST
+
+START_TEST(the_opening_differs_from_the_default_one) {
+    // set_threads selects another dart process: its points are not the
+    // default opening's (a test that the selection happens at all).
+    pds::Sampler plain(0.01, 3);
+    std::size_t added = 0;
+    plain.run(0, &added);
+    std::vector<double> xy(2 * plain.count());
+    plain.copy_points(0, plain.count(), xy.data());
+    const Run threaded = run(pds::Box{0, 0, 1, 1}, 0.01, 3, 1);
+    ck_assert(xy.size() != threaded.xy.size() || std::memcmp(xy.data(), threaded.xy.data(), xy.size() * 8) != 0);
+}
+END_TEST
+
+START_TEST(epochs_keep_points_apart_and_carry_most_of_the_pattern) {
+    // The stage alone, every pair checked exactly by brute force over a
+    // neighbour grid of the points themselves.
+    const pds::Rectangle domain(pds::Box{0, 0, 1, 1});
+    const double r = 0.004;
+    for (unsigned threads : {1u, 3u}) {
+        pds::SpaceTimeDartStage stage(domain, r, 9);
+        stage.set_threads(threads);
+        stage.reserve(80000);
+        pds::Rng unused(0);
+        while (stage.next(unused) != nullptr) stage.add_next();
+        const std::vector<pds::Point>& p = stage.points();
+        ck_assert_msg(p.size() > 30000, "the stage placed only %zu points (of about 43500)", p.size());
+        ck_assert(stage.epochs() > 3);
+        const double side = r;
+        const auto cols = static_cast<std::size_t>(1.0 / side) + 1;
+        std::vector<std::vector<std::uint32_t>> cells(cols * cols);
+        for (std::uint32_t i = 0; i < p.size(); ++i)
+            cells[static_cast<std::size_t>(p[i].y / side) * cols + static_cast<std::size_t>(p[i].x / side)].push_back(i);
+        for (std::uint32_t i = 0; i < p.size(); ++i) {
+            const auto cx = static_cast<long>(p[i].x / side), cy = static_cast<long>(p[i].y / side);
+            for (long y = cy - 1; y <= cy + 1; ++y)
+                for (long x = cx - 1; x <= cx + 1; ++x) {
+                    if (x < 0 || y < 0 || x >= static_cast<long>(cols) || y >= static_cast<long>(cols)) continue;
+                    for (std::uint32_t j : cells[static_cast<std::size_t>(y) * cols + static_cast<std::size_t>(x)])
+                        ck_assert_msg(j == i || pds::compare_distance(p[i], p[j], r) >= 0, "points %u and %u closer than R", i, j);
+                }
+        }
+    }
+}
+END_TEST
+
+START_TEST(certified_sub_squares_lie_in_the_disk) {
+    // Every sub-square covered_by() certifies has its 4 corners and a dense
+    // set of inner points within R of the point; and a point far off
+    // certifies none.
+    const pds::Box box{0, 0, 1, 1};
+    const pds::SpaceTimeGrid grid(box, 0.05);
+    pds::Rng rng(4);
+    int certified = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        const std::int64_t col = 3 + static_cast<std::int64_t>(rng.next_double() * 8), row = 3 + static_cast<std::int64_t>(rng.next_double() * 8);
+        const double s = grid.side();
+        const pds::Point q{grid.cell_x0(col) + (rng.next_double() * 5 - 2) * s, grid.cell_y0(row) + (rng.next_double() * 5 - 2) * s};
+        const std::uint16_t mask = grid.covered_by(col, row, q, box);
+        for (int b = 0; b < 4; ++b)
+            for (int a = 0; a < 4; ++a) {
+                if (!(mask >> (4 * b + a) & 1)) continue;
+                ++certified;
+                for (int i = 0; i <= 4; ++i)
+                    for (int j = 0; j <= 4; ++j) {
+                        const pds::Point x{grid.cell_x0(col) + (a + i / 4.0) * s / 4, grid.cell_y0(row) + (b + j / 4.0) * s / 4};
+                        ck_assert_msg(pds::compare_distance(x, q, 0.05) < 0, "a certified sub-square leaves the disk");
+                    }
+            }
+    }
+    ck_assert_msg(certified > 1000, "only %d sub-squares certified", certified);
+    ck_assert_int_eq(grid.covered_by(3, 3, pds::Point{grid.cell_x0(7), grid.cell_y0(3)}, box), 0);
+    // The part of an edge cell beyond the domain counts as covered.
+    const pds::Box narrow{0, 0, 1.3 * grid.side(), 1};
+    const pds::SpaceTimeGrid edge(narrow, 0.05);
+    ck_assert_int_ne(edge.outside(1, 0, narrow), 0);
+    ck_assert_int_eq(edge.outside(0, 0, narrow), 0);
+}
+END_TEST
+
+Suite* space_time_stage_suite() {
+    Suite* s = suite_create("space_time_stage");
+    TCase* t = tcase_create("parallel opening");
+    tcase_set_timeout(t, 600);
+    tcase_add_test(t, same_points_on_any_number_of_threads);
+    tcase_add_test(t, same_points_in_any_calls);
+    tcase_add_test(t, the_opening_differs_from_the_default_one);
+    tcase_add_test(t, epochs_keep_points_apart_and_carry_most_of_the_pattern);
+    tcase_add_test(t, certified_sub_squares_lie_in_the_disk);
+    suite_add_tcase(s, t);
+    return s;
+}
