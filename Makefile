@@ -271,6 +271,7 @@ check-cli: $(CLI)
 	sh tests/check-cli-output.sh $(CLI)
 	sh tests/check-cli-field.sh $(CLI)
 	sh tests/check-cli-domains.sh $(CLI)
+	sh tests/check-cli-threads.sh $(CLI)
 
 # check-python: tests/python/run_venv.py pip-installs a copy of bindings/python offline
 # into a scratch venv of SYSTEM_PYTHON (--system-site-packages: Debian's numpy and scipy
