@@ -16,8 +16,9 @@
 #                   (/usr/bin/python3); make uninstall-python
 #   make uninstall, make clean
 #   make abi-baseline   regenerate abi/libpoissondisk.abi (only with a map-node bump)
-#   make check-threads  4 threads, each with its own handle, must give the bytes each
-#                       gives alone (built normally; part of make check)
+#   make check-threads  4 threads, each with its own handle (and threads of its own,
+#                       pds_set_threads), must give the bytes each gives alone on one
+#                       thread (built normally; part of make check)
 #   make check-sanitizers   not part of make check (slow): check-asan, the unit and API
 #                       suites under ASan+UBSan (in build/asan), then check-tsan, the
 #                       thread test under ThreadSanitizer (in build/tsan)
@@ -271,6 +272,7 @@ check-cli: $(CLI)
 	sh tests/check-cli-output.sh $(CLI)
 	sh tests/check-cli-field.sh $(CLI)
 	sh tests/check-cli-domains.sh $(CLI)
+	sh tests/check-cli-threads.sh $(CLI)
 
 # check-python: tests/python/run_venv.py pip-installs a copy of bindings/python offline
 # into a scratch venv of SYSTEM_PYTHON (--system-site-packages: Debian's numpy and scipy
@@ -316,8 +318,9 @@ abi-baseline: $(LIB_SO)
 
 # ---- threads and sanitizers ------------------------------------------------------------
 # check-threads: tests/threads/threads.c (public API only): 4 threads, each with its own
-# handle, run a whole script while calling the global functions; every thread's results
-# must equal, byte for byte, those of the same script run alone first.
+# handle (and threads of its own through pds_set_threads), run a whole script while
+# calling the global functions; every thread's results must equal, byte for byte, those
+# of the same script run alone on one thread first.
 THREADS_BIN := $(B)/tests/threads
 $(THREADS_BIN): tests/threads/threads.c include/poissondisk.h $(LIB_SO) $(B)/libpoissondisk.so
 	@mkdir -p $(@D)

@@ -22,7 +22,8 @@
  *     its points but refuses every change with PDS_ESTATE.
  *   - The library never prints, aborts, exits or touches errno, and keeps no
  *     global state: distinct samplers may be used from distinct threads at
- *     once; one sampler must be used by one thread at a time.
+ *     once; one sampler must be used by one thread at a time. It starts no
+ *     thread of its own unless pds_set_threads asks for more than one.
  *   - Coordinates are returned as interleaved x,y doubles into caller-owned
  *     buffers; no memory allocated by the library crosses this interface.
  *   - Version numbers in the comments say in which release a name appeared.
@@ -47,7 +48,7 @@ extern "C" {
 
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
-#define PDS_VERSION_MINOR 4
+#define PDS_VERSION_MINOR 5
 #define PDS_VERSION_PATCH 0
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
@@ -480,6 +481,27 @@ PDS_API int pds_set_mask(pds_sampler *s, size_t w, size_t h, const unsigned char
  */
 PDS_API int pds_set_fixed(pds_sampler *s, const double *xy, const double *clearance,
                           size_t n) PDS_NOEXCEPT;
+
+/*
+ * pds_set_threads - the number of threads a run of s may use.
+ *   n  1 to 1024; 0 means one per online core (as
+ *      std::thread::hardware_concurrency() counts them; 1 if it cannot tell).
+ * The points never depend on it: the same seed gives the same points, byte
+ * for byte, for every n and whatever n was at each call; threads change only
+ * the speed. The one-radius rectangle (with or without pds_set_count or
+ * pds_refine) uses them in its dart stage; other modes run on one thread
+ * today and give the same points for any n. The default is 1: the library
+ * starts no thread unless asked. Allowed at any time, also between the
+ * calls of one run; it takes effect at the next call that adds points.
+ * Returns 0, PDS_EINVAL (s NULL, n > 1024), PDS_ESTATE (called from inside
+ * the progress callback or the radius function, or after an earlier
+ * PDS_EINTERNAL). (1.5)
+ */
+PDS_API int pds_set_threads(pds_sampler *s, unsigned n) PDS_NOEXCEPT;
+
+/* pds_threads - the number of threads in force (0 resolved to the core
+ * count); 0 for NULL. (1.5) */
+PDS_API unsigned pds_threads(const pds_sampler *s) PDS_NOEXCEPT;
 
 /* pds_strerror - static English text for any code, including unknown ones. (1.0) */
 PDS_API const char *pds_strerror(int code) PDS_NOEXCEPT;

@@ -13,6 +13,9 @@
 #include <limits>
 #include <memory>
 #include <new>
+#if !defined(__wasi__)
+#include <thread>
+#endif
 
 #include "capi_handle.hpp"
 
@@ -22,6 +25,20 @@ namespace {
 #define PDS_STR(x) PDS_STR2(x)
 constexpr const char kVersionString[] =
     PDS_STR(PDS_VERSION_MAJOR) "." PDS_STR(PDS_VERSION_MINOR) "." PDS_STR(PDS_VERSION_PATCH);
+
+// The most threads pds_set_threads takes: far above any core count a run
+// could use, low enough that a wrapped negative number is refused.
+constexpr unsigned kMaxThreads = 1024;
+
+// What pds_set_threads(s, 0) means: one thread per online core.
+unsigned online_cores() {
+#if defined(__wasi__)
+    return 1;  // wasm32-wasi has no threads
+#else
+    const unsigned n = std::thread::hardware_concurrency();  // 0: cannot tell
+    return n == 0 ? 1 : n < kMaxThreads ? n : kMaxThreads;
+#endif
+}
 
 }  // namespace
 
@@ -148,6 +165,22 @@ PDS_API int pds_set_progress(pds_sampler* s, pds_progress_fn fn, void* user) PDS
     s->core->set_progress(hook);
     return 0;
 }
+
+PDS_API int pds_set_threads(pds_sampler* s, unsigned n) PDS_NOEXCEPT {
+    if (s == nullptr) return PDS_EINVAL;
+    if (refuses_changes(s)) return refuse_broken(s, "pds_set_threads");
+    if (n > kMaxThreads)
+        return fail(s, PDS_EINVAL, "pds_set_threads: %u threads asked for; the most is %u (0 means one "
+                    "per online core)", n, kMaxThreads);
+    // No points depend on it, so unlike the other setters it is allowed at any time.
+    const unsigned resolved = n == 0 ? online_cores() : n;
+    return guarded(s, "pds_set_threads", [&] {
+        s->core->set_threads(resolved);
+        return 0;
+    });
+}
+
+PDS_API unsigned pds_threads(const pds_sampler* s) PDS_NOEXCEPT { return s ? s->core->threads() : 0; }
 
 PDS_API int pds_step(pds_sampler* s) PDS_NOEXCEPT {
     if (s == nullptr) return PDS_EINVAL;

@@ -14,7 +14,7 @@
 # check-cli-features.sh, their argument errors here; the output options
 # (--format, --svg, --png, --spectrum...) in check-cli-output.sh, the radius
 # map (--radius-map, --rmin, --rmax, --radii, --dot-radius) in
-# check-cli-field.sh. Ends with
+# check-cli-field.sh, --threads in check-cli-threads.sh. Ends with
 # "check-cli: N passed, M failed" and a non-zero status if anything failed.
 
 set -u
@@ -102,7 +102,7 @@ expect "--bogus --version: exit 2 (got $rc)" [ "$rc" -eq 2 ]
 # The help and the parser come from one table: every option the help lists is
 # known to the parser, and each has an entry in the manual.
 grep -Eo '^  --[a-z-]+' "$tmp/help.out" | tr -d ' ' > "$tmp/help-options"
-expect "--help lists the 33 options" [ "$(lines "$tmp/help-options")" -eq 33 ]
+expect "--help lists the 34 options" [ "$(lines "$tmp/help-options")" -eq 34 ]
 sed -n '/^$/q;p' "$tmp/help.out" > "$tmp/help-usage"    # up to the first blank line
 while read -r opt; do
     run optknown "$opt"

@@ -62,6 +62,18 @@ static int opt_seed(void *ctx, const struct cli_option *opt, const char *const *
     return cli_parse_u64(v[0], &((struct options *)ctx)->seed) == 0 ? CLI_OK : CLI_BAD(0);
 }
 
+/* --threads: 0 (one per online core) to 1024, the library's range. */
+static int opt_threads(void *ctx, const struct cli_option *opt, const char *const *v)
+{
+    uint64_t n;
+
+    (void)opt;
+    if (cli_parse_u64(v[0], &n) != 0 || n > 1024)
+        return CLI_BAD(0);
+    ((struct options *)ctx)->refines.threads = (unsigned)n;
+    return CLI_OK;
+}
+
 /* A number of points: a positive integer that fits size_t. */
 static int parse_points(const char *text, size_t *out)
 {
@@ -200,6 +212,10 @@ static const struct cli_option option_list[] = {
       "scaled by R2 over the largest" },
     { "--max-points", 1, "N", 0, NULL, opt_max_points, "a positive integer",
       "stop after N points in total (N > 0); the pattern may then not be maximal" },
+    { "--threads", 1, "N", 0, "0", opt_threads, "an integer from 0 to 1024",
+      "use up to N threads (0: one per online core); the points are the same, byte "
+      "for byte, for every N: threads change only the speed. The one-radius rectangle "
+      "(with --count or --refine too) uses them; other domains run on one thread" },
     { "--verify", 0, NULL, 0, NULL, opt_flag, NULL,
       "re-check the final pattern independently; exit 1 if the check fails" },
     { "--stats", 0, NULL, 0, NULL, opt_flag, NULL,

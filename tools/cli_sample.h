@@ -36,6 +36,7 @@ struct cli_refines {
     size_t max_points; /* 0: no cap (the option itself rejects 0) */
     int progress;      /* the progress line: -1 when stderr is a terminal, 0 never,
                           1 always */
+    unsigned threads;  /* --threads: 0 (one per online core, the default) to 1024 */
 };
 
 /*

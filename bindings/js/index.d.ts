@@ -57,6 +57,9 @@ export interface SamplerOptions {
   progress?: (count: number, done: number) => boolean | void;
   /** Checked at each progress call and before run(): aborting stops run() with CanceledError. */
   signal?: AbortSignal;
+  /** Threads a run may use, 0 to 1024 (0: one per core); 1 by default. The points never depend
+   *  on it; the WebAssembly build has one thread, so in JavaScript it does not change the speed. */
+  threads?: number;
 }
 
 export class Sampler {
@@ -68,6 +71,8 @@ export class Sampler {
   /** [x0, y0, x1, y1]: as given, or the polygon's bounding box. */
   readonly bounds: number[];
   readonly periodic: boolean;
+  /** The thread count in force (see SamplerOptions.threads); settable at any time. */
+  threads: number;
   /** Add points until maximal (true) or until maxNew were added (false). Synchronous. */
   run(maxNew?: number): boolean;
   /** run() in slices of about sliceMs, yielding to the event loop between them: the same points. */

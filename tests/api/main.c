@@ -39,6 +39,7 @@ int main(void)
     srunner_add_suite(runner, domain_raster_suite());
     srunner_add_suite(runner, domain_law_suite());
     srunner_add_suite(runner, domain_fixed_suite());
+    srunner_add_suite(runner, threads_suite());
 
     if (test_light())
         printf("PDS_TEST_LIGHT is set: heavy loops shrunk, calibration skipped\n");

@@ -284,6 +284,8 @@ void fz_op_verify(fz_state *st);
 void fz_op_nulls(fz_state *st);
 void fz_op_strerror(fz_state *st, fz_reader *r);
 void fz_op_version(void);
+/* pds_set_threads (1.5): the code, pds_threads after it; nothing else changes. */
+void fz_op_threads(fz_state *st, fz_reader *r);
 void fz_op_create_bad(fz_state *st, fz_reader *r);
 /* 1.2 (fuzz_ops12.c) */
 void fz_op_periodic(fz_state *st, fz_reader *r);

@@ -29,6 +29,8 @@
  *      sampler that then goes on (costs the read budget, as verify does)
  *   1  pds_set_polygon with 0-3 decoded rings (1.4, fuzz_domains.c)
  *   2  pds_set_mask with a raster of up to 8 x 8 (1.4)
+ *   3  pds_set_threads with a hostile count, read back by pds_threads (1.5);
+ *      the points that follow must not depend on it (the replay checks them)
  *
  * Checked after every call (fuzz_check.c): the code is one the header allows
  * for that call in that situation; pds_strerror and pds_errmsg are sane; a
@@ -113,6 +115,12 @@ static void ext_mask(fz_state *st, fz_reader *r, size_t *reads)
     fz_op_mask(st, r);
 }
 
+static void ext_threads(fz_state *st, fz_reader *r, size_t *reads)
+{
+    (void)reads;
+    fz_op_threads(st, r);
+}
+
 /* Append only: a selector keeps its call for good (see the header comment). */
 static const struct {
     const char *name;
@@ -121,6 +129,7 @@ static const struct {
     {"ext/replay", ext_replay},
     {"ext/polygon", ext_polygon},
     {"ext/mask", ext_mask},
+    {"ext/threads", ext_threads},
 };
 #define FZ_EXT_OPS (sizeof ext_ops / sizeof ext_ops[0])
 

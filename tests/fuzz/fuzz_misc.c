@@ -1,7 +1,7 @@
 /*
  * fuzz_misc.c - the operations of the fuzz harness that need no model of the
  * sampler (see fuzz_ops.c): every function on NULL (1.3's too), the error texts, the
- * version, and pds_create with hostile radii on a second handle.
+ * version, pds_create with hostile radii on a second handle, and the thread count.
  */
 #include <math.h>
 #include <stdio.h>
@@ -31,6 +31,8 @@ void fz_op_nulls(fz_state *st)
     FZ_CHECK(pds_set_radius_fn(NULL, fz_field_cb, NULL, 0.1, 0.2) == PDS_EINVAL,
              "pds_set_radius_fn(NULL)");
     FZ_CHECK(pds_radii(NULL, 0, 2, xy) == 0, "pds_radii(NULL)");
+    FZ_CHECK(pds_set_threads(NULL, 2) == PDS_EINVAL, "pds_set_threads(NULL)");
+    FZ_CHECK(pds_threads(NULL) == 0, "pds_threads(NULL)");
     FZ_CHECK(pds_errmsg(NULL) != NULL && pds_errmsg(NULL)[0] != '\0', "pds_errmsg(NULL)");
     pds_destroy(NULL);
     fz_check_free_area(st);
@@ -76,4 +78,31 @@ void fz_op_create_bad(fz_state *st, fz_reader *r)
     pds_destroy(t);
     FZ_CHECK(pds_create(NULL, radius, 1) == PDS_EINVAL, "pds_create(NULL, %g)", radius);
     (void)st;
+}
+
+/* Counts around the limits (0: the core count; 1024 the most; 1025 and a
+ * wrapped -1 refused) and small ones. Allowed at any time: the points, count
+ * and radius stay as they were, and the count reads back. */
+void fz_op_threads(fz_state *st, fz_reader *r)
+{
+    static const unsigned pick[8] = {0, 1, 2, 3, 8, 1024, 1025, (unsigned)-1};
+    const unsigned b = fz_u8(r), n = b < 8 ? pick[b] : b % 16;
+    const unsigned before = pds_threads(st->s);
+    const int rc = pds_set_threads(st->s, n);
+
+    if (st->s == NULL) {
+        fz_codes(st, "pds_set_threads", rc, FZ_BIT(PDS_EINVAL));
+        FZ_CHECK(pds_threads(NULL) == 0, "pds_threads(NULL)");
+        return;
+    }
+    fz_codes(st, "pds_set_threads", rc, n > 1024 ? FZ_BIT(PDS_EINVAL) : FZ_OK);
+    if (rc == 0 && n != 0)
+        FZ_CHECK(pds_threads(st->s) == n, "pds_set_threads(%u) reads back %u", n, pds_threads(st->s));
+    else if (rc == 0)
+        FZ_CHECK(pds_threads(st->s) >= 1 && pds_threads(st->s) <= 1024,
+                 "pds_set_threads(0) reads back %u", pds_threads(st->s));
+    else
+        FZ_CHECK(pds_threads(st->s) == before, "a refused pds_set_threads(%u) changed the count "
+                 "from %u to %u", n, before, pds_threads(st->s));
+    fz_sync(st);
 }

@@ -11,6 +11,9 @@
  * pds_version_string, pds_version_number, pds_errmsg(NULL)). Every result is
  * appended to a transcript, and each thread's transcript must equal, byte for
  * byte, the one the same script gave when run alone on the main thread first.
+ * Alone a script runs on one thread; at once, each handle may also start
+ * threads of its own (pds_set_threads, 1.5: 1, 2, 3, or one per core, the
+ * count changed after the first run), which must not change a byte either.
  *
  * `make check-threads` runs it built normally; `make check-tsan` (part of
  * `make check-sanitizers`) runs it built with -fsanitize=thread, so that a data
@@ -38,13 +41,14 @@ struct script {
     double r0, r1;          /* radius at creation, then refined to r1 */
     double x0, y0, x1, y1;  /* the domain */
     size_t first_chunk;     /* max_new of the first, bounded run */
+    unsigned threads[2];    /* run at once: its own threads, then after the first run */
 };
 
 static const struct script scripts[N_THREADS] = {
-    {1, 0.020, 0.012, 0.0, 0.0, 1.0, 1.0, 100},
-    {0x9E3779B97F4A7C15u, 0.030, 0.020, -3.0, 10.0, 1.0, 11.0, 1},
-    {42, 0.015, 0.010, 0.0, 0.0, 2.0, 0.5, 2000},
-    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500},
+    {1, 0.020, 0.012, 0.0, 0.0, 1.0, 1.0, 100, {1, 2}},
+    {0x9E3779B97F4A7C15u, 0.030, 0.020, -3.0, 10.0, 1.0, 11.0, 1, {2, 1}},
+    {42, 0.015, 0.010, 0.0, 0.0, 2.0, 0.5, 2000, {3, 0}},
+    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500, {0, 4}},
 };
 
 /* A growable byte buffer: everything the calls of one script returned. */
@@ -103,7 +107,9 @@ struct summary {
     double free_area;
 };
 
-static void run_script(const struct script *sc, struct transcript *t, struct summary *sum)
+/* alone: on one thread throughout, the reference; else sc->threads. */
+static void run_script(const struct script *sc, int alone, struct transcript *t,
+                       struct summary *sum)
 {
     pds_sampler *s = NULL;
     size_t added = 0, n;
@@ -118,11 +124,13 @@ static void run_script(const struct script *sc, struct transcript *t, struct sum
     put_globals(t);
     sum->set_domain = rc = pds_set_domain(s, sc->x0, sc->y0, sc->x1, sc->y1);
     put_int(t, rc);
+    put_int(t, pds_set_threads(s, alone ? 1 : sc->threads[0]));
     rc = pds_run(s, sc->first_chunk, &added);
     put_int(t, rc);
     put_size(t, added);
     put_double(t, pds_free_area(s)); /* mid-run: measures the open cells */
     put_globals(t);
+    put_int(t, pds_set_threads(s, alone ? 1 : sc->threads[1]));
     rc = pds_run(s, 0, &added);
     put_int(t, rc);
     put_size(t, added);
@@ -183,7 +191,7 @@ static void *worker_main(void *arg)
     for (round = 0; round < ROUNDS; round++) {
         struct transcript t = {NULL, 0, 0, 0};
         struct summary sum;
-        run_script(&scripts[w->index], &t, &sum);
+        run_script(&scripts[w->index], 0, &t, &sum);
         if (t.oom) {
             w->oom = 1;
         } else if (t.len != w->expected->len ||
@@ -225,7 +233,7 @@ int main(void)
     for (i = 0; i < N_THREADS; i++) {
         struct summary sum;
         expected[i] = (struct transcript){NULL, 0, 0, 0};
-        run_script(&scripts[i], &expected[i], &sum);
+        run_script(&scripts[i], 1, &expected[i], &sum);
         if (expected[i].oom || !summary_ok(i, &sum))
             setup_failed = 1;
     }

@@ -13,6 +13,15 @@ export function toSize(value, name, least) {
   return value;
 }
 
+// A thread count for pds_set_threads: 0 (one per core) to 1024. The WebAssembly
+// build has one thread, so any count gives the same points at the same speed.
+export function toThreads(value) {
+  if (!Number.isSafeInteger(value) || value < 0 || value > 1024) {
+    throw new TypeError(`threads must be an integer in [0, 1024] (0: one per core), got ${value}`);
+  }
+  return value;
+}
+
 // The radius map as w*h doubles, row 0 along y0: `radii` as given, or
 // `grey` levels of an image (top row first, as images are stored: the top row
 // lies along y1) mapped linearly from rmin (0, black) to rmax (maxval), as

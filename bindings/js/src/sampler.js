@@ -4,7 +4,8 @@ import {
 } from './errors.js';
 import { init, registerCallbacks, unregisterCallbacks } from './wasm.js';
 import {
-  boundingBox, fixedArrays, maskBytes, polygonArrays, radiusMapValues, toSize, withRingLabel,
+  boundingBox, fixedArrays, maskBytes, polygonArrays, radiusMapValues, toSize, toThreads,
+  withRingLabel,
 } from './options.js';
 
 const UNIT_SQUARE = [0, 0, 1, 1];
@@ -95,7 +96,7 @@ export class Sampler {
   #setup(api, radius, options) {
     const {
       seed, bounds = UNIT_SQUARE, periodic = false, count, radiusMap,
-      rmin, rmax, progress, signal, polygon, mask, fixed,
+      rmin, rmax, progress, signal, polygon, mask, fixed, threads,
     } = options;
     let { radiusFn } = options;
     if (typeof radius === 'function') {  // create((x, y) => r, { rmin, rmax })
@@ -117,6 +118,7 @@ export class Sampler {
     const rings = polygon !== undefined ? polygonArrays(polygon) : null;
     const raster = mask !== undefined ? maskBytes(mask) : null;
     const points = fixed !== undefined ? fixedArrays(fixed) : null;
+    if (threads !== undefined) toThreads(threads);
     this.periodic = Boolean(periodic);
     const field = radiusMap !== undefined ? 'radiusMap' : radiusFn !== undefined ? 'radiusFn' : null;
     if (radiusMap !== undefined && radiusFn !== undefined) throw new TypeError('give radiusMap or radiusFn, not both');
@@ -169,6 +171,7 @@ export class Sampler {
         this.#radiusFn = radiusFn;
         this.#check(ex.pdsjs_set_radius_fn(this.#handle, this.#id, Number(rmin), Number(rmax)));
       }
+      if (threads !== undefined) this.#check(ex.pds_set_threads(this.#handle, threads));
       this.#progress = progress ?? null;
       this.#signal = signal ?? null;
       this.#updateProgress();
@@ -302,6 +305,11 @@ export class Sampler {
   verify() {
     return this.#check(this.#call(this.#api.exports.pds_verify, this.#h())) === DONE;
   }
+
+  /** The thread count in force (0 given: resolved, to 1 here). Settable at any
+   *  time; the points never depend on it, and in WebAssembly neither does the speed. */
+  get threads() { return this.#api.exports.pds_threads(this.#h()); }
+  set threads(n) { this.#check(this.#api.exports.pds_set_threads(this.#h(), toThreads(n))); }
 
   get count() { return this.#api.exports.pds_count(this.#h()); }
   get radius() { return this.#api.exports.pds_radius(this.#h()); }

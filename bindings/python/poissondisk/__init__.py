@@ -26,7 +26,7 @@ from ._errors import (CanceledError, InternalError, InvalidArgumentError, OutOfM
 from ._args import UNIT_SQUARE, Points, ProgressFn, Radii, RadiusFn, random_seed
 from ._sampler import Sampler
 
-__version__ = "1.4.0"  # of this package; version() is the loaded library's
+__version__ = "1.5.0"  # of this package; version() is the loaded library's
 
 
 def sample(radius: Optional[float], *, bounds: Optional[Sequence[Sequence[float]]] = None,
@@ -34,15 +34,16 @@ def sample(radius: Optional[float], *, bounds: Optional[Sequence[Sequence[float]
            count: Optional[int] = None, radius_map: Any = None,
            radius_fn: Optional[RadiusFn] = None, rmin: Optional[float] = None,
            rmax: Optional[float] = None, domain: Any = None, mask: Any = None,
-           fixed: Any = None) -> Points:
+           fixed: Any = None, threads: int = 1) -> Points:
     """A maximal pattern in one call: Sampler(...) run to the end, its points.
 
-    Same arguments as Sampler; returns a float64 array of shape (N, 2) (a
+    Same arguments as Sampler (threads too: the points never depend on it);
+    returns a float64 array of shape (N, 2) (a
     list of (x, y) tuples without numpy). Fixed points are not among them.
     """
     with Sampler(radius, bounds=bounds, seed=seed, periodic=periodic, count=count,
                  radius_map=radius_map, radius_fn=radius_fn, rmin=rmin, rmax=rmax,
-                 domain=domain, mask=mask, fixed=fixed) as s:
+                 domain=domain, mask=mask, fixed=fixed, threads=threads) as s:
         s.run()
         return s.points
 

@@ -48,6 +48,20 @@ def _check_seed(seed: Optional[int]) -> int:
     return seed
 
 
+# The most threads pds_set_threads takes; 0 means one per online core.
+MAX_THREADS = 1024
+
+
+def _check_threads(threads: int) -> int:
+    """threads as an int in [0, MAX_THREADS] (ctypes would wrap a negative
+    or huge one into the C unsigned)."""
+    threads = operator.index(threads)
+    if not 0 <= threads <= MAX_THREADS:
+        raise ValueError("threads must be in [0, %d] (0: one per online core), got %d"
+                         % (MAX_THREADS, threads))
+    return threads
+
+
 def _size_arg(value: int, name: str, least: int) -> int:
     """value as an int in [least, SIZE_MAX], for a size_t argument of the C
     API: ValueError below least, OverflowError above SIZE_MAX (rather than

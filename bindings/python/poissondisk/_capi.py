@@ -53,7 +53,8 @@ DOUBLE_P = ctypes.POINTER(ctypes.c_double)
 # what needs them raises NotImplementedError when called.
 OPTIONAL = {"pds_set_periodic": "1.2", "pds_set_count": "1.2", "pds_set_progress": "1.2",
             "pds_set_radius_map": "1.3", "pds_set_radius_fn": "1.3", "pds_radii": "1.3",
-            "pds_set_polygon": "1.4", "pds_set_mask": "1.4", "pds_set_fixed": "1.4"}
+            "pds_set_polygon": "1.4", "pds_set_mask": "1.4", "pds_set_fixed": "1.4",
+            "pds_set_threads": "1.5", "pds_threads": "1.5"}
 
 
 def _installed_libdirs() -> List[str]:
@@ -127,6 +128,8 @@ def _declare(lib: ctypes.CDLL) -> Set[str]:
         "pds_set_polygon": (i, [vp, DOUBLE_P, ctypes.POINTER(sz), sz]),
         "pds_set_mask": (i, [vp, sz, sz, ctypes.POINTER(ctypes.c_ubyte)]),
         "pds_set_fixed": (i, [vp, DOUBLE_P, DOUBLE_P, sz]),
+        "pds_set_threads": (i, [vp, ctypes.c_uint]),
+        "pds_threads": (ctypes.c_uint, [vp]),
     }
     missing = set()
     for name, (restype, argtypes) in table.items():

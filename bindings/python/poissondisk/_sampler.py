@@ -14,7 +14,7 @@ from typing import Any, Callable, List, Optional, Sequence, Tuple, cast
 
 from . import _capi
 from ._args import (UNIT_SQUARE, Bounds, Points, ProgressFn, Radii, RadiusFn, _check_bounds,
-                    _check_field, _check_seed, _map_buffer, _np, _size_arg)
+                    _check_field, _check_seed, _check_threads, _map_buffer, _np, _size_arg)
 from ._callbacks import progress_callback, radius_callback
 from ._domain import fixed_buffers, mask_buffer, pointer
 from ._errors import error_for
@@ -68,6 +68,12 @@ class Sampler:
             that run() ends with exactly n points (then `radius` is the last
             radius used, and refine() is refused).
         progress: a callable fn(count, done), see set_progress().
+        threads: how many threads a run may use (library 1.5), 1 by default;
+            0 means one per online core, at most 1024 (else ValueError).
+            The points never depend on it, byte for byte: it changes only
+            the speed. The one-radius rectangle (with count or refine too)
+            uses the threads; other domains run on one thread. May be
+            changed at any time through the `threads` property.
         radius_map: a variable radius (library 1.3): a 2-D array-like of
             shape (h, w) of radii, each finite and > 0, spread over the
             domain: row 0 along y0, column 0 along x0, bilinear between
@@ -121,12 +127,14 @@ class Sampler:
                  count: Optional[int] = None, progress: Optional[ProgressFn] = None,
                  radius_map: Any = None, radius_fn: Optional[RadiusFn] = None,
                  rmin: Optional[float] = None, rmax: Optional[float] = None,
-                 domain: Any = None, mask: Any = None, fixed: Any = None) -> None:
+                 domain: Any = None, mask: Any = None, fixed: Any = None,
+                 threads: int = 1) -> None:
         # What the callbacks raised during the current run()/step(), first
         # first. Shared by them; they hold the list, not self (no cycle).
         self._errors: List[BaseException] = []
         self._calls: List[str] = []
         self._seed = _check_seed(seed)
+        threads = _check_threads(threads)
         if domain is not None and (mask is not None or bounds is not None):
             raise TypeError("give domain= alone: its bounding box is the domain's rectangle "
                             "(bounds= goes with a rectangle or a mask)")
@@ -182,6 +190,8 @@ class Sampler:
                 self._set_radius_fn(radius_fn, cast(float, rmin), cast(float, rmax))
             if progress is not None:
                 self.set_progress(progress)
+            if threads != 1:  # 1 is the library's default (and all before 1.5 had)
+                self.threads = threads
         except BaseException:
             self.close()
             raise
@@ -429,6 +439,20 @@ class Sampler:
     def periodic(self) -> bool:
         """True when the domain is a torus."""
         return self._periodic
+
+    @property
+    def threads(self) -> int:
+        """The threads a run may use (0 given: resolved to the core count).
+        Setting it is allowed at any time, between run() calls too, and never
+        changes the points; ValueError outside [0, 1024]."""
+        if "pds_threads" in _capi._missing:
+            return 1  # a library before 1.5 runs on one thread
+        return int(_capi.need("pds_threads")(self._h()))
+
+    @threads.setter
+    def threads(self, n: int) -> None:
+        n = _check_threads(n)
+        self._check(_capi.need("pds_set_threads")(self._h(), n), "pds_set_threads")
 
     def verify(self) -> bool:
         """Re-check the pattern from scratch, independently of the sampler's

@@ -26,7 +26,9 @@ differences:
     scipy's engine raises there). Other bounds than the unit square are
     mapped to it for the optimizer and back. Without scipy, "random-cd" and
     "lloyd" raise ImportError naming scipy (None works);
-  - `workers` is accepted and ignored, as scipy does for this engine;
+  - `workers` is accepted and ignored, as scipy does for this engine; the
+    keyword `threads` (not scipy's) is the library's thread count (1 by
+    default, 0: one per online core), which never changes the points;
   - once the space is full, random() returns an empty (0, 2) array;
   - the same seed gives other points than scipy's (another algorithm), and
     without optimization the points are the same however they are split into
@@ -57,7 +59,7 @@ except ImportError as exc:  # the Sampler works without numpy, this module canno
                       "poissondisk.Sampler works without it") from exc
 
 from . import _capi, _qmc_optimize
-from ._args import _size_arg, random_seed
+from ._args import _check_threads, _size_arg, random_seed
 from ._sampler import Sampler
 
 if TYPE_CHECKING:
@@ -128,13 +130,17 @@ class PoissonDisk:
             or SeedSequence, as scipy accepts; one 64-bit seed is taken from it
             when the engine is made and kept for reset(). Read it from `.seed`.
         rng: the newer scipy name for `seed` (give one of the two).
+        threads: the threads a run may use (not in scipy), 1 by default, 0
+            one per online core, at most 1024; the points never depend on it.
     """
+
+    threads = 1  # engines pickled before the keyword existed
 
     def __init__(self, d: int = 2, *, radius: float = 0.05, hypersphere: str = "volume",
                  ncandidates: int = 30, optimization: Optional[str] = None,
                  l_bounds: Optional[Sequence[float]] = None,
                  u_bounds: Optional[Sequence[float]] = None,
-                 seed: SeedLike = None, rng: SeedLike = None) -> None:
+                 seed: SeedLike = None, rng: SeedLike = None, threads: int = 1) -> None:
         # scipy's checks first, in scipy's order and words (d, optimization,
         # hypersphere), so that a bad argument is reported as scipy reports it
         # whatever d is; then this engine's own limit, d = 2.
@@ -165,6 +171,7 @@ class PoissonDisk:
         if not np.all(self.l_bounds < self.u_bounds):
             raise ValueError("Bounds are not consistent 'l_bounds' < 'u_bounds'")
         self.seed = seed_to_int(rng if seed is None else seed)
+        self.threads = _check_threads(threads)
         self.num_generated = 0
         self._sampler: Optional[Sampler] = None
         self._full = False
@@ -178,7 +185,8 @@ class PoissonDisk:
     def _engine(self) -> Sampler:
         if self._sampler is None:
             box = (tuple(self.l_bounds.tolist()), tuple(self.u_bounds.tolist()))
-            self._sampler = Sampler(self.radius, bounds=box, seed=self.seed)
+            self._sampler = Sampler(self.radius, bounds=box, seed=self.seed,
+                                    threads=self.threads)
         return self._sampler
 
     def random(self, n: Union[int, float] = 1, *, workers: int = 1) -> "NDArray[np.float64]":

@@ -1,0 +1,72 @@
+#!/bin/sh
+# check-cli-threads.sh - the --threads option of the poissondisk program:
+# the points are the same bytes for every thread count, and bad counts are
+# refused before anything is sampled.
+#
+#   sh tests/check-cli-threads.sh build/poissondisk
+#
+# The outputs of --threads 1, 2, 4 and 0 (one per core) and of the default
+# are compared with cmp, in each mode: the one-radius rectangle (whose dart
+# stage uses the threads), --count, --refine, --periodic, --radius-map and
+# --polygon. Ends with "check-cli-threads: N passed, M failed" and a non-zero
+# status if anything failed.
+
+set -u
+
+name=check-cli-threads
+program=${1:?usage: sh tests/check-cli-threads.sh PATH-TO-poissondisk}
+. "$(dirname "$0")/harness.sh"
+cli=$program
+
+# run, lines, usage_case.
+. "$(dirname "$0")/cli_cases.sh"
+
+# An L-shaped polygon with a square hole, and a 2 x 2 radius map.
+printf '0 0\n2 0\n2 1\n1 1\n1 2\n0 2\n\n0.3 0.3\n0.7 0.3\n0.7 0.7\n0.3 0.7\n' > "$tmp/l.txt"
+printf 'P2\n2 2\n255\n0 255\n128 64\n' > "$tmp/map.pgm"
+
+# same_for_threads LABEL ARGS...: --threads 1 is the reference; --threads 2,
+# 4 and 0, --threads=4 and no --threads must write the same bytes.
+same_for_threads() {
+    s_label=$1
+    shift
+    run t1 "$@" --threads 1
+    expect "$s_label --threads 1 exits 0 (got $rc)" [ "$rc" -eq 0 ]
+    expect "$s_label --threads 1 writes points" [ -s "$tmp/t1.out" ]
+    for s_t in 2 4 0; do
+        run "t$s_t" "$@" --threads "$s_t"
+        expect "$s_label: --threads $s_t exits 0 (got $rc)" [ "$rc" -eq 0 ]
+        expect "$s_label: --threads $s_t writes the bytes of --threads 1" \
+            cmp -s "$tmp/t1.out" "$tmp/t$s_t.out"
+    done
+    run teq "$@" --threads=4
+    expect "$s_label: --threads=4 writes the bytes of --threads 1" cmp -s "$tmp/t1.out" "$tmp/teq.out"
+    run tdefault "$@"
+    expect "$s_label: the default (every core) writes the bytes of --threads 1" \
+        cmp -s "$tmp/t1.out" "$tmp/tdefault.out"
+}
+
+same_for_threads "rectangle R 0.01" --radius 0.01 --domain 0 0 2 1 --seed 3
+same_for_threads "--count 3000" --count 3000 --seed 4
+same_for_threads "--refine" --radius 0.03 --refine 0.02 --refine 0.01 --seed 5
+same_for_threads "--periodic" --radius 0.01 --periodic --seed 6
+same_for_threads "--radius-map" --radius-map "$tmp/map.pgm" --rmin 0.01 --rmax 0.03 --seed 7
+same_for_threads "--polygon" --polygon "$tmp/l.txt" --radius 0.02 --seed 8
+same_for_threads "--max-points 5000" --radius 0.01 --max-points 5000 --format bin \
+    --output /dev/stdout
+same_for_threads "--verify" --radius 0.02 --verify
+
+# ---- bad counts: exit 2, a message naming the option and the text, no output --------
+usage_case "--threads -1" "--threads.*'-1'" --radius 0.1 --threads -1
+usage_case "--threads 1025" "--threads.*'1025'" --radius 0.1 --threads 1025
+usage_case "--threads 4294967297 (2^32 + 1)" "--threads.*'4294967297'" --radius 0.1 \
+    --threads 4294967297
+usage_case "--threads x" "--threads.*'x'" --radius 0.1 --threads x
+usage_case "--threads 1.5" "--threads.*'1\\.5'" --radius 0.1 --threads 1.5
+usage_case "--threads ''" "--threads.*''" --radius 0.1 --threads ''
+usage_case "--threads without value" 'option --threads needs a value' --radius 0.1 --threads
+usage_case "the limit in the message" "from 0 to 1024" --radius 0.1 --threads 5000
+run top --radius 0.1 --threads 1024
+expect "--threads 1024 (the most) exits 0 (got $rc)" [ "$rc" -eq 0 ]
+
+finish

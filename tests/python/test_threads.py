@@ -1,0 +1,162 @@
+"""threads= (library 1.5): the count a run may use, checked on the Python side,
+read back, and never changing the points, byte for byte."""
+
+import pickle
+import struct
+import unittest
+
+from support import TestCase, poissondisk
+
+try:
+    from poissondisk import qmc
+except ImportError:  # no numpy: the drop-in cannot load
+    qmc = None
+
+Sampler = poissondisk.Sampler
+COUNTS = (2, 3, 8)
+
+# The modes, as Sampler arguments: the rectangle whose dart stage uses the
+# threads, with count and refine too, then the torus and a polygon with a hole.
+L_SHAPE = [[(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)],
+           [(0.3, 0.3), (0.7, 0.3), (0.7, 0.7), (0.3, 0.7)]]
+MODES = {
+    "rectangle": dict(radius=0.01, bounds=((0, 0), (2, 1))),
+    "count": dict(radius=None, count=3000),
+    "torus": dict(radius=0.01, periodic=True),
+    "polygon": dict(radius=0.02, domain=L_SHAPE),
+    "radius map": dict(radius=None, radius_map=[[0.01, 0.02, 0.03], [0.02, 0.03, 0.02]]),
+}
+
+
+def raw(pts):
+    """The points' bytes: x, y doubles in order, as pds_points wrote them."""
+    if hasattr(pts, "tobytes"):
+        return pts.tobytes()
+    return b"".join(struct.pack("=dd", x, y) for x, y in pts)
+
+
+def first_difference(a, b):
+    """Where two byte strings of points part, for a short failure message
+    (unittest would diff their reprs, which takes minutes at this size)."""
+    if a == b:
+        return None
+    k = next((i for i in range(0, min(len(a), len(b)), 16) if a[i:i + 16] != b[i:i + 16]),
+             min(len(a), len(b)))
+    return "%d points against %d, apart from point %d" % (len(a) // 16, len(b) // 16, k // 16)
+
+
+def pattern(seed, threads, refine=(), **kw):
+    with Sampler(seed=seed, threads=threads, **kw) as s:
+        s.run()
+        for r in refine:
+            s.refine(r)
+            s.run()
+        return raw(s.points), s.radius
+
+
+class ThreadsCase(TestCase):
+    def assertSamePattern(self, got, ref, what):
+        """got and ref: (bytes of the points, radius) or bytes alone."""
+        if isinstance(got, tuple):
+            self.assertEqual(got[1], ref[1], "%s: the radius" % what)
+            got, ref = got[0], ref[0]
+        diff = first_difference(got, ref)
+        self.assertIsNone(diff, "%s: %s" % (what, diff))
+
+
+class ArgumentsTest(ThreadsCase):
+    def test_default_and_read_back(self):
+        with Sampler(0.1, seed=1) as s:
+            self.assertEqual(s.threads, 1, "the default: the library starts no thread")
+            s.threads = 3
+            self.assertEqual(s.threads, 3)
+            s.threads = 0
+            self.assertTrue(1 <= s.threads <= 1024, "0 resolves to the core count")
+        with Sampler(0.1, seed=1, threads=5) as s:
+            self.assertEqual(s.threads, 5)
+        with Sampler(0.1, seed=1, threads=1024) as s:
+            self.assertEqual(s.threads, 1024)
+
+    def test_bad_values_raise_value_error(self):
+        for bad in (-1, 1025, 2 ** 32 + 1, -2 ** 64):
+            with self.assertRaises(ValueError, msg="threads=%r" % bad):
+                Sampler(0.1, seed=1, threads=bad)
+            with self.assertRaises(ValueError, msg="sample(threads=%r)" % bad):
+                poissondisk.sample(0.1, seed=1, threads=bad)
+            with Sampler(0.1, seed=1, threads=2) as s:
+                with self.assertRaises(ValueError):
+                    s.threads = bad
+                self.assertEqual(s.threads, 2, "a refused count changes nothing")
+        for bad in (1.5, "2", None):
+            with self.assertRaises(TypeError, msg="threads=%r" % (bad,)):
+                Sampler(0.1, seed=1, threads=bad)
+
+    def test_refused_inside_the_progress_callback(self):
+        seen = []
+
+        def report(count, done):
+            if not seen:
+                try:
+                    s.threads = 2
+                except poissondisk.StateError as exc:
+                    seen.append(exc)
+                else:
+                    seen.append(None)
+
+        with Sampler(0.02, seed=1, progress=report) as s:
+            s.run()
+            self.assertIsInstance(seen[0], poissondisk.StateError)
+            self.assertEqual(s.threads, 1)
+
+
+class SamePointsTest(ThreadsCase):
+    def test_modes(self):
+        for name, kw in MODES.items():
+            ref = pattern(3, 1, **kw)
+            self.assertGreater(len(ref[0]), 16 * 1000, name)
+            for t in COUNTS:
+                self.assertSamePattern(pattern(3, t, **kw), ref, "%s: %d threads" % (name, t))
+
+    def test_refine(self):
+        ref = pattern(4, 1, radius=0.03, refine=(0.02, 0.01))
+        for t in COUNTS:
+            self.assertSamePattern(pattern(4, t, radius=0.03, refine=(0.02, 0.01)), ref,
+                                   "refine: %d threads" % t)
+
+    def test_split_runs_changing_the_count(self):
+        ref = pattern(5, 1, radius=0.01, bounds=((0, 0), (2, 1)))
+        with Sampler(0.01, seed=5, bounds=((0, 0), (2, 1))) as s:
+            k = 0
+            while not s.run((1, 7, 1000)[k % 3]):
+                s.threads = (2, 3, 8, 0, 1)[k % 5]
+                k += 1
+            self.assertSamePattern((raw(s.points), s.radius), ref, "split runs")
+
+    def test_sample(self):
+        ref = raw(poissondisk.sample(0.01, seed=6))
+        for t in COUNTS:
+            self.assertSamePattern(raw(poissondisk.sample(0.01, seed=6, threads=t)), ref,
+                                   "sample(threads=%d)" % t)
+
+
+@unittest.skipIf(qmc is None, "numpy is not importable here; poissondisk.qmc needs it")
+class DropInTest(ThreadsCase):
+    def test_threads_keyword(self):
+        ref = qmc.PoissonDisk(2, radius=0.02, seed=7).fill_space()
+        for t in COUNTS:
+            engine = qmc.PoissonDisk(2, radius=0.02, seed=7, threads=t)
+            self.assertEqual(engine.threads, t)
+            self.assertSamePattern(engine.fill_space().tobytes(), ref.tobytes(),
+                                   "PoissonDisk(threads=%d)" % t)
+        with self.assertRaises(ValueError):
+            qmc.PoissonDisk(2, radius=0.02, threads=-1)
+        engine = qmc.PoissonDisk(2, radius=0.02, seed=7, threads=3)
+        engine.random(100)
+        copy = pickle.loads(pickle.dumps(engine))
+        self.assertEqual(copy.threads, 3)
+        self.assertSamePattern(copy.random(50).tobytes(), engine.random(50).tobytes(),
+                               "a pickled copy")
+
+
+if __name__ == "__main__":
+    unittest.main()
