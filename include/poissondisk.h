@@ -483,24 +483,33 @@ PDS_API int pds_set_fixed(pds_sampler *s, const double *xy, const double *cleara
                           size_t n) PDS_NOEXCEPT;
 
 /*
- * pds_set_threads - the number of threads a run of s may use.
+ * pds_set_threads - run s with the parallel dart process, on n threads.
  *   n  1 to 1024; 0 means one per online core (as
  *      std::thread::hardware_concurrency() counts them; 1 if it cannot tell).
- * The points never depend on it: the same seed gives the same points, byte
+ * The first call, before the first point, selects the parallel opening: in a
+ * one-radius rectangle (with or without pds_set_count or pds_refine) the run
+ * opens with darts tied to space (each cell its own random stream), decided
+ * in order of time by the threads together. Its points depend on the seed
+ * and the settings, never on n: the same seed gives the same points, byte
  * for byte, for every n and whatever n was at each call; threads change only
- * the speed. The one-radius rectangle (with or without pds_set_count or
- * pds_refine) uses them in its dart stage; other modes run on one thread
- * today and give the same points for any n. The default is 1: the library
- * starts no thread unless asked. Allowed at any time, also between the
- * calls of one run; it takes effect at the next call that adds points.
- * Returns 0, PDS_EINVAL (s NULL, n > 1024), PDS_ESTATE (called from inside
- * the progress callback or the radius function, or after an earlier
- * PDS_EINTERNAL). (1.5)
+ * the speed. They are not the points of a sampler that never called
+ * pds_set_threads, which runs the single-thread process of 1.4 (the faster
+ * one on one or two cores). The torus, polygons, masks, fixed points and
+ * variable radii run on one thread either way. The default is that process:
+ * the library starts no thread unless asked. Once selected, n may change at
+ * any time, also between the calls of one run (from the next call that adds
+ * points). Threads start and end inside the calls that add points; the
+ * progress callback and the radius function are called only from the
+ * caller's thread. A thread that cannot be started is done without: the run
+ * goes on with fewer, and the same points.
+ * Returns 0, PDS_EINVAL (s NULL, n > 1024), PDS_ESTATE (points exist already
+ * from the single-thread process; called from inside the progress callback
+ * or the radius function, or after an earlier PDS_EINTERNAL). (1.5)
  */
 PDS_API int pds_set_threads(pds_sampler *s, unsigned n) PDS_NOEXCEPT;
 
 /* pds_threads - the number of threads in force (0 resolved to the core
- * count); 0 for NULL. (1.5) */
+ * count): 1 until pds_set_threads is called; 0 for NULL. (1.5) */
 PDS_API unsigned pds_threads(const pds_sampler *s) PDS_NOEXCEPT;
 
 /* pds_strerror - static English text for any code, including unknown ones. (1.0) */

@@ -172,7 +172,11 @@ PDS_API int pds_set_threads(pds_sampler* s, unsigned n) PDS_NOEXCEPT {
     if (n > kMaxThreads)
         return fail(s, PDS_EINVAL, "pds_set_threads: %u threads asked for; the most is %u (0 means one "
                     "per online core)", n, kMaxThreads);
-    // No points depend on it, so unlike the other setters it is allowed at any time.
+    // The first call selects the parallel opening, so it must come before
+    // the first point; then no points depend on n, which may change at any time.
+    if (!s->core->parallel() && s->core->count() != 0)
+        return fail(s, PDS_ESTATE, "pds_set_threads: points exist already (%zu) from the single-thread "
+                    "process; call it before the first point to run with threads", s->core->count());
     const unsigned resolved = n == 0 ? online_cores() : n;
     return guarded(s, "pds_set_threads", [&] {
         s->core->set_threads(resolved);

@@ -5,10 +5,11 @@
 #
 #   sh tests/check-cli-threads.sh build/poissondisk
 #
-# The outputs of --threads 1, 2, 4 and 0 (one per core) and of the default
-# are compared with cmp, in each mode: the one-radius rectangle (whose dart
-# stage uses the threads), --count, --refine, --periodic, --radius-map and
-# --polygon. Ends with "check-cli-threads: N passed, M failed" and a non-zero
+# The outputs of --threads 1, 2, 4 and 0 (one per core) are compared with
+# cmp, in each mode: the one-radius rectangle (whose dart stage uses the
+# threads), --count, --refine, --periodic, --radius-map and --polygon. Without
+# --threads the one-radius rectangle runs the single-thread process (other
+# points); the other modes run on one thread either way (the same points). Ends with "check-cli-threads: N passed, M failed" and a non-zero
 # status if anything failed.
 
 set -u
@@ -42,19 +43,27 @@ same_for_threads() {
     run teq "$@" --threads=4
     expect "$s_label: --threads=4 writes the bytes of --threads 1" cmp -s "$tmp/t1.out" "$tmp/teq.out"
     run tdefault "$@"
-    expect "$s_label: the default (every core) writes the bytes of --threads 1" \
-        cmp -s "$tmp/t1.out" "$tmp/tdefault.out"
+    expect "$s_label: no --threads exits 0 (got $rc)" [ "$rc" -eq 0 ]
+    if [ "$#" -gt 0 ] && [ "$s_label" != "${s_label#one radius}" ]; then
+        # The one-radius rectangle: without --threads, the single-thread
+        # process, whose points are others (the selection happens).
+        expect "$s_label: no --threads writes other points than the parallel process" \
+            sh -c "! cmp -s '$tmp/t1.out' '$tmp/tdefault.out'"
+    else
+        expect "$s_label: no --threads writes the bytes of --threads 1 (one thread either way)" \
+            cmp -s "$tmp/t1.out" "$tmp/tdefault.out"
+    fi
 }
 
-same_for_threads "rectangle R 0.01" --radius 0.01 --domain 0 0 2 1 --seed 3
-same_for_threads "--count 3000" --count 3000 --seed 4
-same_for_threads "--refine" --radius 0.03 --refine 0.02 --refine 0.01 --seed 5
+same_for_threads "one radius: rectangle R 0.01" --radius 0.01 --domain 0 0 2 1 --seed 3
+same_for_threads "one radius: --count 3000" --count 3000 --seed 4
+same_for_threads "one radius: --refine" --radius 0.03 --refine 0.02 --refine 0.01 --seed 5
 same_for_threads "--periodic" --radius 0.01 --periodic --seed 6
 same_for_threads "--radius-map" --radius-map "$tmp/map.pgm" --rmin 0.01 --rmax 0.03 --seed 7
 same_for_threads "--polygon" --polygon "$tmp/l.txt" --radius 0.02 --seed 8
-same_for_threads "--max-points 5000" --radius 0.01 --max-points 5000 --format bin \
+same_for_threads "one radius: --max-points 5000" --radius 0.01 --max-points 5000 --format bin \
     --output /dev/stdout
-same_for_threads "--verify" --radius 0.02 --verify
+same_for_threads "one radius: --verify" --radius 0.02 --verify
 
 # ---- bad counts: exit 2, a message naming the option and the text, no output --------
 usage_case "--threads -1" "--threads.*'-1'" --radius 0.1 --threads -1

@@ -70,7 +70,7 @@ static int opt_threads(void *ctx, const struct cli_option *opt, const char *cons
     (void)opt;
     if (cli_parse_u64(v[0], &n) != 0 || n > 1024)
         return CLI_BAD(0);
-    ((struct options *)ctx)->refines.threads = (unsigned)n;
+    ((struct options *)ctx)->refines.threads = (int)n;
     return CLI_OK;
 }
 
@@ -212,10 +212,12 @@ static const struct cli_option option_list[] = {
       "scaled by R2 over the largest" },
     { "--max-points", 1, "N", 0, NULL, opt_max_points, "a positive integer",
       "stop after N points in total (N > 0); the pattern may then not be maximal" },
-    { "--threads", 1, "N", 0, "0", opt_threads, "an integer from 0 to 1024",
-      "use up to N threads (0: one per online core); the points are the same, byte "
-      "for byte, for every N: threads change only the speed. The one-radius rectangle "
-      "(with --count or --refine too) uses them; other domains run on one thread" },
+    { "--threads", 1, "N", 0, NULL, opt_threads, "an integer from 0 to 1024",
+      "run the parallel dart process on up to N threads (0: one per online core); its "
+      "points are the same, byte for byte, for every N, but not those of a run without "
+      "--threads (the single-thread process, faster on one or two cores). The "
+      "one-radius rectangle (with --count or --refine too) uses them; other domains "
+      "run on one thread" },
     { "--verify", 0, NULL, 0, NULL, opt_flag, NULL,
       "re-check the final pattern independently; exit 1 if the check fails" },
     { "--stats", 0, NULL, 0, NULL, opt_flag, NULL,

@@ -117,9 +117,9 @@ int cli_sample(const char *prog, pds_sampler *s, const struct cli_refines *rf,
     bar.prog = prog;
     bar.target = w->count;
     bar.nruns = (unsigned)rf->nrefine + 1;
-    /* The points are the same for any count: it only changes the speed. */
-    if (pds_set_threads(s, rf->threads) < 0) {
-        fprintf(stderr, "%s: cannot use --threads %u: %s\n", prog, rf->threads, pds_errmsg(s));
+    /* The parallel process, if asked for: its points are the same for any count. */
+    if (rf->threads >= 0 && pds_set_threads(s, (unsigned)rf->threads) < 0) {
+        fprintf(stderr, "%s: cannot use --threads %d: %s\n", prog, rf->threads, pds_errmsg(s));
         return CLI_EXIT_USAGE;
     }
     if (pds_set_progress(s, cli_progress_report, &bar) < 0) {

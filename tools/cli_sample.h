@@ -36,7 +36,8 @@ struct cli_refines {
     size_t max_points; /* 0: no cap (the option itself rejects 0) */
     int progress;      /* the progress line: -1 when stderr is a terminal, 0 never,
                           1 always */
-    unsigned threads;  /* --threads: 0 (one per online core, the default) to 1024 */
+    int threads;       /* --threads: 0 (one per online core) to 1024; -1 when not
+                          given (the single-thread process) */
 };
 
 /*

@@ -76,6 +76,7 @@ int main(int argc, char **argv)
     memset(&o, 0, sizeof o);
     o.action = ACT_SAMPLE;
     o.refines.progress = -1;
+    o.refines.threads = -1; /* no --threads: the single-thread process */
     setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
 
     status = cli_parse_args(argc, argv, &o);

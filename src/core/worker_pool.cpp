@@ -1,6 +1,8 @@
 // worker_pool.cpp - see worker_pool.hpp.
 #include "core/worker_pool.hpp"
 
+#if !defined(__wasi__)
+
 namespace pds {
 
 WorkerPool::WorkerPool(unsigned wanted) {
@@ -72,3 +74,5 @@ void WorkerPool::run(const std::function<void(unsigned)>& task) {
 }
 
 }  // namespace pds
+
+#endif

@@ -16,13 +16,15 @@
 #ifndef PDS_WORKER_POOL_HPP
 #define PDS_WORKER_POOL_HPP
 
-#include <condition_variable>
 #include <cstddef>
 #include <exception>
 #include <functional>
+#include <vector>
+#if !defined(__wasi__)  // wasm32-wasi has no threads: the pool is its caller alone
+#include <condition_variable>
 #include <mutex>
 #include <thread>
-#include <vector>
+#endif
 
 namespace pds {
 
@@ -30,11 +32,20 @@ class WorkerPool {
 public:
     // Up to `wanted` workers (the caller's thread is one of them); never
     // throws: threads that cannot be started are done without.
+#if defined(__wasi__)
+    explicit WorkerPool(unsigned) {}
+#else
     explicit WorkerPool(unsigned wanted);
     ~WorkerPool();
+#endif
     WorkerPool(const WorkerPool&) = delete;
     WorkerPool& operator=(const WorkerPool&) = delete;
 
+#if defined(__wasi__)
+    unsigned size() const { return 1; }
+    void run(const std::function<void(unsigned)>& task) { task(0); }
+};
+#else
     unsigned size() const { return static_cast<unsigned>(threads_.size()) + 1; }
     void run(const std::function<void(unsigned)>& task);
 
@@ -50,6 +61,7 @@ private:
     std::vector<std::exception_ptr> helper_errors_;  // worker i's at i - 1
     std::vector<std::thread> threads_;
 };
+#endif
 
 }  // namespace pds
 

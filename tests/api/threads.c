@@ -4,9 +4,11 @@
  *
  * Contract (poissondisk.h): n is 0 (one per online core, at least 1) to 1024;
  * more, or a NULL sampler, is PDS_EINVAL and changes nothing; the default is
- * 1; pds_threads reads the count in force back (0 resolved), 0 for NULL. It
- * is allowed at any time, between the calls of one run too, but not from
- * inside the progress callback (PDS_ESTATE). The same seed gives the same
+ * 1; pds_threads reads the count in force back (0 resolved), 0 for NULL. The
+ * first call selects the parallel process, before the first point (after the
+ * single-thread process's points: PDS_ESTATE); then it is allowed at any
+ * time, between the calls of one run too, but not from inside the progress
+ * callback (PDS_ESTATE). The same seed gives the same
  * points, byte for byte, for every thread count and whatever the count was
  * at each call.
  *
@@ -240,11 +242,13 @@ START_TEST(arguments)
 }
 END_TEST
 
-/* Allowed at any time: after points exist, and once the pattern is maximal. */
+/* Once selected, allowed at any time: after points exist, and once the
+ * pattern is maximal. */
 START_TEST(allowed_at_any_time)
 {
     pds_sampler *s = sampler_new(0.05, 2);
 
+    set_threads(s, 1);
     ck_assert_int_eq(pds_run(s, 10, NULL), PDS_MORE);
     set_threads(s, 2);
     ck_assert_int_eq(pds_step(s), PDS_MORE);
@@ -259,12 +263,37 @@ START_TEST(allowed_at_any_time)
 }
 END_TEST
 
+/* The first call selects the parallel process: not after points of the
+ * single-thread one (PDS_ESTATE, nothing changed, the run goes on). */
+START_TEST(selects_the_process_before_the_first_point)
+{
+    pds_sampler *s = sampler_new(0.05, 2), *t = sampler_new(0.05, 2);
+    double a[2], b[2];
+
+    ck_assert_int_eq(pds_run(s, 10, NULL), PDS_MORE);
+    assert_failed(s, pds_set_threads(s, 2), PDS_ESTATE, "after single-thread points");
+    ck_assert_msg(strstr(pds_errmsg(s), "before the first point") != NULL, "message: %s", pds_errmsg(s));
+    ck_assert_uint_eq(pds_threads(s), 1);
+    run_to_end(s);
+    ck_assert_int_eq(pds_verify(s), PDS_DONE);
+    /* The selection happens: the first point differs from the default's. */
+    set_threads(t, 1);
+    ck_assert_int_eq(pds_step(t), PDS_MORE);
+    ck_assert_uint_eq(pds_points(s, 0, 1, a), 1);
+    ck_assert_uint_eq(pds_points(t, 0, 1, b), 1);
+    ck_assert(a[0] != b[0] || a[1] != b[1]);
+    pds_destroy(s);
+    pds_destroy(t);
+}
+END_TEST
+
 Suite *threads_suite(void)
 {
     Suite *suite = suite_create("threads");
     TCase *tc = new_tcase(suite, "arguments");
     tcase_add_test(tc, arguments);
     tcase_add_test(tc, allowed_at_any_time);
+    tcase_add_test(tc, selects_the_process_before_the_first_point);
     tc = new_tcase(suite, "determinism");
     tcase_add_loop_test(tc, points_never_depend_on_threads, 0, (int)N_MODES);
     return suite;
