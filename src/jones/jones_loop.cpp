@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/worker_pool.hpp"
 #include "jones/plane_space.hpp"
 #include "jones/polygon_space.hpp"
 #include "jones/radius_rule.hpp"
@@ -70,19 +71,17 @@ void JonesLoop<Space, Rule>::set_radius(double r, const PointRadii* radii) {
 }
 
 template <class Space, class Rule>
-bool JonesLoop<Space, Rule>::measure_all_cells(const Poll& poll) {
+bool JonesLoop<Space, Rule>::measure_cells(SiteIndex first, SiteIndex last) {
     const MeshCells cells = this->cells();
-    const SiteIndex sites = dt_.vertex_count() - Delaunay::kGhosts;
     bool valid = true;
     // The rings are walked in step a batch ahead, so their misses overlap.
     constexpr SiteIndex kAhead = 16;
     VertexIndex ahead[kAhead];
-    for (SiteIndex site = 0; site < sites; ++site) {
+    for (SiteIndex site = first; site < last; ++site) {
         const VertexIndex v = vertex_of(site);
-        if (site % kAhead == 0) {
-            if (site % Poll::kEvery == 0) poll();
+        if ((site - first) % kAhead == 0) {
             SiteIndex m = 0;
-            for (SiteIndex s = site + kAhead; s < sites && m < kAhead; ++s) ahead[m++] = vertex_of(s);
+            for (SiteIndex s = site + kAhead; s < last && m < kAhead; ++s) ahead[m++] = vertex_of(s);
             dt_.prefetch_rings(ahead, m);
         }
         if (space_.is_copy(v) || rule_.hidden(dt_, v)) {
@@ -92,6 +91,34 @@ bool JonesLoop<Space, Rule>::measure_all_cells(const Poll& poll) {
         const CellMeasure m = cells.measure(v);
         if (valid && !space_.cell_valid(*this, v, m)) valid = false;
         tree_.set_leaf_only(site, m.area);
+    }
+    return valid;
+}
+
+template <class Space, class Rule>
+bool JonesLoop<Space, Rule>::measure_all_cells(const Poll& poll) {
+    const SiteIndex sites = dt_.vertex_count() - Delaunay::kGhosts;
+    bool valid = true;
+    // A block of Poll::kEvery sites a worker between the polls. Each cell
+    // is measured from the mesh alone (only the plane's rectangle: a
+    // polygon's cutter keeps scratch), into its own leaf.
+    const unsigned threads = Space::kMeasuresSideBySide && sites >= 4 * Poll::kEvery ? threads_ : 1;
+    if (threads > 1) {
+        WorkerPool pool(threads);
+        const SiteIndex per = static_cast<SiteIndex>(Poll::kEvery), block = per * pool.size();
+        for (SiteIndex start = 0; start < sites; start += block) {
+            poll();
+            pool.run([&](unsigned w) {
+                const SiteIndex lo = std::min(sites, start + w * per), hi = std::min(sites, lo + per);
+                if (!measure_cells(lo, hi)) throw std::logic_error("a plane cell measured as invalid");
+            });
+        }
+    } else {
+        for (SiteIndex start = 0; start < sites; start += static_cast<SiteIndex>(Poll::kEvery)) {
+            poll();
+            const SiteIndex end = std::min(sites, start + static_cast<SiteIndex>(Poll::kEvery));
+            if (!measure_cells(start, end)) valid = false;
+        }
     }
     tree_.rebuild();
     return valid;

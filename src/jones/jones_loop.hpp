@@ -92,6 +92,7 @@ public:
     bool is_copy(VertexIndex v) const override { return space_.is_copy(v); }
     const JonesStats& stats() const override { return stats_; }
     void set_fixed(std::size_t n) override { fixed_ = n; }
+    void set_threads(unsigned n) override { threads_ = n < 1 ? 1 : n; }
     void set_batch_size(std::size_t n) override { batch_size_ = n < 1 ? 1 : (n > kMaxBatch ? kMaxBatch : n); }
 
 private:
@@ -123,6 +124,8 @@ private:
     // Every cell's exact free area into the tree: O(N), no allocation. On
     // the torus, false when some real cell is not yet its torus cell.
     bool measure_all_cells(const Poll& poll = Poll{});
+    // Sites first..last-1 of them; the rings walked a batch ahead.
+    bool measure_cells(SiteIndex first, SiteIndex last);
     // Mesh vertices (ghosts aside) that `points` points need, copies included.
     std::size_t vertices_for(std::size_t points) const { return space_.vertices_for(points); }
     void adapt_batch_size();
@@ -167,6 +170,7 @@ private:
     std::size_t undo_count_ = 0;
     JonesStats stats_;  // counters only: never steer the sampling
     std::size_t fixed_ = 0;  // the first points are fixed (set_fixed)
+    unsigned threads_ = 1;   // for measure_all_cells (set_threads)
 };
 
 }  // namespace pds

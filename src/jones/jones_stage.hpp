@@ -73,6 +73,10 @@ public:
     // The first n points adopted are fixed points: verify does not check
     // them against each other, and names the others from n on.
     virtual void set_fixed(std::size_t n) = 0;
+    // Threads that measuring every cell (the hand-over, a refine) may use;
+    // the measures do not depend on it. A mesh whose cells cannot be
+    // measured side by side ignores it.
+    virtual void set_threads(unsigned) {}
 };
 
 // The domain and r in the internal frame, torus on for a periodic domain;

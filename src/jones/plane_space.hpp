@@ -35,6 +35,8 @@ namespace pds {
 class PlaneSpace {
 public:
     static constexpr bool kPeriodic = false;
+    // Its cells can be measured by several threads at once (no scratch).
+    static constexpr bool kMeasuresSideBySide = true;
 
     PlaneSpace(const Rectangle& domain, double /*r*/, const Torus& /*torus*/, bool /*weighted*/,
                const std::shared_ptr<const Polygon>& /*polygon: none*/)

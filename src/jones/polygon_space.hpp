@@ -25,6 +25,7 @@ namespace pds {
 
 class PolygonSpace : public PlaneSpace {
 public:
+    static constexpr bool kMeasuresSideBySide = false;  // the outline cutter keeps scratch
     PolygonSpace(const Rectangle& domain, double r, const Torus& torus, bool weighted,
                  std::shared_ptr<const Polygon> polygon)
         : PlaneSpace(domain, r, torus, weighted, nullptr),

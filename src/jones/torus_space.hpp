@@ -38,6 +38,7 @@ namespace pds {
 class TorusSpace {
 public:
     static constexpr bool kPeriodic = true;
+    static constexpr bool kMeasuresSideBySide = false;  // measuring may widen the copies
 
     TorusSpace(const Rectangle& domain, double r, const Torus& torus, bool weighted,
                const std::shared_ptr<const Polygon>& polygon);

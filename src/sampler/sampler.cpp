@@ -100,6 +100,7 @@ void Sampler::set_threads(unsigned n) {
     }
     threads_ = n == 0 ? 1 : n;
     if (darts_) darts_->set_threads(threads_);
+    if (jones_) jones_->set_threads(threads_);
 }
 
 void Sampler::skip_dart_stage() {
@@ -157,7 +158,10 @@ void Sampler::prepare(std::size_t points) {
     // to what the pattern can hold, so small calls cost O(1) amortized. The
     // Jones stage gets room for the dart stage's points too (the hand-over
     // may come with any point), and each reserve is all or nothing.
-    if (darts_) darts_->set_threads(threads_);
+    if (parallel_) {
+        jones_->set_threads(threads_);
+        if (darts_) darts_->set_threads(threads_);
+    }
     const bool room = jones_->has_room_for(points + adopted_fixed_) && (!darts_ || darts_->has_room_for(points));
     if (room) return;
     const std::size_t cap = std::min(smallest_frame().count_bound_points(), Frame::max_points());

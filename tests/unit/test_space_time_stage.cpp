@@ -1,6 +1,7 @@
 // test_space_time_stage.cpp - the parallel opening (the space-time dart
 // process): its points depend on the seed and the settings, never on the
-// number of threads nor on how a run is split into calls; the epochs'
+// number of threads nor on how a run is split into calls (the hand-over's
+// cells measured side by side included); the epochs'
 // greedy set keeps every pair at least R apart; cells certified covered
 // really are; and the whole run ends maximal and verified.
 #include <cstdint>
@@ -64,6 +65,28 @@ START_TEST(same_points_on_any_number_of_threads) {
         ck_assert(one.maximal);
         for (unsigned t = 2; t <= most; ++t) assert_same(one, run(boxes[b], radii[b], 11, t), "threads");
     }
+}
+END_TEST
+
+START_TEST(hand_over_measures_cells_side_by_side) {
+    // Over 16384 points the hand-over (and a refine) measures the cells on
+    // the threads too: the Jones loop's choices, hence the points, and the
+    // free area left at a partial pattern must not change.
+    const pds::Box box{0, 0, 1, 1};
+    const Run one = run(box, 0.005, 21, 1);
+    ck_assert_msg(one.xy.size() / 2 > 4 * 4096, "only %zu points", one.xy.size() / 2);
+    assert_same(one, run(box, 0.005, 21, 3), "3 threads");
+    double area[2];
+    for (int k = 0; k < 2; ++k) {
+        pds::Sampler s(0.005, 21);
+        s.set_threads(k == 0 ? 1 : 2);
+        std::size_t added = 0;
+        s.run(26000, &added);
+        s.refine(0.0045);
+        s.run(100, &added);
+        area[k] = s.free_area();
+    }
+    ck_assert_msg(area[0] == area[1], "free area %.17g against %.17g", area[0], area[1]);
 }
 END_TEST
 
@@ -161,6 +184,7 @@ Suite* space_time_stage_suite() {
     tcase_set_timeout(t, 600);
     tcase_add_test(t, same_points_on_any_number_of_threads);
     tcase_add_test(t, same_points_in_any_calls);
+    tcase_add_test(t, hand_over_measures_cells_side_by_side);
     tcase_add_test(t, the_opening_differs_from_the_default_one);
     tcase_add_test(t, epochs_keep_points_apart_and_carry_most_of_the_pattern);
     tcase_add_test(t, certified_sub_squares_lie_in_the_disk);
