@@ -57,8 +57,9 @@ export interface SamplerOptions {
   progress?: (count: number, done: number) => boolean | void;
   /** Checked at each progress call and before run(): aborting stops run() with CanceledError. */
   signal?: AbortSignal;
-  /** Threads a run may use, 0 to 1024 (0: one per core); 1 by default. The points never depend
-   *  on it; the WebAssembly build has one thread, so in JavaScript it does not change the speed. */
+  /** Omitted (the default): the single-thread process. A number, 0 to 1024 (0: one per core),
+   *  selects the parallel process on that many threads, whose points do not depend on the count
+   *  but differ from the default's. The WebAssembly build has one thread: no change of speed. */
   threads?: number;
 }
 
@@ -71,7 +72,9 @@ export class Sampler {
   /** [x0, y0, x1, y1]: as given, or the polygon's bounding box. */
   readonly bounds: number[];
   readonly periodic: boolean;
-  /** The thread count in force (see SamplerOptions.threads); settable at any time. */
+  /** The thread count in force, 1 until set (see SamplerOptions.threads). Setting it before the
+   *  first point selects the parallel process, then at any time; StateError once the
+   *  single-thread process has made points. */
   threads: number;
   /** Add points until maximal (true) or until maxNew were added (false). Synchronous. */
   run(maxNew?: number): boolean;

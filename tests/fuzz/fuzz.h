@@ -164,6 +164,10 @@ struct fz_state {
     int refused_first, known_rng;
     /* 1.4: a polygon or mask domain (fuzz_shape.c, fuzz_domains.c) */
     fz_shape shape;
+    /* 1.5: a successful pds_set_threads before the first point selected the
+     * parallel process (its points differ from the single-thread process's,
+     * so the replay selects it too); later calls only change the count. */
+    int parallel;
 };
 enum { FZ_FIELD_NONE, FZ_FIELD_MAP, FZ_FIELD_FN };
 
@@ -284,7 +288,9 @@ void fz_op_verify(fz_state *st);
 void fz_op_nulls(fz_state *st);
 void fz_op_strerror(fz_state *st, fz_reader *r);
 void fz_op_version(void);
-/* pds_set_threads (1.5): the code, pds_threads after it; nothing else changes. */
+/* pds_set_threads (1.5): the code (PDS_ESTATE once points of the single-thread
+ * process exist), pds_threads after it; the first success selects the parallel
+ * process (st->parallel); nothing else changes. */
 void fz_op_threads(fz_state *st, fz_reader *r);
 void fz_op_create_bad(fz_state *st, fz_reader *r);
 /* 1.2 (fuzz_ops12.c) */

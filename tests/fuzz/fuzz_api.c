@@ -30,7 +30,9 @@
  *   1  pds_set_polygon with 0-3 decoded rings (1.4, fuzz_domains.c)
  *   2  pds_set_mask with a raster of up to 8 x 8 (1.4)
  *   3  pds_set_threads with a hostile count, read back by pds_threads (1.5);
- *      the points that follow must not depend on it (the replay checks them)
+ *      PDS_ESTATE after points of the single-thread process; a success before
+ *      the first point selects the parallel process, whose points must not
+ *      depend on the count (the replay selects it too, on one thread)
  *
  * Checked after every call (fuzz_check.c): the code is one the header allows
  * for that call in that situation; pds_strerror and pds_errmsg are sane; a

@@ -313,6 +313,7 @@ void fz_reset(fz_state *st, pds_sampler *s, double radius)
     st->c_seed = 0;
     st->n_ev = 0;
     st->run_failed = 0;
+    st->parallel = 0;
     fz_field_reset(st);
     fz_shape_free(&st->shape);
     st->shape.rect[0] = st->shape.rect[1] = 0.0;

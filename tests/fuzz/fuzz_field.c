@@ -154,6 +154,7 @@ static void try_change(fz_field_fn *f)
     pds_sampler *s = st->s;
     const size_t count = pds_count(s);
     const double r = pds_radius(s), one = 1.0;
+    const unsigned threads = pds_threads(s);
     size_t added = 99;
     const char *fn = "";
     double r2;
@@ -169,6 +170,7 @@ static void try_change(fz_field_fn *f)
         case 7: fn = "pds_set_radius_fn"; rc = pds_set_radius_fn(s, fz_field_cb, f, 1.0, 2.0); break;
         case 8: fn = "pds_set_radius_map"; rc = pds_set_radius_map(s, 1, 1, &one); break;
         case 9: fn = "pds_set_progress"; rc = pds_set_progress(s, NULL, NULL); break;
+        case 10: fn = "pds_set_threads"; rc = pds_set_threads(s, 2); break; /* 1.5 */
         default: return;
     }
     fz_codes(st, fn, rc, FZ_BIT(PDS_ESTATE));
@@ -178,6 +180,8 @@ static void try_change(fz_field_fn *f)
     r2 = pds_radius(s);
     FZ_CHECK(memcmp(&r, &r2, sizeof r) == 0, "%s from the radius function changed the radius "
              "from %.17g to %.17g", fn, r, r2);
+    FZ_CHECK(f->change != 10 || pds_threads(s) == threads, "pds_set_threads from the radius "
+             "function changed the count from %u to %u", threads, pds_threads(s));
 }
 
 double fz_field_cb(void *user, double x, double y)
@@ -503,7 +507,7 @@ void fz_op_radius_fn(fz_state *st, fz_reader *r)
         f->band1 = f->band0 + PICK(r, kBand);
     }
     f->bad = bad_value(f, b / 4);
-    f->change = fz_u8(r) % 12; /* 10, 11: none */
+    f->change = fz_u8(r) % 12; /* 10: pds_set_threads (1.5; none before); 11: none */
     f->st = st;
     if (getenv("PDS_FUZZ_TRACE") != NULL)
         fprintf(stderr, "fuzz:   radius function [%.17g, %.17g], values [%.17g, %.17g], shape %u "

@@ -81,8 +81,11 @@ void fz_op_create_bad(fz_state *st, fz_reader *r)
 }
 
 /* Counts around the limits (0: the core count; 1024 the most; 1025 and a
- * wrapped -1 refused) and small ones. Allowed at any time: the points, count
- * and radius stay as they were, and the count reads back. */
+ * wrapped -1 refused) and small ones. The first success must come before the
+ * first point and selects the parallel process (fz_replay_check then selects
+ * it in its sampler too); after points of the single-thread process the call
+ * is PDS_ESTATE. Once selected it is allowed at any time. Either way the
+ * points, count and radius stay as they were, and a count set reads back. */
 void fz_op_threads(fz_state *st, fz_reader *r)
 {
     static const unsigned pick[8] = {0, 1, 2, 3, 8, 1024, 1025, (unsigned)-1};
@@ -95,7 +98,16 @@ void fz_op_threads(fz_state *st, fz_reader *r)
         FZ_CHECK(pds_threads(NULL) == 0, "pds_threads(NULL)");
         return;
     }
-    fz_codes(st, "pds_set_threads", rc, n > 1024 ? FZ_BIT(PDS_EINVAL) : FZ_OK);
+    {
+        const int late = st->count > 0 && !st->parallel; /* single-thread points exist */
+        unsigned allowed = n > 1024 ? FZ_BIT(PDS_EINVAL) : late ? 0u : FZ_OK;
+        if (late) allowed |= FZ_BIT(PDS_ESTATE); /* either check may come first */
+        fz_codes(st, "pds_set_threads", rc, allowed);
+    }
+    if (rc == 0 && !st->parallel) {
+        st->parallel = 1; /* before the first point (st->count was 0) */
+        fz_changed_before_first(st);
+    }
     if (rc == 0 && n != 0)
         FZ_CHECK(pds_threads(st->s) == n, "pds_set_threads(%u) reads back %u", n, pds_threads(st->s));
     else if (rc == 0)

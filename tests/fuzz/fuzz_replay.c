@@ -8,8 +8,12 @@
  * and without a callback; it runs in one bounded pds_run to each count at
  * which the input refined, refines there, and runs to the first sampler's
  * count. Its points, radii and radius must be the first's, byte for byte,
- * whatever mix of steps, chunks, cancellations, out-of-memory failures and
- * bad values from the radius function led the first there (the second's
+ * whatever mix of steps, chunks, cancellations, out-of-memory failures,
+ * thread counts and bad values from the radius function led the first there
+ * (when the first selected the parallel process with pds_set_threads, the
+ * second selects it too, on one thread, first of its calls: the points
+ * depend on that choice, never on the count or on the order of the setters;
+ * the second's
  * function never returns one where the first's did not: a point is added
  * only after a good value).
  * A constant field (rmin == rmax: a 1 x 1 or uniform map, a function with
@@ -50,6 +54,10 @@ static void replay(fz_state *st, int with_field)
     int rc, ok = 1;
 
     if (pds_create(&t, with_field ? st->c_radius : st->f_rmax, st->c_seed) != 0) return;
+    if (st->parallel) {
+        rc = pds_set_threads(t, 1);
+        FZ_CHECK(rc == 0, "replay: pds_set_threads(1) returned %d", rc);
+    }
     rc = pds_set_domain(t, st->dom[0], st->dom[1], st->dom[2], st->dom[3]);
     FZ_CHECK(rc == 0, "replay: pds_set_domain returned %d", rc);
     rc = pds_set_periodic(t, st->periodic);

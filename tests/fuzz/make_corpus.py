@@ -19,6 +19,11 @@ RESUME = 2  # RUN_TO_END parameter bit: run again after PDS_ECANCELED
 EXT_REPLAY = 0  # the determinism check now, on a sampler that goes on
 EXT_POLYGON = 1  # pds_set_polygon (fuzz_domains.c's decoding)
 EXT_MASK = 2  # pds_set_mask
+EXT_THREADS = 3  # pds_set_threads (1.5)
+
+
+def threads(b):  # pds_set_threads: b < 8 picks 0, 1, 2, 3, 8, 1024, 1025, -1; else b % 16
+    return extended(EXT_THREADS) + [b]
 
 
 def op(code, param=0):
@@ -464,6 +469,21 @@ SEEDS = {
     # A mask with a radius map over its box.
     "mask_field": radius_factor(0, 8) + [78] + mask(4, 4, [0x9, 0x6, 0x6, 0x9])
     + radius_map(1, [3, 3], M_GRAD_X, radius_factor(0, 9), R_2) + op(RUN_TO_END) + op(CHECK),
+    # ---- threads (1.5) ----
+    # The parallel process selected before the first point (3 threads), 1025 refused,
+    # then the count changed between chunks and after a refine; the replay selects it
+    # on one thread and must give the same bytes.
+    "threads_selected": radius_factor(0, 8) + [90] + threads(3) + op(RUN) + MAX_NEW_64
+    + threads(6) + threads(2) + op(RUN_CHUNKS, 3) + extended(EXT_REPLAY) + threads(0)
+    + op(RUN_TO_END) + op(REFINE) + refine_by(7) + threads(1) + op(RUN_TO_END) + op(CHECK),
+    # Single-thread points first: pds_set_threads is PDS_ESTATE (1025: EINVAL or ESTATE),
+    # and the run goes on in the single-thread process.
+    "threads_after_points": radius_factor(0, 8) + [91] + op(RUN) + MAX_NEW_64 + threads(2)
+    + threads(6) + op(RUN_TO_END) + threads(1) + op(CHECK),
+    # Count mode and the torus with the parallel process selected after the setters.
+    "threads_count_torus": radius_factor(0, 8) + [92] + count(7) + threads(4) + op(RUN_TO_END)
+    + op(CREATE) + radius_factor(0, 8) + [93] + periodic() + threads(2) + op(RUN_CHUNKS, 3)
+    + op(RUN_TO_END),
 }
 
 # Reproducers of open library bugs (found/NOTES), written into found/: the harness

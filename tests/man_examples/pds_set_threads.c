@@ -1,6 +1,7 @@
 /*
- * Make the same pattern on one thread and on every core, and check
- * that the points are the same bytes: threads change only the speed.
+ * Select the parallel process before the first point, make the same
+ * pattern on one thread and on every core, and check that the points
+ * are the same bytes: the count changes only the speed.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -8,8 +9,10 @@
 
 #include <poissondisk.h>
 
-/* The pattern of seed 7 at radius 0.01 on `threads` threads (0: one per
- * core), in a new array of *n points; NULL on failure. */
+/* The pattern of seed 7 at radius 0.01 of the parallel process on
+ * `threads` threads (0: one per core), in a new array of *n points;
+ * NULL on failure. pds_set_threads comes before the first point: after
+ * points of the single-thread process it fails with PDS_ESTATE. */
 static double *
 pattern(unsigned threads, size_t *n, unsigned *used)
 {

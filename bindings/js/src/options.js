@@ -13,8 +13,9 @@ export function toSize(value, name, least) {
   return value;
 }
 
-// A thread count for pds_set_threads: 0 (one per core) to 1024. The WebAssembly
-// build has one thread, so any count gives the same points at the same speed.
+// A thread count for pds_set_threads: 0 (one per core) to 1024. Any count gives
+// the same points (the parallel process's), and in WebAssembly the same speed:
+// the build has one thread.
 export function toThreads(value) {
   if (!Number.isSafeInteger(value) || value < 0 || value > 1024) {
     throw new TypeError(`threads must be an integer in [0, 1024] (0: one per core), got ${value}`);

@@ -171,6 +171,7 @@ export class Sampler {
         this.#radiusFn = radiusFn;
         this.#check(ex.pdsjs_set_radius_fn(this.#handle, this.#id, Number(rmin), Number(rmax)));
       }
+      // undefined: never called, the single-thread process; a number selects the parallel one
       if (threads !== undefined) this.#check(ex.pds_set_threads(this.#handle, threads));
       this.#progress = progress ?? null;
       this.#signal = signal ?? null;
@@ -306,8 +307,11 @@ export class Sampler {
     return this.#check(this.#call(this.#api.exports.pds_verify, this.#h())) === DONE;
   }
 
-  /** The thread count in force (0 given: resolved, to 1 here). Settable at any
-   *  time; the points never depend on it, and in WebAssembly neither does the speed. */
+  /** The thread count in force (0 given: resolved, to 1 here), 1 until set.
+   *  Setting it before the first point selects the parallel process (other
+   *  points than the default single-thread process's); once selected it may
+   *  change at any time without changing the points; after single-thread
+   *  points, StateError. In WebAssembly the count does not change the speed. */
   get threads() { return this.#api.exports.pds_threads(this.#h()); }
   set threads(n) { this.#check(this.#api.exports.pds_set_threads(this.#h(), toThreads(n))); }
 

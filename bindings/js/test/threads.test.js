@@ -1,6 +1,8 @@
-// The threads option: checked, passed to pds_set_threads, read back, and never
-// changing the points (the WebAssembly build has one thread, so not the speed
-// either). The native CLI's points at --threads 4 are the same bytes too.
+// The threads option: undefined (the default) never calls pds_set_threads and
+// runs the single-thread process; a number selects the parallel process, whose
+// points depend on the seed and settings but never on the count (the
+// WebAssembly build has one thread, so not the speed either). The native CLI's
+// points at --threads 4 are the same bytes.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { Sampler, StateError, poissonDisk } from '../src/index.js';
@@ -15,26 +17,38 @@ function sameBytes(actual, expected, what) {
   assert.equal(first, -1, `${what}: first differing byte at ${first} (point ${Math.floor(first / 16)})`);
 }
 
-const MODES = {
+const PARALLEL = {  // the modes with a parallel process of their own
   rectangle: [0.01, { bounds: [0, 0, 2, 1] }],
+  'unit square': [0.01, {}],
   count: [null, { count: 3000 }],
+};
+const ONE_THREAD = {  // the modes that run on one thread whatever was asked
   torus: [0.01, { periodic: true }],
+  polygon: [0.02, { polygon: [[[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]]] }],
 };
 
-test('threads 1 and 4 give the same points', async () => {
-  for (const [name, [radius, options]] of Object.entries(MODES)) {
+test('threads 1 and 4 give the same points; no threads option gives the single-thread process', async () => {
+  for (const [name, [radius, options]] of Object.entries({ ...PARALLEL, ...ONE_THREAD })) {
     const one = await poissonDisk(radius, { ...options, seed: 3, threads: 1 });
     const four = await poissonDisk(radius, { ...options, seed: 3, threads: 4 });
     sameBytes(four, one, `${name}: threads 4 against 1`);
-    sameBytes(await poissonDisk(radius, { ...options, seed: 3 }), one, `${name}: the default against 1`);
+    const single = await poissonDisk(radius, { ...options, seed: 3 });
+    if (name in PARALLEL) {
+      assert.notDeepEqual(bytesOf(single), bytesOf(one), `${name}: the default against threads 1`);
+    } else {
+      sameBytes(single, one, `${name}: the default against threads 1 (one thread either way)`);
+    }
   }
   sameBytes(await poissonDisk(0.01, { seed: 3, bounds: [0, 0, 2, 1], threads: 4 }),
     cliPoints(['--radius', '0.01', '--seed', '3', '--domain', '0', '0', '2', '1', '--threads', '4']),
     'threads 4 against the native CLI at --threads 4');
+  sameBytes(await poissonDisk(0.01, { seed: 3, bounds: [0, 0, 2, 1] }),
+    cliPoints(['--radius', '0.01', '--seed', '3', '--domain', '0', '0', '2', '1']),
+    'no threads against the native CLI without --threads');
 });
 
 test('the count reads back and may change between runs', async () => {
-  const ref = await poissonDisk(0.01, { seed: 5 });
+  const ref = await poissonDisk(0.01, { seed: 5, threads: 1 });
   const s = await Sampler.create(0.01, { seed: 5, threads: 4 });
   assert.equal(s.threads, 4);
   const counts = [2, 0, 8, 1];
@@ -45,6 +59,24 @@ test('the count reads back and may change between runs', async () => {
   s.dispose();
   const d = await Sampler.create(0.1, { seed: 1 });
   assert.equal(d.threads, 1, 'the default');
+  d.dispose();
+});
+
+test('setting threads: before the first point it selects, after single-thread points StateError', async () => {
+  const parallel = await poissonDisk(0.01, { seed: 6, threads: 1 });
+  const single = await poissonDisk(0.01, { seed: 6 });
+  const s = await Sampler.create(0.01, { seed: 6 });
+  s.threads = 3;  // no point yet: selects the parallel process
+  s.run();
+  sameBytes(s.points(), parallel, 'selected by the property');
+  s.dispose();
+  const d = await Sampler.create(0.01, { seed: 6 });
+  d.run(10);
+  assert.throws(() => { d.threads = 2; }, (e) => e instanceof StateError
+    && e.message.startsWith('pds_set_threads:') && e.message.includes('single-thread'));
+  assert.equal(d.threads, 1);
+  d.run();
+  sameBytes(d.points(), single, 'the run goes on in the single-thread process');
   d.dispose();
 });
 

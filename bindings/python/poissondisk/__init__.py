@@ -34,12 +34,14 @@ def sample(radius: Optional[float], *, bounds: Optional[Sequence[Sequence[float]
            count: Optional[int] = None, radius_map: Any = None,
            radius_fn: Optional[RadiusFn] = None, rmin: Optional[float] = None,
            rmax: Optional[float] = None, domain: Any = None, mask: Any = None,
-           fixed: Any = None, threads: int = 1) -> Points:
+           fixed: Any = None, threads: Optional[int] = None) -> Points:
     """A maximal pattern in one call: Sampler(...) run to the end, its points.
 
-    Same arguments as Sampler (threads too: the points never depend on it);
-    returns a float64 array of shape (N, 2) (a
+    Same arguments as Sampler; returns a float64 array of shape (N, 2) (a
     list of (x, y) tuples without numpy). Fixed points are not among them.
+    threads: None (default) runs the single-thread process; an int selects
+    the parallel process on that many threads (0: one per core), whose
+    points do not depend on the count but differ from the default's.
     """
     with Sampler(radius, bounds=bounds, seed=seed, periodic=periodic, count=count,
                  radius_map=radius_map, radius_fn=radius_fn, rmin=rmin, rmax=rmax,

@@ -52,12 +52,15 @@ def _check_seed(seed: Optional[int]) -> int:
 MAX_THREADS = 1024
 
 
-def _check_threads(threads: int) -> int:
-    """threads as an int in [0, MAX_THREADS] (ctypes would wrap a negative
-    or huge one into the C unsigned)."""
+def _check_threads(threads: Optional[int]) -> Optional[int]:
+    """threads as None (the single-thread process: pds_set_threads is never
+    called) or an int in [0, MAX_THREADS] (ctypes would wrap a negative or
+    huge one into the C unsigned)."""
+    if threads is None:
+        return None
     threads = operator.index(threads)
     if not 0 <= threads <= MAX_THREADS:
-        raise ValueError("threads must be in [0, %d] (0: one per online core), got %d"
+        raise ValueError("threads must be None or in [0, %d] (0: one per online core), got %d"
                          % (MAX_THREADS, threads))
     return threads
 

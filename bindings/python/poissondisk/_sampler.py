@@ -68,12 +68,13 @@ class Sampler:
             that run() ends with exactly n points (then `radius` is the last
             radius used, and refine() is refused).
         progress: a callable fn(count, done), see set_progress().
-        threads: how many threads a run may use (library 1.5), 1 by default;
-            0 means one per online core, at most 1024 (else ValueError).
-            The points never depend on it, byte for byte: it changes only
-            the speed. The one-radius rectangle (with count or refine too)
-            uses the threads; other domains run on one thread. May be
-            changed at any time through the `threads` property.
+        threads: None (default) runs the single-thread process; an int
+            (library 1.5) selects the parallel process on that many threads
+            (0: one per core, at most 1024, else ValueError), whose points
+            do not depend on the count but differ from the default's. Only
+            the one-radius rectangle (with count or refine too) uses
+            threads; other domains give the same points either way. See
+            the `threads` property.
         radius_map: a variable radius (library 1.3): a 2-D array-like of
             shape (h, w) of radii, each finite and > 0, spread over the
             domain: row 0 along y0, column 0 along x0, bilinear between
@@ -128,7 +129,7 @@ class Sampler:
                  radius_map: Any = None, radius_fn: Optional[RadiusFn] = None,
                  rmin: Optional[float] = None, rmax: Optional[float] = None,
                  domain: Any = None, mask: Any = None, fixed: Any = None,
-                 threads: int = 1) -> None:
+                 threads: Optional[int] = None) -> None:
         # What the callbacks raised during the current run()/step(), first
         # first. Shared by them; they hold the list, not self (no cycle).
         self._errors: List[BaseException] = []
@@ -190,7 +191,7 @@ class Sampler:
                 self._set_radius_fn(radius_fn, cast(float, rmin), cast(float, rmax))
             if progress is not None:
                 self.set_progress(progress)
-            if threads != 1:  # 1 is the library's default (and all before 1.5 had)
+            if threads is not None:  # None: never selected, the single-thread process
                 self.threads = threads
         except BaseException:
             self.close()
@@ -442,16 +443,19 @@ class Sampler:
 
     @property
     def threads(self) -> int:
-        """The threads a run may use (0 given: resolved to the core count).
-        Setting it is allowed at any time, between run() calls too, and never
-        changes the points; ValueError outside [0, 1024]."""
+        """The threads a run may use (0 given: resolved to the core count);
+        1 until set. Setting it before the first point selects the parallel
+        process; once selected it may change at any time, between run()
+        calls too, without changing the points. Setting it after points of
+        the single-thread process exist raises StateError; ValueError
+        outside [0, 1024]."""
         if "pds_threads" in _capi._missing:
             return 1  # a library before 1.5 runs on one thread
         return int(_capi.need("pds_threads")(self._h()))
 
     @threads.setter
     def threads(self, n: int) -> None:
-        n = _check_threads(n)
+        n = _check_threads(operator.index(n))  # None is not a count here
         self._check(_capi.need("pds_set_threads")(self._h(), n), "pds_set_threads")
 
     def verify(self) -> bool:

@@ -27,8 +27,10 @@ differences:
     mapped to it for the optimizer and back. Without scipy, "random-cd" and
     "lloyd" raise ImportError naming scipy (None works);
   - `workers` is accepted and ignored, as scipy does for this engine; the
-    keyword `threads` (not scipy's) is the library's thread count (1 by
-    default, 0: one per online core), which never changes the points;
+    keyword `threads` (not scipy's): None (default) runs the library's
+    single-thread process; an int selects its parallel process on that many
+    threads (0: one per core), whose points do not depend on the count but
+    differ from the default's;
   - once the space is full, random() returns an empty (0, 2) array;
   - the same seed gives other points than scipy's (another algorithm), and
     without optimization the points are the same however they are split into
@@ -130,17 +132,21 @@ class PoissonDisk:
             or SeedSequence, as scipy accepts; one 64-bit seed is taken from it
             when the engine is made and kept for reset(). Read it from `.seed`.
         rng: the newer scipy name for `seed` (give one of the two).
-        threads: the threads a run may use (not in scipy), 1 by default, 0
-            one per online core, at most 1024; the points never depend on it.
+        threads: not in scipy. None (default) runs the single-thread
+            process; an int selects the parallel process on that many
+            threads (0: one per core, at most 1024), whose points do not
+            depend on the count but differ from the default's. Settable;
+            copies and pickles keep it.
     """
 
-    threads = 1  # engines pickled before the keyword existed
+    _threads: Optional[int] = None  # engines pickled before the keyword existed
 
     def __init__(self, d: int = 2, *, radius: float = 0.05, hypersphere: str = "volume",
                  ncandidates: int = 30, optimization: Optional[str] = None,
                  l_bounds: Optional[Sequence[float]] = None,
                  u_bounds: Optional[Sequence[float]] = None,
-                 seed: SeedLike = None, rng: SeedLike = None, threads: int = 1) -> None:
+                 seed: SeedLike = None, rng: SeedLike = None,
+                 threads: Optional[int] = None) -> None:
         # scipy's checks first, in scipy's order and words (d, optimization,
         # hypersphere), so that a bad argument is reported as scipy reports it
         # whatever d is; then this engine's own limit, d = 2.
@@ -171,9 +177,9 @@ class PoissonDisk:
         if not np.all(self.l_bounds < self.u_bounds):
             raise ValueError("Bounds are not consistent 'l_bounds' < 'u_bounds'")
         self.seed = seed_to_int(rng if seed is None else seed)
-        self.threads = _check_threads(threads)
-        self.num_generated = 0
         self._sampler: Optional[Sampler] = None
+        self._threads = _check_threads(threads)
+        self.num_generated = 0
         self._full = False
         self._optimizer_rng = self._new_optimizer_rng()
 
@@ -186,8 +192,27 @@ class PoissonDisk:
         if self._sampler is None:
             box = (tuple(self.l_bounds.tolist()), tuple(self.u_bounds.tolist()))
             self._sampler = Sampler(self.radius, bounds=box, seed=self.seed,
-                                    threads=self.threads)
+                                    threads=self._threads)
         return self._sampler
+
+    @property
+    def threads(self) -> Optional[int]:
+        """None: the single-thread process; an int: the parallel process on
+        that many threads (0: one per core), as given."""
+        return self._threads
+
+    @threads.setter
+    def threads(self, n: Optional[int]) -> None:
+        # The engine's sampler must stay the one its copies rebuild from the
+        # seed and `threads`: a change it cannot take raises and changes nothing.
+        n = _check_threads(n)
+        if self._sampler is not None:
+            if n is None and self._threads is not None:
+                raise ValueError("threads=None cannot be set while the engine's pattern "
+                                 "comes from the parallel process; call reset() first")
+            if n is not None:
+                self._sampler.threads = n  # StateError after single-thread points
+        self._threads = n
 
     def random(self, n: Union[int, float] = 1, *, workers: int = 1) -> "NDArray[np.float64]":
         """The next n points, as a float64 array of shape (k, 2), k <= n.
@@ -289,6 +314,8 @@ class PoissonDisk:
             raise ValueError("this PoissonDisk engine was saved with libpoissondisk %s and "
                              "the library here is %s: its points would differ"
                              % (library, _capi.version()))
+        if "threads" in state:  # saved when it was a plain attribute
+            state["_threads"] = state.pop("threads")
         self.__dict__.update(state)
         self._sampler = None
         if made:
