@@ -451,6 +451,7 @@ check-alloc: $(ALLOC_BIN)
 	$(ALLOC_BIN) polygon
 	$(ALLOC_BIN) mask
 	$(ALLOC_BIN) field
+	$(ALLOC_BIN) threads
 	$(ALLOC_BIN)
 
 # ---- benchmark -----------------------------------------------------------------------

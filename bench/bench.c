@@ -7,6 +7,9 @@
  *   bridson      plain Bridson sampling, k = 30 (bridson.c)
  *   dart         grid dart throwing, stopped after a run of misses (dart_grid.c)
  *   periodic     this library on the unit torus (pds_set_periodic)
+ *   threads1     this library's parallel process on one thread (pds_set_threads 1)
+ *   threads      the same on one thread per online core (pds_set_threads 0):
+ *                the same points as threads1
  *   field        this library with a variable radius varying 1:4 across the
  *                square, r(x) = (R/2)(1 + 3x), whose maximal patterns hold
  *                about as many points as R does (pds_set_radius_fn); checked
@@ -98,9 +101,14 @@ static const char usage_text[] =
 
 /* "periodic" is the library on the unit torus (pds_set_periodic): same law,
  * no edges, the copies near the edges are its extra cost. */
-enum method { METHOD_POISSONDISK, METHOD_BRIDSON, METHOD_DART, METHOD_PERIODIC, METHOD_FIELD, METHOD_COUNT };
-static const char *const method_name[METHOD_COUNT] = {"poissondisk", "bridson", "dart", "periodic", "field"};
-static const char *const method_color[METHOD_COUNT] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"};
+enum method {
+    METHOD_POISSONDISK, METHOD_BRIDSON, METHOD_DART, METHOD_PERIODIC, METHOD_FIELD,
+    METHOD_THREADS1, METHOD_THREADS, METHOD_COUNT
+};
+static const char *const method_name[METHOD_COUNT] = {"poissondisk", "bridson", "dart", "periodic", "field",
+                                                      "threads1", "threads"};
+static const char *const method_color[METHOD_COUNT] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+                                                       "#17becf", "#8c564b"};
 
 /* The field method's radius: r0 (1 + 3x) over the unit square, 1:4. Its
  * maximal patterns hold about 0.6966 / 4 / r0^2 points (the mean of 1/r^2
@@ -173,8 +181,12 @@ __attribute__((noinline)) int bench_timed_region(enum method m, double radius, u
     switch (m) {
     case METHOD_POISSONDISK:
     case METHOD_PERIODIC:
+    case METHOD_THREADS1:
+    case METHOD_THREADS:
         rc = pds_create(&out->sampler, radius, seed);
         if (rc == 0 && m == METHOD_PERIODIC) rc = pds_set_periodic(out->sampler, 1);
+        if (rc == 0 && m == METHOD_THREADS1) rc = pds_set_threads(out->sampler, 1);
+        if (rc == 0 && m == METHOD_THREADS) rc = pds_set_threads(out->sampler, 0);
         if (rc == 0) rc = pds_run(out->sampler, 0, &out->count);
         if (rc != 0) snprintf(error, error_size, "%s", pds_errmsg(out->sampler));
         if (rc != 0 && out->sampler == NULL) snprintf(error, error_size, "%s", pds_strerror(rc));

@@ -30,16 +30,18 @@ WorkerPool::~WorkerPool() {
 void WorkerPool::serve(unsigned index) {
     std::size_t seen = 0;
     for (;;) {
-        const std::function<void(unsigned)>* task;
+        void (*call)(const void*, unsigned);
+        const void* task;
         {
             std::unique_lock<std::mutex> lock(mutex_);
             start_.wait(lock, [&] { return closing_ || generation_ != seen; });
             if (closing_) return;
             seen = generation_;
+            call = call_;
             task = task_;
         }
         try {
-            (*task)(index);
+            call(task, index);
         } catch (...) {
             helper_errors_[index - 1] = std::current_exception();
         }
@@ -48,10 +50,11 @@ void WorkerPool::serve(unsigned index) {
     }
 }
 
-void WorkerPool::run(const std::function<void(unsigned)>& task) {
+void WorkerPool::run_erased(void (*call)(const void*, unsigned), const void* task) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        task_ = &task;
+        call_ = call;
+        task_ = task;
         running_ = static_cast<unsigned>(threads_.size());
         ++generation_;
         for (std::exception_ptr& e : helper_errors_) e = nullptr;
@@ -59,13 +62,14 @@ void WorkerPool::run(const std::function<void(unsigned)>& task) {
     start_.notify_all();
     std::exception_ptr own;
     try {
-        task(0);
+        call(task, 0);
     } catch (...) {
         own = std::current_exception();
     }
     {
         std::unique_lock<std::mutex> lock(mutex_);
         done_.wait(lock, [&] { return running_ == 0; });
+        call_ = nullptr;
         task_ = nullptr;
     }
     if (own) std::rethrow_exception(own);

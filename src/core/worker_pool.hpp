@@ -18,7 +18,6 @@
 
 #include <cstddef>
 #include <exception>
-#include <functional>
 #include <vector>
 #if !defined(__wasi__)  // wasm32-wasi has no threads: the pool is its caller alone
 #include <condition_variable>
@@ -41,20 +40,30 @@ public:
     WorkerPool(const WorkerPool&) = delete;
     WorkerPool& operator=(const WorkerPool&) = delete;
 
+    // Never allocates: the task is called through a plain pointer (a
+    // std::function could allocate, and an epoch must not fail half-way).
+    template <class Task>
+    void run(const Task& task) {
+        run_erased([](const void* t, unsigned i) { (*static_cast<const Task*>(t))(i); }, &task);
+    }
+
 #if defined(__wasi__)
     unsigned size() const { return 1; }
-    void run(const std::function<void(unsigned)>& task) { task(0); }
+
+private:
+    void run_erased(void (*call)(const void*, unsigned), const void* task) { call(task, 0); }
 };
 #else
     unsigned size() const { return static_cast<unsigned>(threads_.size()) + 1; }
-    void run(const std::function<void(unsigned)>& task);
 
 private:
+    void run_erased(void (*call)(const void*, unsigned), const void* task);
     void serve(unsigned index);
 
     std::mutex mutex_;
     std::condition_variable start_, done_;
-    const std::function<void(unsigned)>* task_ = nullptr;
+    void (*call_)(const void*, unsigned) = nullptr;
+    const void* task_ = nullptr;
     std::size_t generation_ = 0;  // one per run()
     unsigned running_ = 0;        // helpers still in the current run
     bool closing_ = false;

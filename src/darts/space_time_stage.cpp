@@ -101,12 +101,10 @@ const Point* SpaceTimeDartStage::next(Rng&) {
 bool SpaceTimeDartStage::run_epoch() {
     if (active_.empty()) over_ = true;
     if (over_) return false;
-    if (!pool_ || pool_size_wanted_ != threads_) {
-        pool_.reset();
-        pool_ = std::make_unique<WorkerPool>(threads_);
-        pool_size_wanted_ = threads_;
-    }
-    const unsigned workers = pool_->size();
+    // Threads live for one epoch (a few milliseconds at least; starting
+    // them costs tens of microseconds): none is left between the calls.
+    WorkerPool pool(threads_);
+    const unsigned workers = pool.size();
     // Bands of rows, a few per worker: their count changes the work's
     // split, never its outcome.
     const auto rows = static_cast<std::int64_t>(grid_.rows());
@@ -126,7 +124,7 @@ bool SpaceTimeDartStage::run_epoch() {
         band.a1 = first(band.r1);
     }
     const auto each_band = [&](void (SpaceTimeDartStage::*step)(Band&)) {
-        pool_->run([&](unsigned w) {
+        pool.run([&](unsigned w) {
             for (std::size_t b = w; b < n; b += workers) (this->*step)(bands_[b]);
         });
     };
@@ -140,7 +138,7 @@ bool SpaceTimeDartStage::run_epoch() {
     }
     pending_.clear();
     pending_.reserve(candidates);
-    pool_->run([&](unsigned w) {
+    pool.run([&](unsigned w) {
         for (std::size_t b = w; b < n; b += workers) list_candidates(bands_[b], static_cast<std::uint32_t>(b), true);
     });
     // (2) The outcomes; (3) numbered by time, into the grid; (4) the cells left.
@@ -148,7 +146,7 @@ bool SpaceTimeDartStage::run_epoch() {
         each_band(&SpaceTimeDartStage::resolve);
     } catch (...) {
         // Only decide()'s stack can fail to grow: take the lists out again.
-        pool_->run([&](unsigned w) {
+        pool.run([&](unsigned w) {
             for (std::size_t b = w; b < n; b += workers) list_candidates(bands_[b], 0, false);
         });
         throw;
@@ -365,7 +363,6 @@ void SpaceTimeDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {
     // Everything the epochs used goes before the Jones stage's mesh grows.
     over_ = true;
     grid_.release();
-    pool_.reset();
     std::vector<Band>().swap(bands_);
     std::vector<std::uint32_t>().swap(active_);
     std::vector<std::uint16_t>().swap(masks_);

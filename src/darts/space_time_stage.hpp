@@ -96,7 +96,8 @@ private:
     void write_points(Band& band);
     void drop_covered(Band& band);
     const Point& numbered_point(std::uint32_t index) const {
-        return index < pending_base_ ? points_[index] : pending_[index - pending_base_];
+        // Point k of the last epoch is points_[k] once handed out.
+        return index < points_.size() ? points_[index] : pending_[index - pending_base_];
     }
 
     Rectangle domain_;
@@ -105,8 +106,6 @@ private:
     SpaceTimeGrid grid_;
     CurveOrder curve_;
     unsigned threads_ = 1;
-    std::unique_ptr<WorkerPool> pool_;
-    unsigned pool_size_wanted_ = 0;
     std::vector<Band> bands_;
     std::vector<std::uint32_t> active_;  // active cells, in increasing order
     std::vector<std::uint16_t> masks_;   // each cell's sub-squares known covered (one disk each)

@@ -62,7 +62,7 @@ struct config {
     int periodic; /* the torus: copies allocate as points are added */
     int shape;    /* the domain: the rectangle, a polygon, a mask, a polygon with a field */
 };
-enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD };
+enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS };
 static const struct config kSmall = {"small", 0.05, 0.035, 100, 50, 1, 0, RECTANGLE};
 static const struct config kLarge = {"large", 0.01, 0.007, 2000, 500, 0, 0, RECTANGLE};
 static const struct config kTorus = {"torus", 0.05, 0.035, 100, 50, 1, 1, RECTANGLE};
@@ -72,6 +72,10 @@ static const struct config kPolygon = {"polygon", 0.05, 0.035, 100, 50, 0, 0, PO
 static const struct config kMask = {"mask", 0.05, 0.035, 100, 50, 0, 0, MASK};
 /* The field's rmax is 0.06: a refine to 0.045 scales every radius by 3/4. */
 static const struct config kField = {"field", 0.06, 0.045, 100, 50, 0, 0, POLYGON_FIELD};
+/* The parallel opening on 2 threads: rows enough for two bands of darts,
+ * allocations made on the worker threads too (a failure there is rethrown
+ * in the call; a thread that cannot start is done without). */
+static const struct config kThreads = {"threads", 0.025, 0.02, 300, 100, 0, 0, THREADS};
 static const struct config *cfg = &kLarge;
 #define RADIUS (cfg->radius)
 #define REFINED (cfg->refined)
@@ -329,7 +333,8 @@ static int set_domain_part(struct trial *t, pds_sampler *s, int part)
     unsigned char inside[64];
     double xy[100];
     size_t ends[2];
-    const char *what = part == 0 ? "pds_set_polygon" : part == 1 ? "pds_set_mask" : "pds_set_radius_fn";
+    const char *what = part == 0 ? "pds_set_polygon" : part == 1 ? "pds_set_mask"
+                     : part == 2 ? "pds_set_radius_fn" : "pds_set_threads";
     const double radius = pds_radius(s);
     int i, tries, rc = 0;
     for (i = 0; i < 64; i++) inside[i] = (unsigned char)(rows[i / 8] >> (i % 8) & 1);
@@ -341,8 +346,10 @@ static int set_domain_part(struct trial *t, pds_sampler *s, int part)
             rc = pds_set_polygon(s, xy, ends, 2);
         else if (part == 1)
             rc = pds_set_mask(s, 8, 8, inside);
-        else
+        else if (part == 2)
             rc = pds_set_radius_fn(s, field_fn, NULL, 0.04, 0.06);
+        else
+            rc = pds_set_threads(s, 2);
         alloc_disarm();
         if (rc != PDS_ENOMEM) break;
         check_injected(t, injected, s, what);
@@ -360,6 +367,7 @@ static void do_shape(struct trial *t, pds_sampler *s)
     if (cfg->shape == POLYGON || cfg->shape == POLYGON_FIELD) rc = set_domain_part(t, s, 0);
     if (cfg->shape == MASK) rc = set_domain_part(t, s, 1);
     if (cfg->shape == POLYGON_FIELD && rc == 0) rc = set_domain_part(t, s, 2);
+    if (cfg->shape == THREADS) rc = set_domain_part(t, s, 3);
     outcome(t, s, rc, pds_free_area(s), "pds_set_polygon/mask");
 }
 
@@ -499,6 +507,19 @@ static long nth_try(long m, long j, int all)
     return SPAN + 1 + (j - SPAN + 1) * (m - 2 * SPAN) / (SPAN + 1);
 }
 
+/* glibc keeps the stacks of joined threads for later ones, each with a
+ * block of its own (the thread's TLS vector): made once, unarmed, before
+ * the sequences, they are not counted as blocks a call left live. */
+static void warm_up_threads(void)
+{
+    pds_sampler *s = NULL;
+    if (pds_create(&s, 0.02, 1) != 0 || pds_set_threads(s, 2) != 0 || pds_run(s, 0, NULL) != PDS_DONE) {
+        printf("alloc-fail: the warm-up run failed\n");
+        exit(1);
+    }
+    pds_destroy(s);
+}
+
 int main(int argc, char **argv)
 {
     static struct reference ref;
@@ -519,10 +540,14 @@ int main(int argc, char **argv)
         cfg = &kMask;
     else if (argc > 1 && strcmp(argv[1], "field") == 0)
         cfg = &kField;
+    else if (argc > 1 && strcmp(argv[1], "threads") == 0)
+        cfg = &kThreads;
     else if (argc > 1) {
-        printf("usage: alloc_fail [small|torus|polygon|mask|field]\n");
+        printf("usage: alloc_fail [small|torus|polygon|mask|field|threads]\n");
         return 2;
     }
+    if (cfg->shape == THREADS)
+        warm_up_threads();
     all = cfg->every_k || (env != NULL && env[0] != '\0' && strcmp(env, "0") != 0);
     printf("alloc-fail: sequence \"%s\": R = %g, refined to %g\n", cfg->name, cfg->radius, cfg->refined);
 

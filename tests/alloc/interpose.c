@@ -3,7 +3,8 @@
  *
  * No function here may allocate through malloc itself: the live set is a
  * fixed table, and everything forwards to glibc's __libc_* entry points.
- * Single-threaded by design, like the test.
+ * The library's worker threads (pds_set_threads) allocate too: every entry
+ * point holds one spin lock while it counts, fails or tracks a block.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -77,6 +78,16 @@ static int live_remove(void *p)
     return 1;
 }
 
+static char lock_word;
+
+static void lock(void)
+{
+    while (__atomic_test_and_set(&lock_word, __ATOMIC_ACQUIRE)) {
+    }
+}
+
+static void unlock(void) { __atomic_clear(&lock_word, __ATOMIC_RELEASE); }
+
 /* Called before every allocation: 1 means "fail this one". */
 static int must_fail(void)
 {
@@ -98,34 +109,50 @@ static void *tracked(void *p)
 
 void *malloc(size_t size)
 {
-    return must_fail() ? NULL : tracked(__libc_malloc(size));
+    void *p;
+    lock();
+    p = must_fail() ? NULL : tracked(__libc_malloc(size));
+    unlock();
+    return p;
 }
 
 void *calloc(size_t n, size_t size)
 {
-    return must_fail() ? NULL : tracked(__libc_calloc(n, size));
+    void *p;
+    lock();
+    p = must_fail() ? NULL : tracked(__libc_calloc(n, size));
+    unlock();
+    return p;
 }
 
 void *realloc(void *p, size_t size)
 {
     void *q;
     int was_tracked;
-    if (must_fail())
+    lock();
+    if (must_fail()) {
+        unlock();
         return NULL; /* the old block stays valid, as with a real failure */
+    }
     q = __libc_realloc(p, size);
-    if (q == NULL && size != 0)
+    if (q == NULL && size != 0) {
+        unlock();
         return NULL;
+    }
     was_tracked = p != NULL && live_remove(p);
     if (q != NULL && (was_tracked || armed))
         live_add(q);
+    unlock();
     return q;
 }
 
 void free(void *p)
 {
+    lock();
     if (p != NULL)
         live_remove(p);
     __libc_free(p);
+    unlock();
 }
 
 int posix_memalign(void **out, size_t alignment, size_t size)
@@ -133,9 +160,9 @@ int posix_memalign(void **out, size_t alignment, size_t size)
     void *p;
     if (alignment % sizeof(void *) != 0 || (alignment & (alignment - 1)) != 0)
         return EINVAL;
-    if (must_fail())
-        return ENOMEM;
-    p = tracked(__libc_memalign(alignment, size));
+    lock();
+    p = must_fail() ? NULL : tracked(__libc_memalign(alignment, size));
+    unlock();
     if (p == NULL)
         return ENOMEM;
     *out = p;
@@ -144,12 +171,20 @@ int posix_memalign(void **out, size_t alignment, size_t size)
 
 void *aligned_alloc(size_t alignment, size_t size)
 {
-    return must_fail() ? NULL : tracked(__libc_memalign(alignment, size));
+    void *p;
+    lock();
+    p = must_fail() ? NULL : tracked(__libc_memalign(alignment, size));
+    unlock();
+    return p;
 }
 
 void *memalign(size_t alignment, size_t size)
 {
-    return must_fail() ? NULL : tracked(__libc_memalign(alignment, size));
+    void *p;
+    lock();
+    p = must_fail() ? NULL : tracked(__libc_memalign(alignment, size));
+    unlock();
+    return p;
 }
 
 void alloc_reset(void)
