@@ -256,6 +256,10 @@ void SpaceTimeDartStage::resolve(Band& band) {
     const std::size_t b = static_cast<std::size_t>(&band - bands_.data());
     for (std::size_t k = 0; k < band.cands.size(); ++k)
         if (decide(b, k, band.stack)) band.accepted.push_back(Band::Accepted{band.cands[k].t, static_cast<std::uint32_t>(k)});
+    // By time, for merge(): each band sorts its own, side by side.
+    std::sort(band.accepted.begin(), band.accepted.end(), [&](const Band::Accepted& x, const Band::Accepted& y) {
+        return x.t != y.t ? x.t < y.t : earlier(band.cands[x.k], band.cands[y.k]);
+    });
 }
 
 bool SpaceTimeDartStage::decide(std::size_t b0, std::size_t k0, std::vector<std::uint64_t>& stack) {
@@ -311,14 +315,9 @@ bool SpaceTimeDartStage::decide(std::size_t b0, std::size_t k0, std::vector<std:
 }
 
 void SpaceTimeDartStage::merge() {
-    // The bands' accepted candidates by time, numbered: a merge of a few
-    // sorted lists.
-    for (Band& band : bands_) {
-        std::sort(band.accepted.begin(), band.accepted.end(), [&](const Band::Accepted& x, const Band::Accepted& y) {
-            return x.t != y.t ? x.t < y.t : earlier(band.cands[x.k], band.cands[y.k]);
-        });
-        band.head = 0;
-    }
+    // The bands' accepted candidates by time (each band's list sorted by
+    // resolve()), numbered: a merge of a few sorted lists.
+    for (Band& band : bands_) band.head = 0;
     pending_base_ = points_.size();
     next_pending_ = 0;
     for (;;) {
