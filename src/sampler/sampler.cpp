@@ -241,7 +241,9 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
     const bool grows = varying_field();
     const std::size_t bound = grows ? field_count_bound() : smallest_frame().count_bound_points();
     if (grows) {
-        const std::size_t asked = max_new == 0 ? (n == 0 ? bound : 0) : std::min(n + max_new, std::max(bound, n));
+        // After the first point a bounded run is not judged either: a bound
+        // that refused count + max_new would refuse a maximal pattern.
+        const std::size_t asked = n != 0 ? 0 : max_new == 0 ? bound : std::min(max_new, bound);
         if (asked > Frame::max_points())
             throw LimitError(Limit::too_many_points, smallest_frame().user_radius(), JudgedRadius::field_smallest);
         prepare(n + 1);
