@@ -3,11 +3,15 @@
 // number of threads nor on how a run is split into calls (the hand-over's
 // cells measured side by side included); the epochs'
 // greedy set keeps every pair at least R apart; cells certified covered
-// really are; and the whole run ends maximal and verified.
+// really are; the whole run ends maximal and verified; and the worker pool
+// runs with the threads it could start.
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <vector>
 
+#include "alloc_hook.hpp"
+#include "core/worker_pool.hpp"
 #include "darts/space_time_grid.hpp"
 #include "darts/space_time_stage.hpp"
 #include "core/predicates.hpp"
@@ -178,6 +182,26 @@ START_TEST(certified_sub_squares_lie_in_the_disk) {
 }
 END_TEST
 
+START_TEST(a_thread_that_cannot_start_is_done_without) {
+    // The pool's allocations: its error slots, its thread list, then one
+    // state per thread started. Failing the second thread's leaves a pool
+    // of two workers, which still runs every task index it reports.
+    if (!alloc_hook::in_effect()) return;  // under Valgrind
+    alloc_hook::arm(4);
+    pds::WorkerPool pool(4);
+    alloc_hook::disarm();
+    ck_assert_uint_eq(pool.size(), 2);
+    std::atomic<unsigned> ran{0};
+    pool.run([&](unsigned w) { ran.fetch_or(1u << w); });
+    ck_assert_uint_eq(ran.load(), 3u);
+    // And none at all when the first allocation fails: the caller alone.
+    alloc_hook::arm(1);
+    pds::WorkerPool alone(4);
+    alloc_hook::disarm();
+    ck_assert_uint_eq(alone.size(), 1);
+}
+END_TEST
+
 Suite* space_time_stage_suite() {
     Suite* s = suite_create("space_time_stage");
     TCase* t = tcase_create("parallel opening");
@@ -188,6 +212,7 @@ Suite* space_time_stage_suite() {
     tcase_add_test(t, the_opening_differs_from_the_default_one);
     tcase_add_test(t, epochs_keep_points_apart_and_carry_most_of_the_pattern);
     tcase_add_test(t, certified_sub_squares_lie_in_the_disk);
+    tcase_add_test(t, a_thread_that_cannot_start_is_done_without);
     suite_add_tcase(s, t);
     return s;
 }
