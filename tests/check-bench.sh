@@ -58,12 +58,12 @@ rc=$?
 expect "bench exits 0 (got $rc; stderr: $(head -c 300 "$tmp/b.err"))" [ "$rc" -eq 0 ]
 expect "the table is printed" grep -q '^method  *N  *points' "$tmp/b.out"
 expect "the table has a row per method and size" \
-    [ "$(grep -cE '^(poissondisk|bridson|dart|periodic|field) +(1000|3000) ' "$tmp/b.out")" -eq 10 ]
+    [ "$(grep -cE '^(poissondisk|bridson|dart|periodic|field|threads1|threads) +(1000|3000) ' "$tmp/b.out")" -eq 14 ]
 expect "the table gives the speed ratios" \
-    [ "$(grep -c 'time relative to poissondisk:  bridson [0-9.]*  dart [0-9.]*  periodic [0-9.]*  field [0-9.]*$' "$tmp/b.out")" -eq 2 ]
+    [ "$(grep -c 'time relative to poissondisk:  bridson [0-9.]*  dart [0-9.]*  periodic [0-9.]*  field [0-9.]*  threads1 [0-9.]*  threads [0-9.]*$' "$tmp/b.out")" -eq 2 ]
 expect "the CSV exists" [ -s "$tmp/b.csv" ]
 expect "the CSV header is the documented one" [ "$(head -n 1 "$tmp/b.csv")" = "$header" ]
-expect "the CSV has 10 data rows" [ "$(wc -l < "$tmp/b.csv" | tr -d ' ')" -eq 11 ]
+expect "the CSV has 14 data rows" [ "$(wc -l < "$tmp/b.csv" | tr -d ' ')" -eq 15 ]
 
 # The chunked section (bench/chunked.c), at the largest size: one pds_run against
 # pds_run(s, 1) and pds_step loops, which must give the same points.
@@ -74,7 +74,7 @@ expect "the chunked ways give the same points" \
     [ "$(grep -c 'until done .*x  same points$' "$tmp/b.out")" -eq 2 ]
 
 csv_all "every row has 12 fields" 'NF == 12'
-csv_all "every row is one of the five methods" '$1 == "poissondisk" || $1 == "bridson" || $1 == "dart" || $1 == "periodic" || $1 == "field"'
+csv_all "every row is one of the seven methods" '$1 == "poissondisk" || $1 == "bridson" || $1 == "dart" || $1 == "periodic" || $1 == "field" || $1 == "threads1" || $1 == "threads"'
 csv_all "N_target is 1000 or 3000" '$2 == 1000 || $2 == 3000'
 for m in poissondisk bridson dart; do
     for n in 1000 3000; do
@@ -93,6 +93,12 @@ csv_all "every method's minimum-distance check passed" '$12 == 1'
 # The library: maximal, so no probe is uncovered; and the RSA count (R was
 # chosen for about N points; small squares have a few more at the edges).
 csv_all "poissondisk leaves nothing uncovered" '$1 != "poissondisk" || ($10 == 0 && $11 == 0)'
+# The parallel process: maximal too, and the same points on one thread as on all.
+csv_all "the parallel process leaves nothing uncovered" '($1 != "threads1" && $1 != "threads") || ($10 == 0 && $11 == 0)'
+for n in 1000 3000; do
+    expect "threads1 and threads give the same count at N=$n" \
+        [ "$(field threads1 $n N_points)" = "$(field threads $n N_points)" ]
+done
 csv_all "poissondisk gives about N points" '$1 != "poissondisk" || ($3 >= 0.97 * $2 && $3 <= 1.08 * $2)'
 # The 1:4 field's radius was chosen for about N points too (checked maximal
 # by pds_verify in the benchmark itself).
@@ -115,7 +121,7 @@ done
 expect "the SVG exists" [ -s "$tmp/b.svg" ]
 expect "the SVG is one <svg> element" \
     awk 'NR == 1 && !/^<\?xml / { exit 1 } /<svg / { o++ } /<\/svg>/ { c++ } END { exit !(o == 1 && c == 1) }' "$tmp/b.svg"
-expect "the SVG has a line per method" [ "$(grep -c '<polyline' "$tmp/b.svg")" -eq 5 ]
+expect "the SVG has a line per method" [ "$(grep -c '<polyline' "$tmp/b.svg")" -eq 7 ]
 for m in poissondisk bridson dart; do
     expect "the SVG legend names $m" grep -q ">$m</text>" "$tmp/b.svg"
 done
