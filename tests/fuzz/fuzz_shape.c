@@ -143,6 +143,27 @@ static double slab_area(const fz_shape *sh, int *crossing)
     return total;
 }
 
+/* Whether a ring turns straight back at a vertex (a zero-width spike): the
+ * library drops such tips as it reads the rings, so its perimeter (and the
+ * count mode's radius) is not the harness's. */
+static int has_spike_tip(const fz_shape *sh)
+{
+    size_t r, s = 0;
+    for (r = 0; r < sh->nrings; s = sh->ends[r], r++) {
+        const size_t e = sh->ends[r], n = e - s;
+        size_t v;
+        for (v = 0; v < n && n >= 3; v++) {
+            const double *p = &sh->xy[2 * (s + (v + n - 1) % n)], *q = &sh->xy[2 * (s + v)],
+                         *t = &sh->xy[2 * (s + (v + 1) % n)];
+            const double ax = q[0] - p[0], ay = q[1] - p[1], bx = t[0] - q[0], by = t[1] - q[1];
+            if ((ax != 0.0 || ay != 0.0) && (bx != 0.0 || by != 0.0) && ax * by - ay * bx == 0.0 &&
+                ax * bx + ay * by < 0.0)
+                return 1;
+        }
+    }
+    return 0;
+}
+
 /* The box, the normalized copy and the measures, from xy and ends. */
 static void measure(fz_shape *sh)
 {
@@ -166,7 +187,7 @@ static void measure(fz_shape *sh)
     }
     sh->frac = slab_area(sh, &crossing);
     sh->crossing = crossing;
-    sh->area_known = !crossing && sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3];
+    sh->area_known = !crossing && !has_spike_tip(sh) && sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3];
 }
 
 /* Copies of the rings (cleaned as the header allows: consecutive repeats and a
