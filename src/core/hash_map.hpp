@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/rng.hpp"
+
 namespace pds {
 
 class HashMap {
@@ -62,21 +64,16 @@ private:
         std::uint32_t value;
     };
 
-    // splitmix64's finalizer: spreads nearby grid cells over the table.
-    static std::uint64_t mix(std::uint64_t x) {
-        x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-        x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-        return x ^ (x >> 31);
-    }
     std::size_t mask() const { return slots_.size() - 1; }
-    std::size_t index(std::uint64_t key) const { return static_cast<std::size_t>(mix(key)) & mask(); }
+    // mix64 spreads nearby grid cells over the table.
+    std::size_t index(std::uint64_t key) const { return static_cast<std::size_t>(mix64(key)) & mask(); }
 
     void rehash(std::size_t cap) {
         std::vector<Slot> fresh(cap, Slot{kEmptyKey, 0});
         const std::size_t m = cap - 1;
         for (const Slot& s : slots_) {
             if (s.key == kEmptyKey) continue;
-            std::size_t i = static_cast<std::size_t>(mix(s.key)) & m;
+            std::size_t i = static_cast<std::size_t>(mix64(s.key)) & m;
             while (fresh[i].key != kEmptyKey) i = (i + 1) & m;
             fresh[i] = s;
         }

@@ -11,6 +11,15 @@
 
 namespace pds {
 
+// splitmix64's finalizer (Steele, Lea and Flood 2014): every bit of x moves
+// about half the bits of the result. The generator's seeding, the per-cell
+// dart streams and the hash tables use this one.
+inline std::uint64_t mix64(std::uint64_t x) {
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+}
+
 class Rng {
 public:
     explicit Rng(std::uint64_t seed) {
@@ -34,12 +43,7 @@ public:
 
 private:
     static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-    static std::uint64_t splitmix64(std::uint64_t& state) {
-        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
+    static std::uint64_t splitmix64(std::uint64_t& state) { return mix64(state += 0x9E3779B97F4A7C15ull); }
 
     std::uint64_t s_[4];
 };

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "core/huge_pages.hpp"
+#include "core/rng.hpp"
 #include "core/prefetch.hpp"
 
 namespace pds {
@@ -123,12 +124,8 @@ private:
         std::size_t cell;
         std::uint64_t word;  // 0: a free slot
     };
-    // splitmix64's finalizer: spreads neighbouring cells over the table.
-    static std::size_t mix(std::uint64_t x) {
-        x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-        x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-        return static_cast<std::size_t>(x ^ (x >> 31));
-    }
+    // mix64 spreads neighbouring cells over the table.
+    static std::size_t mix(std::uint64_t x) { return static_cast<std::size_t>(mix64(x)); }
     std::size_t slot_of(std::size_t cell) const { return mix(cell) & mask_; }
 
     std::vector<Slot> slots_;

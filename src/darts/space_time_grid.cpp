@@ -26,11 +26,6 @@ SpaceTimeGrid::SpaceTimeGrid(const Box& box, double radius) : box_(box), r_(radi
     cells_ = DenseCells(stride_ * padded_rows);
 }
 
-SpaceTimeGrid::Aim SpaceTimeGrid::aim(const Point& p) const {
-    const double fx = (p.x - box_.x0) * inv_side_, fy = (p.y - box_.y0) * inv_side_;
-    return aim_in(p, static_cast<std::int64_t>(clamped_cell(fx, cols_)), static_cast<std::int64_t>(clamped_cell(fy, rows_)));
-}
-
 SpaceTimeGrid::Aim SpaceTimeGrid::aim_in(const Point& p, std::int64_t col, std::int64_t row) const {
     using darts::kPad;
     Aim a;

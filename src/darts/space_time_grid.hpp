@@ -46,7 +46,6 @@ public:
     std::size_t rows() const { return rows_; }
     std::size_t cell_count() const { return cols_ * rows_; }
     double side() const { return side_; }
-    double radius() const { return r_; }
     double cell_x0(std::int64_t col) const { return box_.x0 + static_cast<double>(col) * side_; }
     double cell_y0(std::int64_t row) const { return box_.y0 + static_cast<double>(row) * side_; }
     std::size_t padded(std::int64_t col, std::int64_t row) const {
@@ -54,9 +53,8 @@ public:
     }
     std::size_t stride() const { return stride_; }
 
-    Aim aim(const Point& p) const;
-    // The same for a point of the closed cell in column col, row row (a dart
-    // drawn in it may round onto its far side: it stays the cell's).
+    // The place of a point of the closed cell in column col, row row (a
+    // dart drawn in it may round onto its far side: it stays the cell's).
     Aim aim_in(const Point& p, std::int64_t col, std::int64_t row) const;
     Word load(std::size_t cell) const { return cells_.load(cell); }
     // Asks for the rows of the 5 x 5 block around a cell ahead of its reads.

@@ -161,7 +161,6 @@ bool SpaceTimeDartStage::run_epoch() {
     }
     active_.resize(kept);
     ++epoch_;
-    thrown_ += thrown;
     if (static_cast<double>(pending_.size()) < kStopAcceptance * static_cast<double>(thrown) || epoch_ == kMaxEpochs)
         over_ = true;
     return !pending_.empty();

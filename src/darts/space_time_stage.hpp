@@ -71,9 +71,7 @@ public:
     VerifyReport verify() const override;
 
     // For tests and bench/phases.cpp.
-    std::size_t darts_thrown() const { return thrown_; }
     std::size_t epochs() const { return epoch_; }
-    std::size_t active_cells() const { return active_.size(); }
     const std::vector<Point>& points() const { return points_; }
 
     // A candidate: a dart that no earlier epoch's point covers.
@@ -112,7 +110,7 @@ private:
     std::vector<Point> points_;          // handed out
     std::vector<Point> pending_;         // the last epoch's points, by time
     std::size_t pending_base_ = 0, next_pending_ = 0;
-    std::size_t epoch_ = 0, thrown_ = 0;
+    std::size_t epoch_ = 0;
     bool over_ = false;
 };
 

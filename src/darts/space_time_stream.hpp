@@ -3,8 +3,8 @@
 //
 // A counter-based stream: its state is a hash of (seed, cell, epoch), so a
 // cell's darts are the same whichever thread draws them, in whatever order,
-// and a cell that is never asked costs nothing. splitmix64 (Steele, Lea and
-// Flood 2014) steps the state and mixes it; the seed is salted so that these
+// and a cell that is never asked costs nothing. splitmix64 steps the state
+// and mixes it (mix64, rng.hpp); the seed is salted so that these
 // streams share nothing with the handle's generator (rng.hpp), which the
 // Jones loop keeps using after the hand-over.
 #ifndef PDS_SPACE_TIME_STREAM_HPP
@@ -12,19 +12,21 @@
 
 #include <cstdint>
 
+#include "core/rng.hpp"
+
 namespace pds {
 
 class SpaceTimeStream {
 public:
     SpaceTimeStream(std::uint64_t seed, std::uint64_t cell, std::uint64_t epoch) {
-        std::uint64_t s = mix(seed ^ 0x5DA47D5C0FFEE123ull);
-        s = mix(s + (cell + 1) * 0x9E3779B97F4A7C15ull);
-        state_ = mix(s ^ ((epoch + 1) * 0xD1B54A32D192ED03ull));
+        std::uint64_t s = mix64(seed ^ 0x5DA47D5C0FFEE123ull);
+        s = mix64(s + (cell + 1) * 0x9E3779B97F4A7C15ull);
+        state_ = mix64(s ^ ((epoch + 1) * 0xD1B54A32D192ED03ull));
     }
 
     std::uint64_t next_u64() {
         state_ += 0x9E3779B97F4A7C15ull;
-        return mix(state_);
+        return mix64(state_);
     }
     // Uniform on [0, 1), multiples of 2^-53.
     double next_double() { return static_cast<double>(next_u64() >> 11) * 0x1.0p-53; }
@@ -44,12 +46,6 @@ public:
     }
 
 private:
-    static std::uint64_t mix(std::uint64_t z) {
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-
     std::uint64_t state_;
 };
 

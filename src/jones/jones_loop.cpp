@@ -3,6 +3,7 @@
 #include "jones/jones_loop.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <new>
 #include <stdexcept>
@@ -98,30 +99,23 @@ bool JonesLoop<Space, Rule>::measure_cells(SiteIndex first, SiteIndex last) {
 template <class Space, class Rule>
 bool JonesLoop<Space, Rule>::measure_all_cells(const Poll& poll) {
     const SiteIndex sites = dt_.vertex_count() - Delaunay::kGhosts;
-    bool valid = true;
     // A block of Poll::kEvery sites a worker between the polls. Each cell
-    // is measured from the mesh alone (only the plane's rectangle: a
-    // polygon's cutter keeps scratch), into its own leaf.
+    // is measured from the mesh alone into its own leaf, so the plane's
+    // cells can be measured side by side (a polygon's cutter keeps scratch,
+    // the torus may widen its copies: one worker, the caller).
     const unsigned threads = Space::kMeasuresSideBySide && sites >= 4 * Poll::kEvery ? threads_ : 1;
-    if (threads > 1) {
-        WorkerPool pool(threads);
-        const SiteIndex per = static_cast<SiteIndex>(Poll::kEvery), block = per * pool.size();
-        for (SiteIndex start = 0; start < sites; start += block) {
-            poll();
-            pool.run([&](unsigned w) {
-                const SiteIndex lo = std::min(sites, start + w * per), hi = std::min(sites, lo + per);
-                if (!measure_cells(lo, hi)) throw std::logic_error("a plane cell measured as invalid");
-            });
-        }
-    } else {
-        for (SiteIndex start = 0; start < sites; start += static_cast<SiteIndex>(Poll::kEvery)) {
-            poll();
-            const SiteIndex end = std::min(sites, start + static_cast<SiteIndex>(Poll::kEvery));
-            if (!measure_cells(start, end)) valid = false;
-        }
+    WorkerPool pool(threads);
+    std::atomic<bool> valid{true};
+    const SiteIndex per = static_cast<SiteIndex>(Poll::kEvery), block = per * pool.size();
+    for (SiteIndex start = 0; start < sites; start += block) {
+        poll();
+        pool.run([&](unsigned w) {
+            const SiteIndex lo = std::min(sites, start + w * per), hi = std::min(sites, lo + per);
+            if (!measure_cells(lo, hi)) valid.store(false, std::memory_order_relaxed);
+        });
     }
     tree_.rebuild();
-    return valid;
+    return valid.load(std::memory_order_relaxed);
 }
 
 template <class Space, class Rule>

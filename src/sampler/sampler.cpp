@@ -98,9 +98,7 @@ void Sampler::set_threads(unsigned n) {
         forget_stages();
         parallel_ = true;
     }
-    threads_ = n == 0 ? 1 : n;
-    if (darts_) darts_->set_threads(threads_);
-    if (jones_) jones_->set_threads(threads_);
+    threads_ = n == 0 ? 1 : n;  // the stages learn it in prepare(), before each call adds points
 }
 
 void Sampler::skip_dart_stage() {
