@@ -151,6 +151,13 @@ run tstats --radius 0.1 --domain -2 1 3 2.5 --periodic --stats
 expect "--periodic --stats: the distances wrap around" \
     py stats "$tmp/tstats.err" "$tmp/tstats.out" 0.1 -2 1 3 2.5 1
 run stats1 --radius 0.05 --max-points 1 --stats
+# A strip far thinner than R: one row of cells, so the search for a nearest
+# neighbour must widen along the strip only (widening by the strip's height
+# took hours); the timeout turns such a search into a failure.
+timeout 120 "$cli" --radius 0.001 --domain 0 0 2 5e-8 --stats > "$tmp/thin.out" 2> "$tmp/thin.err"
+rc=$?
+expect "--stats on a strip 5e-5 R high: exits 0 (got $rc), figures as brute force" \
+    eval '[ "$rc" -eq 0 ] && py stats "$tmp/thin.err" "$tmp/thin.out" 0.001 0 0 2 5e-8 0'
 expect "--stats with one point: min_dist=- mean_nn=-" \
     grep -q 'N=1 .* min_dist=- mean_nn=- ' "$tmp/stats1.err"
 # At the ends of the double range: squared distances and areas in user units would

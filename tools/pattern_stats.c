@@ -74,35 +74,49 @@ static double nearest_in_cell(const struct grid *g, const double *radii, size_t 
 /*
  * The nearest neighbour of point i, searched ring by ring around its cell:
  * its distance; with radii, the least distance in units of the earlier
- * point's radius (rmax the largest radius).
+ * point's radius (rmax the largest radius). Off the torus a ring visits only
+ * the cells inside the grid, and once the rings have passed the grid's
+ * edges along one axis the distance still to come grows by the other
+ * axis's side alone (a thin domain: one row of cells, far taller than wide).
  */
 static double nearest(const struct grid *g, size_t i, const double *radii, double rmax)
 {
     long cx = cell_of(g->xy[2 * i], g->x0, g->cw, g->nx);
     long cy = cell_of(g->xy[2 * i + 1], g->y0, g->ch, g->ny);
-    long widest = g->nx > g->ny ? g->nx : g->ny, ring, a;
-    double best = HUGE_VAL, side = g->cw < g->ch ? g->cw : g->ch, reach;
+    long widest = g->nx > g->ny ? g->nx : g->ny, ring, a, lo, hi;
+    double best = HUGE_VAL, side, reach;
+    int more_x, more_y;
 
     for (ring = 0;; ring++) {
         if (ring == 0) {
             best = nearest_in_cell(g, radii, i, cx, cy, best);
         } else {
-            for (a = -ring; a <= ring; a++) {
+            lo = g->periodic ? -ring : (-ring > -cx ? -ring : -cx);
+            hi = g->periodic ? ring : (ring < g->nx - 1 - cx ? ring : g->nx - 1 - cx);
+            for (a = lo; a <= hi; a++) {
                 best = nearest_in_cell(g, radii, i, cx + a, cy - ring, best);
                 best = nearest_in_cell(g, radii, i, cx + a, cy + ring, best);
             }
-            for (a = -ring + 1; a <= ring - 1; a++) {
+            lo = g->periodic ? -ring + 1 : (-ring + 1 > -cy ? -ring + 1 : -cy);
+            hi = g->periodic ? ring - 1 : (ring - 1 < g->ny - 1 - cy ? ring - 1 : g->ny - 1 - cy);
+            for (a = lo; a <= hi; a++) {
                 best = nearest_in_cell(g, radii, i, cx - ring, cy + a, best);
                 best = nearest_in_cell(g, radii, i, cx + ring, cy + a, best);
             }
         }
+        /* Every cell seen: on a torus once 2 ring + 1 spans the grid. */
+        if (g->periodic ? 2 * ring + 1 >= widest : ring >= widest)
+            break;
+        /* Whether the next ring has cells in the grid along each axis. */
+        more_x = g->periodic || cx - ring > 0 || cx + ring < g->nx - 1;
+        more_y = g->periodic || cy - ring > 0 || cy + ring < g->ny - 1;
+        if (!more_x && !more_y)
+            break;
+        side = !more_x ? g->ch : !more_y ? g->cw : (g->cw < g->ch ? g->cw : g->ch);
         /* Every cell of the next ring is at least ring cell sides away (with
            radii: at least that over rmax in units of a radius). */
         reach = (double)ring * side / (radii != NULL ? rmax : 1.0);
         if (best <= reach * reach)
-            break;
-        /* Every cell seen: on a torus once 2 ring + 1 spans the grid. */
-        if (g->periodic ? 2 * ring + 1 >= widest : ring >= widest)
             break;
     }
     return sqrt(best);
