@@ -45,7 +45,7 @@ bool OutlineClip::cut_cell(const Point& site, const Box& box, double r) {
     if (index.all_cells(near, PolygonIndex::kInside)) return false;
     cut_ = true;
     segments_.clear();
-    index.edges_near(near, edges_);
+    polygon_.outline_edges_near(near, edges_);
     // Only the edges whose box meets the cell's: the grid's lists are wider.
     const PolygonRings& rings = polygon_.rings();
     edges_.erase(std::remove_if(edges_.begin(), edges_.end(),

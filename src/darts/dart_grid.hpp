@@ -235,18 +235,8 @@ void DartGrid<Cells>::throw_darts(Dart* batch, std::size_t n, Rng& rng) const {
 template <class Cells>
 void DartGrid<Cells>::keep_to(const Polygon& polygon) {
     if (torus_.on()) return;  // no polygon on the torus
-    const PolygonIndex& index = polygon.index();
-    std::size_t kept = 0;
-    for (std::size_t row = 0; row < rows_; ++row) {
-        const auto y = static_cast<std::int64_t>(row);
-        for (std::size_t col = 0; col < cols_; ++col) {
-            const auto x = static_cast<std::int64_t>(col);
-            const Box cell{cell_x0(x), cell_y0(y), cell_x0(x + 1), cell_y0(y + 1)};
-            if (!index.all_cells(cell, PolygonIndex::kOutside)) ++kept;
-        }
-    }
-    keep_ = &index;
-    kept_cells_ = kept;
+    keep_ = &polygon.index();
+    kept_cells_ = keep_->grid_cells_not_outside(box_.x0, side_x_, cols_, box_.y0, side_y_, rows_);
 }
 
 template <class Cells>

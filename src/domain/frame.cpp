@@ -68,21 +68,26 @@ void Frame::set_domain(const Box& user_domain) {
     }
     domain_ = Rectangle(box);
     polygon_.reset();
-    // A polygon's vertices: scaled exactly unless one would underflow
-    // (precision_limit() refuses that).
-    if (user_polygon_ && smallest_vertex_ >= max_magnitude(user_domain) * kMinMagnitude)
-        polygon_ = std::make_shared<const Polygon>(user_polygon_->scaled(scale_exp_));
+    // A polygon's vertices: scaled exactly unless one would underflow, or
+    // too small to scale (precision_limit() refuses both).
+    const double m = max_magnitude(user_domain);
+    if (user_polygon_ && m >= kMinMagnitude && smallest_vertex_ >= m * kMinMagnitude)
+        polygon_ = std::make_shared<const Polygon>(user_polygon_->scaled(scale_exp_ + user_exp_));
     set_radius(user_radius_);
 }
 
-void Frame::set_polygon(std::shared_ptr<const Polygon> user_polygon) {
+void Frame::set_polygon(std::shared_ptr<const Polygon> user_polygon, int user_exp) {
     user_polygon_ = std::move(user_polygon);
+    user_exp_ = user_polygon_ ? user_exp : 0;
     smallest_vertex_ = HUGE_VAL;
     if (!user_polygon_) return;
     for (const Point& p : user_polygon_->rings().points())
         for (double c : {std::fabs(p.x), std::fabs(p.y)})
             if (c != 0.0 && c < smallest_vertex_) smallest_vertex_ = c;
-    set_domain(user_polygon_->bounds());
+    smallest_vertex_ = std::ldexp(smallest_vertex_, user_exp_);
+    const Box& b = user_polygon_->bounds();
+    set_domain(Box{std::ldexp(b.x0, user_exp_), std::ldexp(b.y0, user_exp_), std::ldexp(b.x1, user_exp_),
+                   std::ldexp(b.y1, user_exp_)});
 }
 
 void Frame::set_periodic(bool periodic) {

@@ -96,9 +96,11 @@ public:
     double r() const { return r_; }
 
     void set_domain(const Box& user_domain);
-    // A polygonal domain in user units (nullptr: back to the rectangle
-    // user_domain()); its bounding box becomes user_domain().
-    void set_polygon(std::shared_ptr<const Polygon> user_polygon);
+    // A polygonal domain: user_polygon times 2^user_exp in user units
+    // (nullptr: back to the rectangle user_domain()); its bounding box
+    // becomes user_domain(). (A polygon whose coordinates would overflow or
+    // underflow the predicates comes scaled: capi_domains.cpp.)
+    void set_polygon(std::shared_ptr<const Polygon> user_polygon, int user_exp = 0);
     void set_radius(double user_radius);
     void set_periodic(bool periodic);
     // Asked for, whether or not the domain allows it (precision_limit()).
@@ -140,8 +142,9 @@ private:
     Box user_domain_;
     double user_radius_;
     int scale_exp_ = 0;  // internal = user * 2^scale_exp_
-    std::shared_ptr<const Polygon> user_polygon_;  // as given, or nullptr
-    std::shared_ptr<const Polygon> polygon_;       // user_polygon_ scaled by 2^scale_exp_
+    std::shared_ptr<const Polygon> user_polygon_;  // as given (times 2^user_exp_), or nullptr
+    int user_exp_ = 0;
+    std::shared_ptr<const Polygon> polygon_;       // user_polygon_ scaled by 2^(scale_exp_ + user_exp_)
     double smallest_vertex_ = 0.0;                 // the polygon's smallest nonzero |coordinate|
     Rectangle domain_;   // on the torus, x1 and y1 are x0 + px and y0 + py rounded
     // Periodicity, stored once: none for a rectangle; periods on the torus

@@ -60,6 +60,7 @@ Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rin
             if (side[i] == 0) side[i] = votes > 0 ? 1 : (votes < 0 ? -1 : 0);
             any_side = any_side || side[i] != 0;
             inside_left_[i] = side[i] >= 0;
+            if (side[i] == 0) index_->mark_cancelled(i);
             area_ += side[i] * edge_area(*rings_, i);
         }
     }
@@ -67,6 +68,11 @@ Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rin
     for (std::size_t r = 0; r < index_->rows(); ++r)
         for (std::size_t c = 0; c < index_->columns(); ++c)
             if (index_->cell_place(c, r) != PolygonIndex::kOutside) candidate_cells_.push_back(r * index_->columns() + c);
+}
+
+void Polygon::outline_edges_near(const Box& b, std::vector<std::uint32_t>& out) const {
+    index_->edges_near(b, out);
+    out.erase(std::remove_if(out.begin(), out.end(), [&](std::uint32_t e) { return index_->cancelled(e); }), out.end());
 }
 
 double Polygon::count_bound(double r) const {
@@ -89,6 +95,19 @@ Point Polygon::uniform_point(Rng& rng) const {
         const Point p{b.x0 + (col + rng.next_double()) * cell_w, b.y0 + (row + rng.next_double()) * cell_h};
         if (contains(p)) return p;
     }
+}
+
+int reading_exponent(const double* c, std::size_t n) {
+    double hi = 0.0, lo = HUGE_VAL;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double a = std::fabs(c[i]);
+        if (!std::isfinite(a) || a == 0.0) continue;
+        hi = std::max(hi, a);
+        lo = std::min(lo, a);
+    }
+    if (hi == 0.0 || (hi <= 0x1p500 && hi >= 0x1p-500)) return 0;
+    const int e = std::ilogb(hi);
+    return lo >= std::ldexp(1.0, e - 1000) ? e : 0;
 }
 
 Polygon Polygon::scaled(int k) const {

@@ -7,7 +7,8 @@
 // of its middle; its area is the boundary integral of the edges so
 // oriented: the even-odd area, rings crossing one another or themselves
 // included (a bow tie is two triangles). An outline with nothing inside (a
-// ring traced twice, say) is refused.
+// ring traced twice, say) is refused; beside other rings, the edges of a
+// ring whose sides the probes cannot tell count in the parity only.
 #ifndef PDS_POLYGON_HPP
 #define PDS_POLYGON_HPP
 
@@ -55,6 +56,11 @@ public:
     // edge from vertex i): its ring's side, so exact for rings that do not
     // cross one another.
     bool inside_left(std::size_t i) const { return inside_left_[i] != 0; }
+    // The edges near box b (PolygonIndex::edges_near) that bound the region:
+    // without those of a ring whose every edge has the region on both sides
+    // or on neither (a ring traced twice cancels itself: its edges count
+    // for the even-odd rule, but no point of them is the region's).
+    void outline_edges_near(const Box& b, std::vector<std::uint32_t>& out) const;
 
     const PolygonRings& rings() const { return *rings_; }
     const PolygonIndex& index() const { return *index_; }
@@ -64,10 +70,18 @@ private:
     std::unique_ptr<PolygonRings> rings_;
     std::unique_ptr<PolygonIndex> index_;
     std::vector<std::size_t> candidate_cells_;
-    std::vector<std::uint8_t> inside_left_;  // per edge  // index cells not outside
+    std::vector<std::uint8_t> inside_left_;  // per edge
     double area_ = 0.0;
     double perimeter_ = 0.0;
 };
+
+// The power of two e at which to read user coordinates c[0..n) (user =
+// read * 2^e), so that the predicates' products on them neither overflow nor
+// underflow: 0 when every nonzero finite |c| lies in 2^-500 .. 2^500;
+// otherwise the exponent of the largest, when every nonzero one scales
+// exactly (else 0: a coordinate below 2^-900 of the largest, and the first
+// point refuses the domain anyway).
+int reading_exponent(const double* c, std::size_t n);
 
 }  // namespace pds
 

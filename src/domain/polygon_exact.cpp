@@ -59,13 +59,15 @@ bool Polygon::contains_exact(const Expansion& X, const Expansion& Y, const Expan
         const int sa = height_sign(a.y, Y, W), sc = height_sign(c.y, Y, W);
         if ((sa > 0) == (sc > 0)) {
             // Not straddling: on the segment only at its height (an end, or horizontal).
-            if ((sa == 0 || sc == 0) && orient_exact(a, c, X, Y, W) == 0 && within_segment(a, c, X, Y, W))
+            if ((sa == 0 || sc == 0) && !index.cancelled(e) && orient_exact(a, c, X, Y, W) == 0 &&
+                within_segment(a, c, X, Y, W))
                 return true;
             continue;
         }
         const Point& lo = sa > 0 ? c : a;
         const Point& hi = sa > 0 ? a : c;
         const int side = orient_exact(lo, hi, X, Y, W);
+        if (side == 0 && index.cancelled(e)) continue;  // as PolygonIndex: the parity stands
         if (side == 0) return true;  // on the edge: the closed domain holds it
         if (side > 0) odd = !odd;    // the edge lies to the right of the point
     }

@@ -63,6 +63,7 @@ PolygonIndex::PolygonIndex(const PolygonRings& rings) : rings_(rings), box_(ring
     col_scale_ = static_cast<double>(cols_) / w;
     row_scale_ = static_cast<double>(rows_) / h;
     cell_.assign(rows_ * cols_, static_cast<std::int8_t>(kInside));  // settled below
+    cancelled_.assign(rings.vertices(), 0);
 
     // The rows' edge lists: count, then fill.
     const std::size_t edges = rings.vertices();
@@ -136,12 +137,54 @@ void PolygonIndex::for_each_edge_cell(std::size_t edge, const Visit& visit) cons
     }
 }
 
+namespace {
+
+// Index rows (or columns) lo..hi met by `count` consecutive cells of another grid.
+struct Run {
+    std::size_t lo, hi, count;
+};
+
+// The runs of cells 0..n-1 of another grid that meet the same index rows:
+// span(i) gives cell i's first and last.
+template <class Span>
+std::vector<Run> runs_of(std::size_t n, const Span& span) {
+    std::vector<Run> runs;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Run next = span(static_cast<double>(i));
+        if (!runs.empty() && runs.back().lo == next.lo && runs.back().hi == next.hi) ++runs.back().count;
+        else runs.push_back(next);
+    }
+    return runs;
+}
+
+}  // namespace
+
 bool PolygonIndex::all_cells(const Box& b, Place place) const {
     const std::size_t c0 = column_of(b.x0), c1 = column_of(b.x1);
     for (std::size_t r = row_of(b.y0), r1 = row_of(b.y1); r <= r1; ++r)
         for (std::size_t c = c0; c <= c1; ++c)
             if (cell_place(c, r) != place) return false;
     return true;
+}
+
+std::size_t PolygonIndex::grid_cells_not_outside(double x0, double sx, std::size_t cols, double y0, double sy,
+                                                 std::size_t rows) const {
+    // Which index rows a cell meets depends on its row alone, and runs of
+    // rows meet the same ones (columns alike): a run of rows and a run of
+    // columns are kept or not together.
+    const std::vector<Run> row_runs =
+        runs_of(rows, [&](double j) { return Run{row_of(y0 + j * sy), row_of(y0 + (j + 1.0) * sy), 1}; });
+    const std::vector<Run> col_runs =
+        runs_of(cols, [&](double i) { return Run{column_of(x0 + i * sx), column_of(x0 + (i + 1.0) * sx), 1}; });
+    std::size_t kept = 0;
+    for (const Run& r : row_runs)
+        for (const Run& c : col_runs) {
+            bool outside = true;
+            for (std::size_t row = r.lo; row <= r.hi && outside; ++row)
+                for (std::size_t col = c.lo; col <= c.hi && outside; ++col) outside = cell_place(col, row) == kOutside;
+            if (!outside) kept += r.count * c.count;
+        }
+    return kept;
 }
 
 void PolygonIndex::edges_near(const Box& b, std::vector<std::uint32_t>& out) const {
@@ -258,13 +301,16 @@ PolygonIndex::Place PolygonIndex::cast_short_ray(const Point& p, std::size_t row
     for (std::size_t i = 0; i < n; ++i) {
         const Point a = turned(rings_.edge_start(edges[i]), best), b = turned(rings_.edge_end(edges[i]), best);
         if ((a.y > tp.y) == (b.y > tp.y)) {
-            if (on_segment(tp, a, b)) return kOnOutline;
+            if (on_segment(tp, a, b) && !cancelled(edges[i])) return kOnOutline;
             continue;
         }
         const Point& lo = a.y > tp.y ? b : a;
         const Point& hi = a.y > tp.y ? a : b;
         const int side = orient2d(lo, hi, tp);
-        if (side == 0) return kOnOutline;
+        if (side == 0) {
+            if (!cancelled(edges[i])) return kOnOutline;
+            continue;  // its copy is skipped alike: the parity stands
+        }
         // The edge crosses the ray beyond p; before q unless q lies left of it.
         if (side == 1 && orient2d(lo, hi, tq) == -1) odd = !odd;
     }
@@ -293,13 +339,16 @@ PolygonIndex::Place PolygonIndex::cast_ray(const Point& p, std::size_t row) cons
     for (std::size_t k = 0; k < count; ++k) {
         const Point a = rings_.edge_start(edges[k]), b = rings_.edge_end(edges[k]);
         if ((a.y > p.y) == (b.y > p.y)) {
-            if (on_segment(p, a, b)) return kOnOutline;  // horizontal, or touching at an end
+            if (on_segment(p, a, b) && !cancelled(edges[k])) return kOnOutline;  // horizontal, or touching at an end
             continue;
         }
         const Point& lo = a.y > p.y ? b : a;
         const Point& hi = a.y > p.y ? a : b;
         const int side = orient2d(lo, hi, p);
-        if (side == 0) return kOnOutline;  // straddles p's height and passes through p
+        if (side == 0) {  // straddles p's height and passes through p
+            if (!cancelled(edges[k])) return kOnOutline;
+            continue;
+        }
         if (side == crossing_side) odd = !odd;
     }
     return odd ? kInside : kOutside;

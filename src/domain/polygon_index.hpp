@@ -50,6 +50,13 @@ public:
     std::size_t row_of(double y) const;
     // Whether every grid cell box b overlaps is clean with place `place`.
     bool all_cells(const Box& b, Place place) const;
+    // How many cells of another grid, whose cell (i, j) is [x0 + i sx,
+    // x0 + (i + 1) sx] x [y0 + j sy, y0 + (j + 1) sy], i < cols, j < rows,
+    // meet a cell of this one that is not outside (all_cells(box, kOutside)
+    // is false). In time about this grid's cells plus cols plus rows, not
+    // cols times rows (a sparse dart grid has up to ~10^10 cells).
+    std::size_t grid_cells_not_outside(double x0, double sx, std::size_t cols, double y0, double sy,
+                                       std::size_t rows) const;
     // kInside or kOutside for a clean cell, kOnOutline for one an edge may meet.
     Place cell_place(std::size_t col, std::size_t row) const {
         return static_cast<Place>(cell_[row * cols_ + col]);
@@ -63,6 +70,13 @@ public:
     // [y_lo, y_hi] widened by a row each way, appended sorted and without
     // repeats: for a ray cast from a point known only to lie in that band.
     void edges_in_rows(double y_lo, double y_hi, std::vector<std::uint32_t>& out) const;
+
+    // An edge with the region on both of its sides or on neither (a ring
+    // traced twice): it still counts in the parity of a ray that crosses
+    // it, but a point on it is not on the outline for that; its copy or
+    // the edges around decide (polygon.cpp finds these edges).
+    void mark_cancelled(std::size_t edge) { cancelled_.at(edge) = 1; }
+    bool cancelled(std::size_t edge) const { return cancelled_[edge] != 0; }
 
 private:
     // The exact ray cast from p through the edges of its row.
@@ -90,6 +104,7 @@ private:
     // from the same marking as cell_ (so a cell's list holds every edge
     // meeting it).
     std::vector<std::uint32_t> cell_begin_, cell_edges_;
+    std::vector<std::uint8_t> cancelled_;  // per edge
 };
 
 }  // namespace pds

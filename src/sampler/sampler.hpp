@@ -56,8 +56,9 @@ public:
     // Each requires count() == 0.
     // The rectangle: the domain, or a mask's frame (without a polygon).
     void set_domain(const Box& domain);
-    // A polygonal domain in user units (nullptr: back to the rectangle).
-    void set_polygon(std::shared_ptr<const Polygon> polygon);
+    // A polygonal domain: polygon times 2^exponent in user units (nullptr:
+    // back to the rectangle).
+    void set_polygon(std::shared_ptr<const Polygon> polygon, int exponent = 0);
     // A w x h mask spread over the rectangle, row 0 along y0 (mask_outline.hpp);
     // w or h 0: back to the rectangle. Throws DomainError when no pixel is inside.
     void set_mask(std::size_t w, std::size_t h, const std::uint8_t* inside);
@@ -162,7 +163,7 @@ private:
     void hand_over();
     void lower_radius_for_count();
 
-    void use_shape(std::shared_ptr<const Polygon> shape);
+    void use_shape(std::shared_ptr<const Polygon> shape, int exponent = 0);
 
     Frame frame_;
     Box rectangle_{0.0, 0.0, 1.0, 1.0};        // the user's rectangle (set_domain)

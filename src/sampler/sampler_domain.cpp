@@ -2,6 +2,7 @@
 // polygon, a mask's outline, fixed points (see sampler.hpp). The frame keeps
 // the polygon in internal units; the Jones stage adopts the fixed points as
 // its first vertices before the first sampled point.
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
@@ -16,10 +17,20 @@ namespace pds {
 
 namespace {
 
-std::shared_ptr<const Polygon> mask_polygon(std::size_t w, std::size_t h, const std::uint8_t* inside, const Box& box) {
-    const Outline o = mask_outline(w, h, inside, box);
+// A mask's outline over box, and the power of two its coordinates are read
+// at (reading_exponent): pixel lines scale exactly with the box.
+struct MaskPolygon {
+    std::shared_ptr<const Polygon> polygon;
+    int exponent;
+};
+
+MaskPolygon mask_polygon(std::size_t w, std::size_t h, const std::uint8_t* inside, const Box& box) {
+    const double corners[4] = {box.x0, box.y0, box.x1, box.y1};
+    const int k = reading_exponent(corners, 4);
+    const Box read{std::ldexp(box.x0, -k), std::ldexp(box.y0, -k), std::ldexp(box.x1, -k), std::ldexp(box.y1, -k)};
+    const Outline o = mask_outline(w, h, inside, read);
     try {
-        return std::make_shared<const Polygon>(o.xy.data(), o.ring_ends.data(), o.ring_ends.size());
+        return MaskPolygon{std::make_shared<const Polygon>(o.xy.data(), o.ring_ends.data(), o.ring_ends.size()), k};
     } catch (const DomainError& e) {
         // The pixel lines rounded together: the rectangle is too small for
         // the raster at its coordinates.
@@ -35,9 +46,9 @@ void Sampler::set_domain(const Box& domain) {
     if (!mask_.empty()) {
         // The mask spread over the new rectangle, built first: a refusal
         // (pixel lines that round together) changes nothing.
-        auto outline = mask_polygon(mask_w_, mask_h_, mask_.data(), domain);
+        MaskPolygon outline = mask_polygon(mask_w_, mask_h_, mask_.data(), domain);
         rectangle_ = domain;
-        use_shape(std::move(outline));
+        use_shape(std::move(outline.polygon), outline.exponent);
         return;
     }
     rectangle_ = domain;
@@ -49,11 +60,11 @@ void Sampler::set_domain(const Box& domain) {
     }
 }
 
-void Sampler::set_polygon(std::shared_ptr<const Polygon> polygon) {
+void Sampler::set_polygon(std::shared_ptr<const Polygon> polygon, int exponent) {
     if (count() != 0) throw std::logic_error("set_polygon after the first point");
     mask_.clear();
     mask_w_ = mask_h_ = 0;
-    use_shape(std::move(polygon));
+    use_shape(std::move(polygon), exponent);
 }
 
 void Sampler::set_mask(std::size_t w, std::size_t h, const std::uint8_t* inside) {
@@ -63,18 +74,18 @@ void Sampler::set_mask(std::size_t w, std::size_t h, const std::uint8_t* inside)
         return;
     }
     // Built first: a refusal or std::bad_alloc changes nothing.
-    auto outline = mask_polygon(w, h, inside, rectangle_);
+    MaskPolygon outline = mask_polygon(w, h, inside, rectangle_);
     std::vector<std::uint8_t> copy(inside, inside + w * h);
-    use_shape(std::move(outline));
+    use_shape(std::move(outline.polygon), outline.exponent);
     mask_ = std::move(copy);
     mask_w_ = w;
     mask_h_ = h;
 }
 
-void Sampler::use_shape(std::shared_ptr<const Polygon> shape) {
+void Sampler::use_shape(std::shared_ptr<const Polygon> shape, int exponent) {
     forget_stages();
     shape_ = std::move(shape);
-    frame_.set_polygon(shape_);
+    frame_.set_polygon(shape_, exponent);
     if (!shape_) frame_.set_domain(rectangle_);
     mean_inverse_square_ = RadiusField::MeanInverseSquare{};
     if (count_target_ != 0) set_count(count_target_);

@@ -55,7 +55,7 @@ VertexIndex uncovered_outline_cell(const Delaunay& dt, const Polygon& polygon, d
         const Box near{c.x + sink.x0 - widen, c.y + sink.y0 - widen, c.x + sink.x1 + widen, c.y + sink.y1 + widen};
         if (index.all_cells(near, PolygonIndex::kInside)) continue;  // the Voronoi vertices decide it
         edges.clear();
-        index.edges_near(near, edges);
+        polygon.outline_edges_near(near, edges);
         if (!outline_cell_is_covered_exact(c, rc, ring, radii, box, polygon, edges)) return v;
     }
     return kNoVertex;

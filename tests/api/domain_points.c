@@ -9,7 +9,8 @@
  * region_covered, independently of the library), and pds_verify says so; the same points however the calls split or a progress
  * callback cancels them; count mode gives exactly n points; refine keeps the
  * points and ends maximal at the new radius (domain_runs.c; domain_fixed.c
- * runs the same with fixed points).
+ * runs the same with fixed points); the L scaled by a power of two from
+ * 2^-890 to 2^1000 gives the same points scaled, exactly.
  */
 #include <math.h>
 #include <stdio.h>
@@ -128,6 +129,43 @@ START_TEST(maximal_in_the_l_scaled_and_moved)
 }
 END_TEST
 
+/* The frame scales the domain by a power of two, exactly: the L times 2^e at
+ * R 0.03 * 2^e gives the points of the unit L times 2^e, to the bit, also
+ * where the user's coordinates would overflow or underflow the predicates'
+ * products (beyond 2^+-500). */
+START_TEST(same_points_at_any_power_of_two)
+{
+    static const int exps[] = {1000, -890, 600, -520, 37};
+    pds_sampler *base = in_polygon(&UNIT_L, 0.03, 5);
+    const size_t n = run_to_end(base);
+    double *p0 = malloc(2 * n * sizeof *p0), *p = malloc(2 * n * sizeof *p);
+    size_t k, i;
+
+    ck_assert(p0 != NULL && p != NULL);
+    ck_assert_uint_eq(pds_points(base, 0, n, p0), n);
+    for (k = 0; k < sizeof exps / sizeof exps[0]; k++) {
+        double xy[20];
+        region g;
+        pds_sampler *s;
+        for (i = 0; i < 20; i++) xy[i] = ldexp(UNIT_L.xy[i], exps[k]);
+        g.xy = xy;
+        g.ends = UNIT_L.ends;
+        g.nrings = UNIT_L.nrings;
+        s = in_polygon(&g, ldexp(0.03, exps[k]), 5);
+        ck_assert_msg(run_to_end(s) == n, "2^%d: %zu points, the unit L %zu", exps[k], pds_count(s), n);
+        ck_assert_uint_eq(pds_points(s, 0, n, p), n);
+        for (i = 0; i < 2 * n; i++)
+            ck_assert_msg(p[i] == ldexp(p0[i], exps[k]), "2^%d: coordinate %zu is %.17g, not %.17g", exps[k],
+                          i, p[i], ldexp(p0[i], exps[k]));
+        ck_assert_int_eq(pds_verify(s), PDS_DONE);
+        pds_destroy(s);
+    }
+    free(p0);
+    free(p);
+    pds_destroy(base);
+}
+END_TEST
+
 static const domain_extra nothing = {"the L", NULL, NULL};
 
 START_TEST(same_points_however_split)
@@ -160,6 +198,7 @@ Suite *domain_points_suite(void)
     TCase *tc = new_tcase(s, "polygons");
     tcase_add_loop_test(tc, maximal_in_each_shape, 0, (int)N_SHAPES);
     tcase_add_loop_test(tc, maximal_in_the_l_scaled_and_moved, 0, 2);
+    tcase_add_test(tc, same_points_at_any_power_of_two);
     tc = new_tcase(s, "splits, cancel, count, refine");
     tcase_add_test(tc, same_points_however_split);
     tcase_add_test(tc, same_points_canceled_at_every_call);

@@ -9,7 +9,8 @@
  * bilinear between pixel centres, constant beyond them). Checked: each point
  * in an inside pixel by looking the pixel up, maximality on the L polygon the
  * pixels make (region_covered), each radius against the map where the map is
- * constant, the rule and coverage with each point's radius.
+ * constant, the rule and coverage with each point's radius; bounded calls
+ * on a mask at a radius whose maximal pattern would not fit the index.
  */
 #include <math.h>
 #include <stdio.h>
@@ -89,6 +90,61 @@ START_TEST(mask_points_in_inside_pixels)
 }
 END_TEST
 
+/* At R 2e-5 over [1,3] x [-1,1] a maximal pattern (~10^10 points) would not
+ * fit the index: bounded calls throw darts on a grid that keeps only its
+ * taken cells, and only over the mask's pixels. The first points come
+ * without a pass over the grid's 10^10 cells (that pass took minutes). */
+START_TEST(mask_with_a_tiny_radius_steps)
+{
+    pds_sampler *s = masked(2e-5, 4, 1);
+    double *xy;
+    size_t n, i, added = 0;
+
+    ck_assert_int_eq(pds_step(s), PDS_MORE);
+    ck_assert_int_eq(pds_run(s, 999, &added), PDS_MORE);
+    ck_assert_uint_eq(added, 999);
+    xy = points_copy(s, &n);
+    ck_assert_uint_eq(n, 1000);
+    for (i = 0; i < n; i++)
+        ck_assert_msg(in_inside_pixel(xy[2 * i], xy[2 * i + 1]), "point %zu (%.17g, %.17g) is in no inside pixel",
+                      i, xy[2 * i], xy[2 * i + 1]);
+    free(xy);
+    pds_destroy(s);
+}
+END_TEST
+
+/* The mask over its rectangle times 2^e, at R 0.05 * 2^e: the points of the
+ * unit case times 2^e, to the bit, also where the outline's coordinates
+ * would overflow or underflow the predicates' products (beyond 2^+-500). */
+START_TEST(mask_at_any_power_of_two)
+{
+    static const int exps[] = {1000, -890, 600, 3};
+    pds_sampler *base = masked(0.05, 3, 1);
+    const size_t n = run_to_end(base);
+    size_t k, i, m;
+    double *p0 = points_copy(base, &m), *p;
+
+    for (k = 0; k < sizeof exps / sizeof exps[0]; k++) {
+        const int e = exps[k];
+        pds_sampler *s = sampler_new(ldexp(0.05, e), 3);
+        ck_assert_int_eq(pds_set_domain(s, ldexp(mask_box.x0, e), ldexp(mask_box.y0, e), ldexp(mask_box.x1, e),
+                                        ldexp(mask_box.y1, e)),
+                         0);
+        ck_assert_msg(pds_set_mask(s, 4, 4, l_mask) == 0, "2^%d: %s", e, pds_errmsg(s));
+        ck_assert_msg(run_to_end(s) == n, "2^%d: %zu points, at unit scale %zu", e, pds_count(s), n);
+        p = points_copy(s, &m);
+        for (i = 0; i < 2 * n; i++)
+            ck_assert_msg(p[i] == ldexp(p0[i], e), "2^%d: coordinate %zu is %.17g, not %.17g", e, i, p[i],
+                          ldexp(p0[i], e));
+        ck_assert_int_eq(pds_verify(s), PDS_DONE);
+        free(p);
+        pds_destroy(s);
+    }
+    free(p0);
+    pds_destroy(base);
+}
+END_TEST
+
 START_TEST(mask_domain_before_or_after)
 {
     pds_sampler *a = masked(0.05, 9, 1), *b = masked(0.05, 9, 0);
@@ -152,6 +208,8 @@ Suite *domain_raster_suite(void)
     TCase *tc = new_tcase(s, "mask");
     tcase_add_test(tc, mask_points_in_inside_pixels);
     tcase_add_test(tc, mask_domain_before_or_after);
+    tcase_add_test(tc, mask_with_a_tiny_radius_steps);
+    tcase_add_test(tc, mask_at_any_power_of_two);
     tc = new_tcase(s, "radius map");
     tcase_add_test(tc, radius_map_over_the_polygon_box);
     return s;

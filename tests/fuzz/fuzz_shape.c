@@ -333,7 +333,16 @@ int fz_shape_mask(fz_shape *sh, size_t w, size_t h, const unsigned char *pix, co
         }
     sh->nv = out;
     measure(sh);
-    sh->area_known = 1; /* the library's outline touches only at corners */
+    { /* The library's outline touches only at corners, so its area is the
+       * pixels' unless their lines lie within rounding of one another: a pixel
+       * side below 2^30 ulps of the rectangle's coordinates (found/NOTES,
+       * mask_rounded_lines_count_radius). */
+        double m = 0.0;
+        for (i = 0; i < 4; i++)
+            if (fabs(rect[i]) > m) m = fabs(rect[i]);
+        sh->area_known = (rect[2] - rect[0]) / (double)w >= 0x1p-22 * m &&
+                         (rect[3] - rect[1]) / (double)h >= 0x1p-22 * m;
+    }
     sh->v_lo = 4;
     sh->v_hi = 4 * n;
     return verdict;
@@ -418,8 +427,28 @@ double fz_shape_perimeter(const fz_shape *sh, int e)
     return sum;
 }
 
-/* Probes of the closed domain: every vertex, points along every edge, and a
- * grid of points well inside. fn returns 0 to stop. */
+/* Whether a polygon's edge from (ax, ay) to (bx, by) is traced an even
+ * number of times (a ring traced twice): by the even-odd rule its sides are
+ * alike, so its points need not be the domain's (the library skips such
+ * edges; both sides inside, they are covered anyway). */
+static int edge_cancelled(const fz_shape *sh, double ax, double ay, double bx, double by)
+{
+    size_t k, i, same = 0;
+    if (sh->kind != FZ_SHAPE_POLYGON) return 0;
+    for (k = 0; k < sh->nrings; k++) {
+        const size_t s = ring_start(sh, k), e = sh->ends[k];
+        for (i = s; i < e; i++) {
+            const size_t j = i + 1 < e ? i + 1 : s;
+            const double px = sh->xy[2 * i], py = sh->xy[2 * i + 1], qx = sh->xy[2 * j], qy = sh->xy[2 * j + 1];
+            if ((px == ax && py == ay && qx == bx && qy == by) || (px == bx && py == by && qx == ax && qy == ay))
+                same++;
+        }
+    }
+    return same % 2 == 0;
+}
+
+/* Probes of the closed domain: every vertex, points along every edge (but
+ * those traced twice), and a grid of points well inside. fn returns 0 to stop. */
 void fz_shape_probes(const fz_shape *sh, void (*fn)(void *ctx, double x, double y), void *ctx)
 {
     size_t k, i, a, b;
@@ -429,6 +458,7 @@ void fz_shape_probes(const fz_shape *sh, void (*fn)(void *ctx, double x, double 
             const size_t j = i + 1 < e ? i + 1 : s;
             const double ax = sh->xy[2 * i], ay = sh->xy[2 * i + 1];
             const double bx = sh->xy[2 * j], by = sh->xy[2 * j + 1];
+            if (edge_cancelled(sh, ax, ay, bx, by)) continue;
             fn(ctx, ax, ay);
             for (a = 1; a < 4; a++) {
                 const double t = (double)a / 4.0;

@@ -2,7 +2,8 @@
 // and where points lie against it by the even-odd rule (PolygonIndex),
 // compared with an independent answer: outlines on an integer lattice, points
 // on the half-integer lattice, and a brute-force parity in 64-bit integers
-// over every edge (a winding test needs no rounding there).
+// over every edge (a winding test needs no rounding there); the cells of
+// another grid that meet the outline, counted by runs.
 #include <check.h>
 
 #include <cmath>
@@ -231,6 +232,47 @@ START_TEST(clean_cells_hold_their_points_place) {
 }
 END_TEST
 
+START_TEST(grid_cells_not_outside_count_as_cell_by_cell) {
+    // Another grid's cells that meet a cell of the index not outside,
+    // counted by runs of rows and columns, against asking all_cells cell by
+    // cell: grids finer and coarser than the index, shifted, wider than the
+    // outline's box, and one row or column thick. A run that merged rows
+    // meeting different index rows, or a count off by one at a run's end,
+    // differs.
+    LatticeOutline o;
+    o.rings.push_back(star(12, 400, 1000, false));
+    o.rings.push_back(star(5, 50, 150, true));
+    const PolygonRings rings = o.build();
+    const PolygonIndex index(rings);
+    struct Grid {
+        double x0, sx;
+        std::size_t cols;
+        double y0, sy;
+        std::size_t rows;
+    };
+    const Grid grids[] = {{-1000, 7.3, 274, -1000, 6.9, 290},  {-1000, 400, 5, -1000, 333, 7},
+                          {-1200, 13.1, 190, -900, 4.7, 380},  {-1000, 2000, 1, -1000, 1.1, 1800},
+                          {-977.5, 0.9, 2170, -15, 30, 1},     {-1000, 25, 80, -1000, 25, 80}};
+    std::size_t total = 0, cells = 0;
+    for (const Grid& g : grids) {
+        std::size_t want = 0;
+        for (std::size_t j = 0; j < g.rows; ++j)
+            for (std::size_t i = 0; i < g.cols; ++i) {
+                const double x = static_cast<double>(i), y = static_cast<double>(j);
+                const pds::Box cell{g.x0 + x * g.sx, g.y0 + y * g.sy, g.x0 + (x + 1.0) * g.sx, g.y0 + (y + 1.0) * g.sy};
+                want += !index.all_cells(cell, PolygonIndex::kOutside);
+            }
+        const std::size_t got = index.grid_cells_not_outside(g.x0, g.sx, g.cols, g.y0, g.sy, g.rows);
+        ck_assert_msg(got == want, "grid %zu x %zu at (%g, %g): %zu cells, cell by cell %zu", g.cols, g.rows, g.x0,
+                      g.y0, got, want);
+        total += want;
+        cells += g.cols * g.rows;
+    }
+    ck_assert_uint_gt(total, 50000);
+    ck_assert_uint_lt(total, cells * 9 / 10);  // outside cells too
+}
+END_TEST
+
 }  // namespace
 
 Suite* polygon_suite() {
@@ -244,6 +286,7 @@ Suite* polygon_suite() {
     tcase_add_test(t, far_from_the_origin_and_tiny);
     tcase_add_test(t, outline_of_many_vertices);
     tcase_add_test(t, clean_cells_hold_their_points_place);
+    tcase_add_test(t, grid_cells_not_outside_count_as_cell_by_cell);
     suite_add_tcase(s, t);
     return s;
 }

@@ -1,15 +1,18 @@
 // test_polygon_domain.cpp - the polygon as the sampler's domain type: its
 // even-odd area whatever the rings' orientations, an outline with nothing
 // inside refused, a uniform point (inside, and spread by area), the count
-// bound against a packing, exact scaling.
+// bound against a packing, exact scaling, a ring traced twice (no part of
+// the outline) around and inside the region.
 #include <check.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/rng.hpp"
 #include "domain/polygon.hpp"
+#include "sampler/sampler.hpp"
 #include "suites.hpp"
 
 namespace {
@@ -105,6 +108,36 @@ START_TEST(scaling_is_exact) {
 }
 END_TEST
 
+// A triangle traced twice cancels itself by the even-odd rule: its edges
+// still count in the parity, but no point of them is on the outline, so the
+// region and its closure are those of the other rings. Run alone it is the
+// first case (the box reaches out to it: its corner is the triangle's
+// vertex), inside a square the second (its edges lie in the region).
+START_TEST(a_ring_traced_twice_is_no_outline) {
+    const std::vector<double> twice{2, 0, 0, 0.1, -1.5, -2.7, 2, 0, 0, 0.1, -1.5, -2.7};
+    const Point vertex{-1.5, -2.7}, on_edge{1, 0.05};
+    const Polygon apart = rings_of({square(3, 13, 0.8, false), twice});
+    ck_assert(!apart.contains(vertex) && !apart.contains(on_edge));
+    ck_assert_double_eq_tol(apart.area(), 0.64, 1e-12);
+    const Polygon inside = rings_of({square(-2, -3, 5, true), twice});
+    ck_assert(inside.contains(vertex) && inside.contains(on_edge));
+    ck_assert(inside.locate(vertex) == pds::PolygonIndex::kInside);
+    ck_assert_double_eq_tol(inside.area(), 25.0, 1e-12);
+    for (std::uint64_t seed = 1; seed <= 3; ++seed)
+        for (const Polygon* p : {&apart, &inside}) {
+            pds::Sampler s(p == &apart ? 0.1 : 0.3, seed);
+            s.set_polygon(std::make_shared<const Polygon>(rings_of({p == &apart ? square(3, 13, 0.8, false)
+                                                                                  : square(-2, -3, 5, true),
+                                                                    twice})));
+            std::size_t added = 0;
+            ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+            const pds::VerifyReport rep = s.verify();
+            ck_assert_msg(rep.maximal, "seed %llu, %s: %s", static_cast<unsigned long long>(seed),
+                          p == &apart ? "apart" : "inside", rep.failure.c_str());
+        }
+}
+END_TEST
+
 }  // namespace
 
 Suite* polygon_domain_suite() {
@@ -115,6 +148,7 @@ Suite* polygon_domain_suite() {
     tcase_add_test(t, uniform_point_inside_and_spread_by_area);
     tcase_add_test(t, count_bound_holds_a_packing);
     tcase_add_test(t, scaling_is_exact);
+    tcase_add_test(t, a_ring_traced_twice_is_no_outline);
     suite_add_tcase(s, t);
     return s;
 }
