@@ -2,6 +2,7 @@
 #include "domain/polygon.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -36,6 +37,29 @@ double edge_area(const PolygonRings& rings, std::size_t i) {
     return 0.5 * ((a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x));
 }
 
+// Which edges are copies of one segment (the same two ends, either way)
+// that cancel in pairs by the even-odd rule: of k copies, all when k is even,
+// all but the first when k is odd (a ring traced twice, or traced again
+// along another ring's edge).
+std::vector<std::uint8_t> paired_copies(const PolygonRings& rings) {
+    const auto key = [&](std::size_t i) {
+        Point a = rings.edge_start(i), b = rings.edge_end(i);
+        if (b.x < a.x || (b.x == a.x && b.y < a.y)) std::swap(a, b);
+        return std::array<double, 4>{a.x, a.y, b.x, b.y};
+    };
+    std::vector<std::uint32_t> order(rings.vertices());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) { return key(i) < key(j); });
+    std::vector<std::uint8_t> paired(rings.vertices(), 0);
+    for (std::size_t from = 0; from < order.size();) {
+        std::size_t to = from + 1;
+        while (to < order.size() && key(order[to]) == key(order[from])) ++to;
+        for (std::size_t c = (to - from) % 2; c < to - from; ++c) paired[order[from + c]] = 1;
+        from = to;
+    }
+    return paired;
+}
+
 }  // namespace
 
 Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rings)
@@ -47,17 +71,19 @@ Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rin
     // cross (a bow tie's two lobes run opposite ways), and the even-odd area
     // is its boundary integral. An edge the probes cannot tell takes its
     // ring's side (the majority of its told edges).
+    // Copies of one segment cancel in pairs first: they take no side.
     inside_left_.resize(rings_->vertices());
+    const std::vector<std::uint8_t> paired = paired_copies(*rings_);
     std::vector<int> side(rings_->vertices());
     bool any_side = false;
     for (std::size_t k = 0; k < rings_->rings(); ++k) {
         int votes = 0;
         for (std::size_t i = rings_->ring_begin(k); i < rings_->ring_begin(k + 1); ++i) {
-            side[i] = edge_side(*rings_, *index_, i);
+            side[i] = paired[i] ? 0 : edge_side(*rings_, *index_, i);
             votes += side[i];
         }
         for (std::size_t i = rings_->ring_begin(k); i < rings_->ring_begin(k + 1); ++i) {
-            if (side[i] == 0) side[i] = votes > 0 ? 1 : (votes < 0 ? -1 : 0);
+            if (side[i] == 0 && !paired[i]) side[i] = votes > 0 ? 1 : (votes < 0 ? -1 : 0);
             any_side = any_side || side[i] != 0;
             inside_left_[i] = side[i] >= 0;
             if (side[i] == 0) index_->mark_cancelled(i);
@@ -107,7 +133,7 @@ int reading_exponent(const double* c, std::size_t n) {
     }
     if (hi == 0.0 || (hi <= 0x1p500 && hi >= 0x1p-500)) return 0;
     const int e = std::ilogb(hi);
-    return lo >= std::ldexp(1.0, e - 1000) ? e : 0;
+    return lo >= std::ldexp(1.0, e - 1022) ? e : 0;  // each stays a normal number: exact
 }
 
 Polygon Polygon::scaled(int k) const {

@@ -7,8 +7,9 @@
 // of its middle; its area is the boundary integral of the edges so
 // oriented: the even-odd area, rings crossing one another or themselves
 // included (a bow tie is two triangles). An outline with nothing inside (a
-// ring traced twice, say) is refused; beside other rings, the edges of a
-// ring whose sides the probes cannot tell count in the parity only.
+// ring traced twice, say) is refused; beside other rings, copies of one
+// segment cancel in pairs, and they and the edges of a ring whose sides the
+// probes cannot tell count in the parity only.
 #ifndef PDS_POLYGON_HPP
 #define PDS_POLYGON_HPP
 
@@ -57,9 +58,9 @@ public:
     // cross one another.
     bool inside_left(std::size_t i) const { return inside_left_[i] != 0; }
     // The edges near box b (PolygonIndex::edges_near) that bound the region:
-    // without those of a ring whose every edge has the region on both sides
-    // or on neither (a ring traced twice cancels itself: its edges count
-    // for the even-odd rule, but no point of them is the region's).
+    // without copies of one segment that cancel in pairs, nor the edges of a
+    // ring whose sides the probes cannot tell at all (they count for the
+    // even-odd rule, but no point of them is the region's).
     void outline_edges_near(const Box& b, std::vector<std::uint32_t>& out) const;
 
     const PolygonRings& rings() const { return *rings_; }
@@ -79,8 +80,8 @@ private:
 // read * 2^e), so that the predicates' products on them neither overflow nor
 // underflow: 0 when every nonzero finite |c| lies in 2^-500 .. 2^500;
 // otherwise the exponent of the largest, when every nonzero one scales
-// exactly (else 0: a coordinate below 2^-900 of the largest, and the first
-// point refuses the domain anyway).
+// exactly (else 0: a coordinate below 2^-1022 of the largest, and the first
+// point refuses the domain anyway, below 2^-900).
 int reading_exponent(const double* c, std::size_t n);
 
 }  // namespace pds

@@ -123,6 +123,20 @@ START_TEST(a_ring_traced_twice_is_no_outline) {
     ck_assert(inside.contains(vertex) && inside.contains(on_edge));
     ck_assert(inside.locate(vertex) == pds::PolygonIndex::kInside);
     ck_assert_double_eq_tol(inside.area(), 25.0, 1e-12);
+    // Traced twice along an edge of the other ring: three copies of that
+    // edge, one of which is outline; the area is the other ring's alone.
+    const std::vector<double> triangle{2, 0, 0, 0.1, 5, 0.05};
+    const Polygon along = rings_of({triangle, twice});
+    ck_assert_double_eq_tol(along.area(), 0.2, 1e-12);
+    ck_assert(!along.contains(vertex) && along.contains(Point{1, 0.05}));
+    {
+        pds::Sampler s(0.01, 7);
+        s.set_polygon(std::make_shared<const Polygon>(rings_of({triangle, twice})));
+        std::size_t added = 0;
+        ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+        const pds::VerifyReport rep = s.verify();
+        ck_assert_msg(rep.maximal, "along an edge: %s", rep.failure.c_str());
+    }
     for (std::uint64_t seed = 1; seed <= 3; ++seed)
         for (const Polygon* p : {&apart, &inside}) {
             pds::Sampler s(p == &apart ? 0.1 : 0.3, seed);
