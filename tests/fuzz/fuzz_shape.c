@@ -281,11 +281,17 @@ int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t 
         }
     }
     { /* Every |coordinate| below 2^-500: the library's predicates underflow and call
-       * a star "on one line" (found/NOTES, polygon_tiny_collinear). */
-        double m = 0.0;
-        for (v = 0; v < 2 * sh->nv; v++)
+       * a star "on one line" (found/NOTES, polygon_tiny_collinear). Beyond 2^500
+       * the library reads the rings a power of two away, unless a nonzero
+       * coordinate would not stay a normal number there: then they overflow
+       * (polygon_huge_mixed_magnitudes; the first point refuses such a domain). */
+        double m = 0.0, lo = HUGE_VAL;
+        for (v = 0; v < 2 * sh->nv; v++) {
             if (fabs(sh->xy[v]) > m) m = fabs(sh->xy[v]);
+            if (sh->xy[v] != 0.0 && fabs(sh->xy[v]) < lo) lo = fabs(sh->xy[v]);
+        }
         if (m < 0x1p-500 && !fz_strict() && verdict == 1) verdict = -1;
+        if (m > 0x1p500 && lo < 0x1p-1000 * m && !fz_strict() && verdict == 1) verdict = -1;
     }
     if (!(sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3])) return verdict == 1 ? 0 : -1;
     if (sh->frac == 0.0 && verdict == 1) return 0; /* encloses nothing: a ring traced twice */
