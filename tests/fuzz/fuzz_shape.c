@@ -280,6 +280,9 @@ int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t 
                 sh->antenna = 1;
         }
     }
+    /* The library's area of a ring with a nearly zero-width spike is not the
+     * even-odd area (found/NOTES, polygon_near_spike_area). */
+    if (sh->antenna) sh->area_known = 0;
     { /* Every |coordinate| below 2^-500: the library's predicates underflow and call
        * a star "on one line" (found/NOTES, polygon_tiny_collinear). Beyond 2^500
        * the library reads the rings a power of two away, unless a nonzero
@@ -348,6 +351,11 @@ int fz_shape_mask(fz_shape *sh, size_t w, size_t h, const unsigned char *pix, co
             if (fabs(rect[i]) > m) m = fabs(rect[i]);
         sh->area_known = (rect[2] - rect[0]) / (double)w >= 0x1p-22 * m &&
                          (rect[3] - rect[1]) / (double)h >= 0x1p-22 * m;
+        /* Pixel sides below 2^-30 of the coordinates: the outline's sides are
+         * probed within rounding, as polygon_below_resolution's. */
+        if (((rect[2] - rect[0]) / (double)w < 0x1p-30 * m || (rect[3] - rect[1]) / (double)h < 0x1p-30 * m) &&
+            verdict == 1 && !fz_strict())
+            verdict = -1;
     }
     sh->v_lo = 4;
     sh->v_hi = 4 * n;
