@@ -145,14 +145,23 @@ struct Run {
 };
 
 // The runs of cells 0..n-1 of another grid that meet the same index rows:
-// span(i) gives cell i's first and last.
+// span(i) gives cell i's first and last. Both never decrease along the grid
+// (rounding is monotone), so each run's end is found by bisection: a few
+// runs per index row, whatever n.
 template <class Span>
 std::vector<Run> runs_of(std::size_t n, const Span& span) {
     std::vector<Run> runs;
-    for (std::size_t i = 0; i < n; ++i) {
-        const Run next = span(static_cast<double>(i));
-        if (!runs.empty() && runs.back().lo == next.lo && runs.back().hi == next.hi) ++runs.back().count;
-        else runs.push_back(next);
+    for (std::size_t i = 0; i < n;) {
+        const Run first = span(static_cast<double>(i));
+        std::size_t last = i, beyond = n;  // span(last) is first's, span(beyond) is not (or beyond == n)
+        while (beyond - last > 1) {
+            const std::size_t mid = last + (beyond - last) / 2;
+            const Run r = span(static_cast<double>(mid));
+            if (r.lo <= first.lo && r.hi <= first.hi) last = mid;
+            else beyond = mid;
+        }
+        runs.push_back(Run{first.lo, first.hi, last - i + 1});
+        i = last + 1;
     }
     return runs;
 }
