@@ -95,6 +95,11 @@ public:
         return d2 < r2_low_ ? 1 : d2 < r2_high_ ? 0 : -1;
     }
 
+    // The bit of the sub-square that holds a dart at (u, v) of its cell,
+    // u and v in [0, 1).
+    static unsigned sub_square(double u, double v) {
+        return 4u * static_cast<unsigned>(v * 4.0) + static_cast<unsigned>(u * 4.0);
+    }
     // The sub-squares of the cell in column col, row row (bit 4 b + a for
     // column a, row b) that lie in the disk of radius R around q: with a
     // margin far above every rounding, so a bit set is a sub-square covered.

@@ -9,7 +9,6 @@
 #include "core/predicates.hpp"
 #include "core/prefetch.hpp"
 #include "darts/jones_of_points.hpp"
-#include "darts/space_time_stream.hpp"
 #include "jones/jones_stage.hpp"
 
 namespace pds {
@@ -61,6 +60,12 @@ struct SpaceTimeDartStage::Band {
     std::vector<Accepted> accepted;  // by time once sorted
     std::vector<std::uint32_t> number;    // an accepted candidate's point index
     std::size_t head = 0;                 // merge()'s cursor
+    struct Darting {
+        SpaceTimeStream stream;  // past the count
+        std::uint32_t cell;
+        unsigned darts;
+    };
+    std::vector<Darting> darting;  // draw()'s cells with darts this epoch
 };
 
 SpaceTimeDartStage::SpaceTimeDartStage(const Rectangle& domain, double radius, std::uint64_t seed)
@@ -171,28 +176,43 @@ void SpaceTimeDartStage::draw(Band& band) {
     band.thrown = 0;
     // About kDartsPerCell a cell land free early on, fewer later.
     band.cands.reserve(static_cast<std::size_t>(static_cast<double>(band.a1 - band.a0) * (kDartsPerCell * 1.2)) + 64);
+    // First the counts: most active cells draw no dart in an epoch, and
+    // only those that do need their grid block.
     const double e = std::exp(-kDartsPerCell);
+    const std::uint64_t salted = SpaceTimeStream::salted(seed_);
+    band.darting.clear();
+    band.darting.reserve(static_cast<std::size_t>(static_cast<double>(band.a1 - band.a0) * (kDartsPerCell * 1.5)) + 64);
+    for (std::size_t i = band.a0; i < band.a1; ++i) {
+        SpaceTimeStream stream(salted, active_[i], epoch_);
+        const unsigned darts = stream.poisson(kDartsPerCell, e);
+        if (darts == 0) continue;
+        band.thrown += darts;
+        band.darting.push_back(Band::Darting{stream, active_[i], darts});
+    }
     const auto cols = static_cast<std::uint32_t>(grid_.cols());
     const double side = grid_.side();
     const auto stride = static_cast<std::ptrdiff_t>(grid_.stride());
     const Box& box = domain_.bounds();
-    for (std::size_t i = band.a0; i < band.a1; ++i) {
-        // Late in the stage the active cells are scattered: their blocks'
-        // cache misses overlap when asked for a few cells ahead.
-        if (i + kAhead < band.a1) {
-            const std::uint32_t ahead = active_[i + kAhead];
+    const std::size_t darting = band.darting.size();
+    for (std::size_t i = 0; i < darting; ++i) {
+        // Late in the stage these cells are scattered: their blocks' cache
+        // misses overlap when asked for a few cells ahead.
+        if (i + kAhead < darting) {
+            const std::uint32_t ahead = band.darting[i + kAhead].cell;
             grid_.prefetch_block(ahead % cols, ahead / cols);
         }
-        const std::uint32_t cell = active_[i];
+        const std::uint32_t cell = band.darting[i].cell;
         const std::int64_t col = cell % cols, row = cell / cols;
-        SpaceTimeStream stream(seed_, cell, epoch_);
-        const unsigned darts = stream.poisson(kDartsPerCell, e);
-        band.thrown += darts;
+        SpaceTimeStream stream = band.darting[i].stream;
+        const unsigned darts = band.darting[i].darts;
+        std::uint16_t& mask = masks_[cell];
         for (unsigned k = 0; k < darts; ++k) {
             const double t = stream.next_double();
             const double u = stream.next_double(), v = stream.next_double();
             const Point p{grid_.cell_x0(col) + u * side, grid_.cell_y0(row) + v * side};
             if (!domain_.contains(p)) continue;
+            // A dart in a sub-square known covered is covered.
+            if (mask >> SpaceTimeGrid::sub_square(u, v) & 1u) continue;
             // Only the earlier epochs' points are in the grid now, numbered.
             const SpaceTimeGrid::Aim a = grid_.aim_in(p, col, row);
             if (grid_.load(a.cell) != 0) break;  // the cell is covered whole (an active cell has no point)
@@ -207,7 +227,6 @@ void SpaceTimeDartStage::draw(Band& band) {
                 // Covered: the disks that cover this dart may cover whole
                 // sub-squares of its cell. The certificate is paid for by
                 // the covered darts, where it is likely to pass.
-                std::uint16_t& mask = masks_[cell];
                 for (int di = a.y_lo; di <= a.y_hi; ++di) {
                     for (int dj = a.x_lo; dj <= a.x_hi; ++dj) {
                         const SpaceTimeGrid::Word w = grid_.load(a.cell + static_cast<std::size_t>(di * stride + dj));

@@ -18,9 +18,10 @@ namespace pds {
 
 class SpaceTimeStream {
 public:
-    SpaceTimeStream(std::uint64_t seed, std::uint64_t cell, std::uint64_t epoch) {
-        std::uint64_t s = mix64(seed ^ 0x5DA47D5C0FFEE123ull);
-        s = mix64(s + (cell + 1) * 0x9E3779B97F4A7C15ull);
+    // The seed's part of every state: worked out once per epoch.
+    static std::uint64_t salted(std::uint64_t seed) { return mix64(seed ^ 0x5DA47D5C0FFEE123ull); }
+    SpaceTimeStream(std::uint64_t salted_seed, std::uint64_t cell, std::uint64_t epoch) {
+        const std::uint64_t s = mix64(salted_seed + (cell + 1) * 0x9E3779B97F4A7C15ull);
         state_ = mix64(s ^ ((epoch + 1) * 0xD1B54A32D192ED03ull));
     }
 
