@@ -12,7 +12,9 @@
  *
  * History: re-pinned for 1.1.0, whose dart stage (src/dart_grid.hpp) draws
  * the opening points from the generator in a different way. Varying fields
- * pinned from 1.3.2 on, whose field dart stage changed their points.
+ * pinned from 1.3.2 on, whose field dart stage changed their points. The
+ * parallel opening (pds_set_threads) pinned from 1.5.0 on: one fingerprint
+ * for every thread count.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -27,15 +29,22 @@ struct golden {
     int rectangle;   /* [-1,2] x [3,4.5] instead of the unit square */
     double refine;   /* then refine to this radius and run again; 0: none */
     size_t chunk;    /* run in calls of at most this many points; 0: one call */
+    unsigned threads; /* pds_set_threads(s, threads - 1) first; 0: no call */
     size_t count;
     uint64_t hash;
 };
 
 static const struct golden cases[] = {
-    {0.01, 1, 0, 0.0, 0, 7048, 0x24f25a7990fba47cull},
-    {0.01, 1, 0, 0.0, 97, 7048, 0x24f25a7990fba47cull}, /* split: same bytes */
-    {0.02, 7, 1, 0.015, 0, 13531, 0x72b45bb3f3220347ull},
-    {0.05, 12345678901234567ull, 0, 0.0, 0, 304, 0x06bd299d7a5890dcull},
+    {0.01, 1, 0, 0.0, 0, 0, 7048, 0x24f25a7990fba47cull},
+    {0.01, 1, 0, 0.0, 97, 0, 7048, 0x24f25a7990fba47cull}, /* split: same bytes */
+    {0.02, 7, 1, 0.015, 0, 0, 13531, 0x72b45bb3f3220347ull},
+    {0.05, 12345678901234567ull, 0, 0.0, 0, 0, 304, 0x06bd299d7a5890dcull},
+    /* The parallel opening: other points, the same on 1, 2 and 3 threads. */
+    {0.01, 1, 0, 0.0, 0, 2, 7037, 0x7448f060314e6bbfull},
+    {0.01, 1, 0, 0.0, 97, 3, 7037, 0x7448f060314e6bbfull},
+    {0.01, 1, 0, 0.0, 0, 4, 7037, 0x7448f060314e6bbfull},
+    {0.02, 7, 1, 0.015, 0, 3, 13507, 0x53054f1410469b71ull},
+    {0.002, 3, 0, 0.0, 0, 3, 174592, 0x35686e29a80a0ebbull},
 };
 
 static uint64_t fingerprint(const double *v, size_t n)
@@ -73,19 +82,20 @@ START_TEST(pinned_outputs)
     ck_assert_int_eq(pds_create(&s, g->radius, g->seed), 0);
     if (g->rectangle)
         ck_assert_int_eq(pds_set_domain(s, -1.0, 3.0, 2.0, 4.5), 0);
+    if (g->threads > 0)
+        ck_assert_int_eq(pds_set_threads(s, g->threads - 1), 0);
     run_all(s, g->chunk);
     if (g->refine > 0.0) {
         ck_assert_int_eq(pds_refine(s, g->refine), 0);
         run_all(s, g->chunk);
     }
     n = pds_count(s);
-    ck_assert_uint_eq(n, g->count);
     xy = malloc(2 * n * sizeof *xy);
     ck_assert_ptr_nonnull(xy);
     ck_assert_uint_eq(pds_points(s, 0, n, xy), n);
-    ck_assert_msg(fingerprint(xy, 2 * n) == g->hash,
-                  "case %d: fingerprint 0x%016llx, pinned 0x%016llx", _i,
-                  (unsigned long long)fingerprint(xy, 2 * n), (unsigned long long)g->hash);
+    ck_assert_msg(n == g->count && fingerprint(xy, 2 * n) == g->hash,
+                  "case %d: %zu points, fingerprint 0x%016llx; pinned %zu, 0x%016llx", _i, n,
+                  (unsigned long long)fingerprint(xy, 2 * n), g->count, (unsigned long long)g->hash);
     free(xy);
     pds_destroy(s);
 }
