@@ -169,8 +169,11 @@ std::vector<Run> runs_of(std::size_t n, const Span& span) {
 }  // namespace
 
 bool PolygonIndex::all_cells(const Box& b, Place place) const {
-    const std::size_t c0 = column_of(b.x0), c1 = column_of(b.x1);
-    for (std::size_t r = row_of(b.y0), r1 = row_of(b.y1); r <= r1; ++r)
+    return all_cells(column_of(b.x0), column_of(b.x1), row_of(b.y0), row_of(b.y1), place);
+}
+
+bool PolygonIndex::all_cells(std::size_t c0, std::size_t c1, std::size_t r0, std::size_t r1, Place place) const {
+    for (std::size_t r = r0; r <= r1; ++r)
         for (std::size_t c = c0; c <= c1; ++c)
             if (cell_place(c, r) != place) return false;
     return true;
@@ -187,12 +190,8 @@ std::size_t PolygonIndex::grid_cells_not_outside(double x0, double sx, std::size
         runs_of(cols, [&](double i) { return Run{column_of(x0 + i * sx), column_of(x0 + (i + 1.0) * sx), 1}; });
     std::size_t kept = 0;
     for (const Run& r : row_runs)
-        for (const Run& c : col_runs) {
-            bool outside = true;
-            for (std::size_t row = r.lo; row <= r.hi && outside; ++row)
-                for (std::size_t col = c.lo; col <= c.hi && outside; ++col) outside = cell_place(col, row) == kOutside;
-            if (!outside) kept += r.count * c.count;
-        }
+        for (const Run& c : col_runs)
+            if (!all_cells(c.lo, c.hi, r.lo, r.hi, kOutside)) kept += r.count * c.count;
     return kept;
 }
 

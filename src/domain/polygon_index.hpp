@@ -50,6 +50,8 @@ public:
     std::size_t row_of(double y) const;
     // Whether every grid cell box b overlaps is clean with place `place`.
     bool all_cells(const Box& b, Place place) const;
+    // The same for the cells in columns c0..c1 and rows r0..r1 (inclusive).
+    bool all_cells(std::size_t c0, std::size_t c1, std::size_t r0, std::size_t r1, Place place) const;
     // How many cells of another grid, whose cell (i, j) is [x0 + i sx,
     // x0 + (i + 1) sx] x [y0 + j sy, y0 + (j + 1) sy], i < cols, j < rows,
     // meet a cell of this one that is not outside (all_cells(box, kOutside)

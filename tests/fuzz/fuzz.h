@@ -276,6 +276,10 @@ static inline unsigned fz_range_unless_111(void) { return FZ_SPEC_111 ? 0u : FZ_
 /* Points one input may add (with the read budget in fuzz_api.c: milliseconds). */
 #define FZ_BUDGET 5000
 
+/* Lowers the input's point budget once its domain is far thinner than R
+ * (fuzz_ops.c): called before each operation, after the last one changed
+ * the domain or radius. */
+void fz_cap_thin_budget(fz_state *st);
 void fz_op_create(fz_state *st, fz_reader *r, unsigned arg);
 void fz_op_domain(fz_state *st, fz_reader *r);
 void fz_op_refine(fz_state *st, fz_reader *r);

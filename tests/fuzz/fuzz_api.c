@@ -159,6 +159,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_op_create(&st, &r, 0);
     for (ops = 0; ops < FZ_MAX_OPS && r.n > 0; ops++) {
         const unsigned b = fz_u8(&r), arg = b >> 4;
+        fz_cap_thin_budget(&st);
         static const char *const names[16] = {
             "create", "set_domain", "step", "run", "refine", "points", "verify", "free_area",
             "nulls", "strerror", "destroy", "run_to_end", "run_chunks", "create_bad",

@@ -28,7 +28,7 @@
  * and FZ_NO_GRID too: there nothing may be allocated by area.
  * Two more limits: with the parallel opening selected (1.5), whose first
  * point costs an epoch over every cell, bounded calls stop at FZ_GRID_MAX / 10;
- * a domain far thinner than R costs milliseconds a point (cap_thin_budget).
+ * a domain far thinner than R costs milliseconds a point (fz_cap_thin_budget).
  */
 #include <math.h>
 #include <stdio.h>
@@ -49,19 +49,18 @@ enum { WORK_NONE, WORK_BOUNDED, WORK_TO_END };
  * under ASan: its cells' coverage is decided exactly (the float filters
  * cannot resolve the height; found/NOTES, thin_domain_slow). Such an input
  * may add a sixteenth of the points. */
-static void cap_thin_budget(fz_state *st)
+void fz_cap_thin_budget(fz_state *st)
 {
     const double w = st->dom[2] - st->dom[0], h = st->dom[3] - st->dom[1];
     const double shorter = w < h ? w : h, longer = w < h ? h : w;
     const double r = st->target != 0 ? longer : st->radius;
-    if (shorter < 0x1p-12 * r && st->budget > FZ_BUDGET / 16) st->budget = FZ_BUDGET / 16;
+    if (st->s != NULL && shorter < 0x1p-12 * r && st->budget > FZ_BUDGET / 16) st->budget = FZ_BUDGET / 16;
 }
 
-static int work_allowed(fz_state *st)
+static int work_allowed(const fz_state *st)
 {
     const double n = fz_count_bound(st);
     double lo, hi;
-    if (st->s != NULL) cap_thin_budget(st);
     if (st->s == NULL || st->budget == 0) return WORK_NONE;
     /* found/NOTES: polygon_antenna_hang, polygon_crossing_maximal_early */
     if ((st->shape.antenna || st->shape.crossing) && !fz_strict()) return WORK_NONE;
