@@ -359,19 +359,17 @@ void SpaceTimeDartStage::write_points(Band& band) {
     for (const Band::Accepted& x : band.accepted) {
         const Candidate& c = band.cands[x.k];
         grid_.write(c.cell % cols, c.cell / cols, c.p, band.number[x.k]);
+        masks_[c.cell] = SpaceTimeGrid::kAllCovered;  // its point's disk holds it whole
     }
 }
 
 void SpaceTimeDartStage::drop_covered(Band& band) {
-    // Cells with a point leave, and so do cells whose sub-squares each lie
-    // in one disk (their masks grow in draw()).
-    const auto cols = static_cast<std::uint32_t>(grid_.cols());
+    // Cells whose sub-squares each lie in one disk leave: those with a
+    // point (write_points()) and those whose masks grew whole in draw().
     std::size_t kept = band.a0;
     for (std::size_t i = band.a0; i < band.a1; ++i) {
         const std::uint32_t cell = active_[i];
-        if (masks_[cell] == SpaceTimeGrid::kAllCovered) continue;
-        if (grid_.load(grid_.padded(cell % cols, cell / cols)) != 0) continue;
-        active_[kept++] = cell;
+        if (masks_[cell] != SpaceTimeGrid::kAllCovered) active_[kept++] = cell;
     }
     band.kept = kept - band.a0;
 }
