@@ -55,10 +55,10 @@ struct SpaceTimeDartStage::Band {
     std::vector<std::uint64_t> stack;     // decide()'s
     struct Accepted {
         double t;
-        std::uint32_t k;  // the candidate
+        std::uint32_t k;       // the candidate
+        std::uint32_t number;  // its point's index (merge())
     };
     std::vector<Accepted> accepted;  // by time once sorted
-    std::vector<std::uint32_t> number;    // an accepted candidate's point index
     std::size_t head = 0;                 // merge()'s cursor
     struct Darting {
         SpaceTimeStream stream;  // past the count
@@ -251,7 +251,6 @@ void SpaceTimeDartStage::draw(Band& band) {
     band.stack.reserve(1024);
     band.accepted.clear();
     band.accepted.reserve(m);
-    band.number.resize(m);
 }
 
 void SpaceTimeDartStage::list_candidates(Band& band, std::uint32_t band_index, bool write) {
@@ -273,7 +272,7 @@ void SpaceTimeDartStage::list_candidates(Band& band, std::uint32_t band_index, b
 void SpaceTimeDartStage::resolve(Band& band) {
     const std::size_t b = static_cast<std::size_t>(&band - bands_.data());
     for (std::size_t k = 0; k < band.cands.size(); ++k)
-        if (decide(b, k, band.stack)) band.accepted.push_back(Band::Accepted{band.cands[k].t, static_cast<std::uint32_t>(k)});
+        if (decide(b, k, band.stack)) band.accepted.push_back(Band::Accepted{band.cands[k].t, static_cast<std::uint32_t>(k), 0});
     // By time, for merge(): each band sorts its own, side by side.
     std::sort(band.accepted.begin(), band.accepted.end(), [&](const Band::Accepted& x, const Band::Accepted& y) {
         return x.t != y.t ? x.t < y.t : earlier(band.cands[x.k], band.cands[y.k]);
@@ -333,21 +332,29 @@ bool SpaceTimeDartStage::decide(std::size_t b0, std::size_t k0, std::vector<std:
 }
 
 void SpaceTimeDartStage::merge() {
-    // The bands' accepted candidates by time (each band's list sorted by
-    // resolve()), numbered: a merge of a few sorted lists.
-    for (Band& band : bands_) band.head = 0;
+    // The bands' accepted candidates numbered by time: a merge of a few
+    // lists sorted by resolve(), which reads the lists alone (the
+    // candidates only for ties of time); write_points() puts the points in
+    // place, band by band.
+    std::size_t total = 0;
+    for (Band& band : bands_) {
+        band.head = 0;
+        total += band.accepted.size();
+    }
     pending_base_ = points_.size();
     next_pending_ = 0;
-    for (;;) {
+    pending_.resize(total);  // within the room run_epoch() reserved
+    for (std::size_t next = 0; next < total; ++next) {
         Band* best = nullptr;
-        for (Band& band : bands_)
-            if (band.head < band.accepted.size() &&
-                (!best || earlier(band.cands[band.accepted[band.head].k], best->cands[best->accepted[best->head].k])))
-                best = &band;
-        if (!best) break;
-        const std::uint32_t k = best->accepted[best->head++].k;
-        best->number[k] = static_cast<std::uint32_t>(pending_base_ + pending_.size());
-        pending_.push_back(best->cands[k].p);
+        for (Band& band : bands_) {
+            if (band.head == band.accepted.size()) continue;
+            if (best) {
+                const Band::Accepted &x = band.accepted[band.head], &y = best->accepted[best->head];
+                if (x.t > y.t || (x.t == y.t && !earlier(band.cands[x.k], best->cands[y.k]))) continue;
+            }
+            best = &band;
+        }
+        best->accepted[best->head++].number = static_cast<std::uint32_t>(pending_base_ + next);
     }
 }
 
@@ -358,7 +365,8 @@ void SpaceTimeDartStage::write_points(Band& band) {
     for (const Candidate& c : band.cands) grid_.store(grid_.padded(c.cell % cols, c.cell / cols), 0);
     for (const Band::Accepted& x : band.accepted) {
         const Candidate& c = band.cands[x.k];
-        grid_.write(c.cell % cols, c.cell / cols, c.p, band.number[x.k]);
+        pending_[x.number - pending_base_] = c.p;
+        grid_.write(c.cell % cols, c.cell / cols, c.p, x.number);
         masks_[c.cell] = SpaceTimeGrid::kAllCovered;  // its point's disk holds it whole
     }
 }
