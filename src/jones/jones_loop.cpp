@@ -321,12 +321,17 @@ double JonesLoop<Space, Rule>::free_area() const {
     // Cells are the torus's only once the margin is settled.
     if (space_.pending()) throw std::bad_alloc();
     // The tree holds upper bounds; the exact area is re-measured, cell by cell,
-    // in leaf order (so the sum is the same on every call).
+    // in leaf order (so the sum is the same on every call). A cell whose
+    // measure rounding leaves open counts only if the exact test finds room
+    // in it, as when a draw selects it: a pattern that is maximal has 0,
+    // not a residue of rounding (a refine by an ulp leaves such cells).
     const MeshCells cells = this->cells();
     double sum = 0.0;
     tree_.for_each_positive([&](SiteIndex site) {
         const VertexIndex v = vertex_of(site);
-        if (!rule_.hidden(dt_, v)) sum += cells.measure(v).free();
+        if (rule_.hidden(dt_, v)) return true;
+        const CellMeasure m = cells.measure(v);
+        if (m.free() > 0.0 && !(m.doubtful && cells.covered_exactly(v))) sum += m.free();
         return true;
     });
     return sum;

@@ -166,6 +166,37 @@ START_TEST(same_points_at_any_power_of_two)
 }
 END_TEST
 
+/* A refine by one ulp leaves cells whose free area rounding cannot settle:
+ * where pds_verify finds the pattern maximal, pds_free_area is exactly 0
+ * (not a residue such as 7.9e-33), and pds_run adds nothing. */
+START_TEST(refined_by_an_ulp_no_free_area_where_maximal)
+{
+    static const double xy[6] = {4.875, 1.875, 0.62500000000000011, 2.3080127018922192,
+                                 0.62499999999999978, 1.4419872981077808};
+    static const size_t ends[1] = {3};
+    uint64_t seed;
+    int maximal = 0;
+
+    for (seed = 0; seed < 20; seed++) {
+        pds_sampler *s = sampler_new(0.1, seed);
+        size_t n;
+        ck_assert_int_eq(pds_set_polygon(s, xy, ends, 1), 0);
+        ck_assert_int_eq(pds_run(s, 0, NULL), PDS_DONE);
+        n = pds_count(s);
+        ck_assert_int_eq(pds_refine(s, nextafter(0.1, 0.0)), 0);
+        if (pds_verify(s) == PDS_DONE) {
+            maximal++;
+            ck_assert_msg(pds_free_area(s) == 0.0, "seed %llu: maximal, free area %g", (unsigned long long)seed,
+                          pds_free_area(s));
+            ck_assert_int_eq(pds_run(s, 0, NULL), PDS_DONE);
+            ck_assert_uint_eq(pds_count(s), n);
+        }
+        pds_destroy(s);
+    }
+    ck_assert_int_gt(maximal, 0);
+}
+END_TEST
+
 static const domain_extra nothing = {"the L", NULL, NULL};
 
 START_TEST(same_points_however_split)
@@ -199,6 +230,7 @@ Suite *domain_points_suite(void)
     tcase_add_loop_test(tc, maximal_in_each_shape, 0, (int)N_SHAPES);
     tcase_add_loop_test(tc, maximal_in_the_l_scaled_and_moved, 0, 2);
     tcase_add_test(tc, same_points_at_any_power_of_two);
+    tcase_add_test(tc, refined_by_an_ulp_no_free_area_where_maximal);
     tc = new_tcase(s, "splits, cancel, count, refine");
     tcase_add_test(tc, same_points_however_split);
     tcase_add_test(tc, same_points_canceled_at_every_call);
