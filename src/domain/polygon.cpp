@@ -132,8 +132,12 @@ int reading_exponent(const double* c, std::size_t n) {
         lo = std::min(lo, a);
     }
     if (hi == 0.0 || (hi <= 0x1p500 && hi >= 0x1p-500)) return 0;
+    // The exponent of the largest brings it near 1; a smaller one is enough
+    // (the largest at most 2^500) and keeps the smallest a normal number,
+    // so that each scales exactly (-2^1023 beside 0.25: 2^1020).
     const int e = std::ilogb(hi);
-    return lo >= std::ldexp(1.0, e - 1022) ? e : 0;  // each stays a normal number: exact
+    const int k = std::min(e, std::ilogb(lo) + 1022);
+    return k >= e - 500 ? k : 0;
 }
 
 Polygon Polygon::scaled(int k) const {

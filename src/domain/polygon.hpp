@@ -79,9 +79,10 @@ private:
 // The power of two e at which to read user coordinates c[0..n) (user =
 // read * 2^e), so that the predicates' products on them neither overflow nor
 // underflow: 0 when every nonzero finite |c| lies in 2^-500 .. 2^500;
-// otherwise the exponent of the largest, when every nonzero one scales
-// exactly (else 0: a coordinate below 2^-1022 of the largest, and the first
-// point refuses the domain anyway, below 2^-900).
+// otherwise the exponent of the largest, or a smaller one that brings the
+// largest to at most 2^500 and keeps every nonzero one a normal number, so
+// each scales exactly (else 0: a coordinate below about 2^-1522 of the
+// largest, and the first point refuses the domain anyway, below 2^-900).
 int reading_exponent(const double* c, std::size_t n);
 
 }  // namespace pds

@@ -145,6 +145,33 @@ START_TEST(mask_at_any_power_of_two)
 }
 END_TEST
 
+/* A mask or polygon reaching -2^1023 on one side and 0.25 on another is
+ * taken (read at 2^1020, which keeps 0.25 a normal number; it was refused
+ * as "on one line"), and its first point is refused as the rectangle's is:
+ * 0.25 lies below 2^-900 times the largest coordinate (PDS_ERANGE). */
+START_TEST(mask_from_a_quarter_to_the_largest_double)
+{
+    static const unsigned char full[20] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+    static const double box[4] = {0.25, -0x1p1023, 6.1745829209798319e304, -8.9761165084696184e307};
+    const double xy[6] = {box[0], box[1], box[2], box[1], box[0], box[3]};
+    const size_t ends[1] = {3};
+    pds_sampler *rect = sampler_new(6.1745829209798322e303, 1), *mask = sampler_new(6.1745829209798322e303, 1),
+                *poly = sampler_new(6.1745829209798322e303, 1);
+
+    ck_assert_int_eq(pds_set_domain(rect, box[0], box[1], box[2], box[3]), 0);
+    ck_assert_int_eq(pds_set_domain(mask, box[0], box[1], box[2], box[3]), 0);
+    ck_assert_msg(pds_set_mask(mask, 5, 4, full) == 0, "%s", pds_errmsg(mask));
+    ck_assert_msg(pds_set_polygon(poly, xy, ends, 1) == 0, "%s", pds_errmsg(poly));
+    ck_assert_int_eq(pds_run(rect, 0, NULL), PDS_ERANGE);
+    ck_assert_int_eq(pds_run(mask, 0, NULL), PDS_ERANGE);
+    ck_assert_int_eq(pds_run(poly, 0, NULL), PDS_ERANGE);
+    ck_assert_uint_eq(pds_count(mask) + pds_count(poly), 0);
+    pds_destroy(rect);
+    pds_destroy(mask);
+    pds_destroy(poly);
+}
+END_TEST
+
 START_TEST(mask_domain_before_or_after)
 {
     pds_sampler *a = masked(0.05, 9, 1), *b = masked(0.05, 9, 0);
@@ -210,6 +237,7 @@ Suite *domain_raster_suite(void)
     tcase_add_test(tc, mask_domain_before_or_after);
     tcase_add_test(tc, mask_with_a_tiny_radius_steps);
     tcase_add_test(tc, mask_at_any_power_of_two);
+    tcase_add_test(tc, mask_from_a_quarter_to_the_largest_double);
     tc = new_tcase(s, "radius map");
     tcase_add_test(tc, radius_map_over_the_polygon_box);
     return s;
