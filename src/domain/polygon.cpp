@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include "domain/polygon_splits.hpp"
+
 namespace pds {
 
 namespace {
@@ -63,9 +65,15 @@ std::vector<std::uint8_t> paired_copies(const PolygonRings& rings) {
 }  // namespace
 
 Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rings)
-    : rings_(std::make_unique<PolygonRings>(xy, ring_ends, rings)),
-      index_(std::make_unique<PolygonIndex>(*rings_)),
-      perimeter_(rings_->perimeter()) {
+    : rings_(std::make_unique<PolygonRings>(xy, ring_ends, rings)), index_(std::make_unique<PolygonIndex>(*rings_)) {
+    // Edges that overlap in part are split where they meet (polygon_splits.hpp).
+    std::vector<double> split_xy;
+    std::vector<std::size_t> split_ends;
+    if (split_at_vertices_on_edges(*rings_, *index_, split_xy, split_ends)) {
+        rings_ = std::make_unique<PolygonRings>(split_xy.data(), split_ends.data(), split_ends.size());
+        index_ = std::make_unique<PolygonIndex>(*rings_);
+    }
+    perimeter_ = rings_->perimeter();
     // Each edge's side, probed: the region's boundary, oriented with the
     // inside on its left, is then known edge by edge, even where rings
     // cross (a bow tie's two lobes run opposite ways), and the even-odd area

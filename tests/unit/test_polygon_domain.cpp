@@ -152,6 +152,34 @@ START_TEST(a_ring_traced_twice_is_no_outline) {
 }
 END_TEST
 
+START_TEST(edges_that_overlap_in_part_cancel_there) {
+    // Two squares the same way round, overlapping in a strip: their sides
+    // overlap in part along the strip, where the even-odd rule cancels them
+    // (the strip is outside), so the area is 4 + 4 - 2 * 0.5.
+    const Polygon strip = rings_of({square(0, 0, 2, false), square(0, 1.75, 2, false)});
+    ck_assert_double_eq_tol(strip.area(), 7.0, 1e-12);
+    ck_assert(!strip.contains(Point{1, 1.875}) && strip.contains(Point{1, 1}) && strip.contains(Point{1, 3}));
+    ck_assert(strip.locate(Point{2, 1.875}) == pds::PolygonIndex::kOutside);
+    // Side by side, sharing part of a side (run opposite ways): the shared
+    // part is inside, not outline.
+    const Polygon side = rings_of({square(0, 0, 2, false), square(2, 1, 2, false)});
+    ck_assert_double_eq_tol(side.area(), 8.0, 1e-12);
+    ck_assert(side.locate(Point{2, 1.5}) == pds::PolygonIndex::kInside);
+    ck_assert(side.locate(Point{2, 0.5}) == pds::PolygonIndex::kOnOutline);
+    for (std::uint64_t seed = 1; seed <= 3; ++seed)
+        for (const bool in_strip : {true, false}) {
+            pds::Sampler s(0.1, seed);
+            s.set_polygon(std::make_shared<const Polygon>(
+                rings_of({square(0, 0, 2, false), in_strip ? square(0, 1.75, 2, false) : square(2, 1, 2, false)})));
+            std::size_t added = 0;
+            ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+            const pds::VerifyReport rep = s.verify();
+            ck_assert_msg(rep.maximal, "seed %llu, %s: %s", static_cast<unsigned long long>(seed),
+                          in_strip ? "strip" : "side by side", rep.failure.c_str());
+        }
+}
+END_TEST
+
 }  // namespace
 
 Suite* polygon_domain_suite() {
@@ -163,6 +191,7 @@ Suite* polygon_domain_suite() {
     tcase_add_test(t, count_bound_holds_a_packing);
     tcase_add_test(t, scaling_is_exact);
     tcase_add_test(t, a_ring_traced_twice_is_no_outline);
+    tcase_add_test(t, edges_that_overlap_in_part_cancel_there);
     suite_add_tcase(s, t);
     return s;
 }
