@@ -434,6 +434,8 @@ PDS_API size_t pds_radii(const pds_sampler *s, size_t first, size_t count, doubl
  * Returns 0, PDS_EINVAL (s NULL, xy or ring_ends NULL with nrings > 0, a
  * ring with fewer than 3 distinct vertices or all on one line, a
  * non-finite coordinate, decreasing ends, an outline that encloses nothing,
+ * coordinates beyond 2^500 beside a nonzero one below about 2^-1522 of the
+ * largest, which no one scale reads exactly,
  * periodic set; the message names the ring and vertex, counted from 0),
  * PDS_ENOMEM, PDS_ESTATE (points exist already). (1.4)
  */
@@ -449,8 +451,9 @@ PDS_API int pds_set_polygon(pds_sampler *s, const double *xy, const size_t *ring
  * A mask replaces an earlier polygon or mask; w == 0 or h == 0 (inside may
  * be NULL) goes back to the rectangle.
  * Returns 0, PDS_EINVAL (s NULL, inside NULL with w*h > 0, w*h overflowing,
- * no pixel inside, pixel lines that round together in the rectangle,
- * periodic set), PDS_ENOMEM, PDS_ESTATE (points exist already). While a mask
+ * no pixel inside, pixel lines that round together in the rectangle, a
+ * rectangle whose corners no one scale reads exactly, as for
+ * pds_set_polygon, periodic set), PDS_ENOMEM, PDS_ESTATE (points exist already). While a mask
  * is set, pds_set_domain re-spreads it and may refuse a rectangle the same
  * way (PDS_EINVAL, nothing changed). A radius map is spread over the
  * bounding box of the inside pixels. (1.4)

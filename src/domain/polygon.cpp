@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "domain/polygon_splits.hpp"
@@ -145,7 +146,13 @@ int reading_exponent(const double* c, std::size_t n) {
     // so that each scales exactly (-2^1023 beside 0.25: 2^1020).
     const int e = std::ilogb(hi);
     const int k = std::min(e, std::ilogb(lo) + 1022);
-    return k >= e - 500 ? k : 0;
+    if (k < e - 500) {
+        char what[160];
+        std::snprintf(what, sizeof what,
+                      "its coordinates' magnitudes run from %.3g to %.3g, a span no one scale reads exactly", lo, hi);
+        throw DomainError(what);
+    }
+    return k;
 }
 
 Polygon Polygon::scaled(int k) const {

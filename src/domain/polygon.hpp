@@ -81,8 +81,8 @@ private:
 // underflow: 0 when every nonzero finite |c| lies in 2^-500 .. 2^500;
 // otherwise the exponent of the largest, or a smaller one that brings the
 // largest to at most 2^500 and keeps every nonzero one a normal number, so
-// each scales exactly (else 0: a coordinate below about 2^-1522 of the
-// largest, and the first point refuses the domain anyway, below 2^-900).
+// each scales exactly. Throws DomainError when none does (beyond 2^500, a
+// nonzero coordinate below about 2^-1522 of the largest).
 int reading_exponent(const double* c, std::size_t n);
 
 }  // namespace pds

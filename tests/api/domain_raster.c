@@ -15,6 +15,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "domain_check.h"
 #include "helpers.h"
@@ -172,6 +173,27 @@ START_TEST(mask_from_a_quarter_to_the_largest_double)
 }
 END_TEST
 
+/* Coordinates from 1.8e-307 to 3e296, which no power of two reads exactly
+ * (the smallest lies below 2^-1522 of the largest): the mask is refused with
+ * a message that says so (it said "on one line"); the rectangle alone is
+ * refused at its first point. */
+START_TEST(mask_from_near_the_least_normal_to_3e296)
+{
+    static const unsigned char ring[16] = {1, 1, 1, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 1, 1, 1};
+    static const double box[4] = {1.1864819587706575e-296, 1.7800591067267698e-307, 3.0133197055701197e296,
+                                  3.0135153699541016e296};
+    pds_sampler *rect = sampler_new(1e295, 1), *mask = sampler_new(1e295, 1);
+
+    ck_assert_int_eq(pds_set_domain(rect, box[0], box[1], box[2], box[3]), 0);
+    ck_assert_int_eq(pds_set_domain(mask, box[0], box[1], box[2], box[3]), 0);
+    ck_assert_int_eq(pds_set_mask(mask, 4, 4, ring), PDS_EINVAL);
+    ck_assert_msg(strstr(pds_errmsg(mask), "no one scale reads exactly") != NULL, "%s", pds_errmsg(mask));
+    ck_assert_int_eq(pds_run(rect, 0, NULL), PDS_ERANGE);
+    pds_destroy(rect);
+    pds_destroy(mask);
+}
+END_TEST
+
 START_TEST(mask_domain_before_or_after)
 {
     pds_sampler *a = masked(0.05, 9, 1), *b = masked(0.05, 9, 0);
@@ -238,6 +260,7 @@ Suite *domain_raster_suite(void)
     tcase_add_test(tc, mask_with_a_tiny_radius_steps);
     tcase_add_test(tc, mask_at_any_power_of_two);
     tcase_add_test(tc, mask_from_a_quarter_to_the_largest_double);
+    tcase_add_test(tc, mask_from_near_the_least_normal_to_3e296);
     tc = new_tcase(s, "radius map");
     tcase_add_test(tc, radius_map_over_the_polygon_box);
     return s;

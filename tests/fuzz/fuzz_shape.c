@@ -356,6 +356,13 @@ int fz_shape_mask(fz_shape *sh, size_t w, size_t h, const unsigned char *pix, co
         if (((rect[2] - rect[0]) / (double)w < 0x1p-30 * m || (rect[3] - rect[1]) / (double)h < 0x1p-30 * m) &&
             verdict == 1 && !fz_strict())
             verdict = -1;
+        { /* Corners beyond 2^500 beside a nonzero one no scale keeps exact: refused
+           * (found/NOTES, mask_magnitudes_beyond_any_scale), as such a polygon. */
+            double lo = HUGE_VAL;
+            for (i = 0; i < 4; i++)
+                if (rect[i] != 0.0 && fabs(rect[i]) < lo) lo = fabs(rect[i]);
+            if (m > 0x1p500 && lo < 0x1p-1000 * m && verdict == 1 && !fz_strict()) verdict = -1;
+        }
     }
     sh->v_lo = 4;
     sh->v_hi = 4 * n;
