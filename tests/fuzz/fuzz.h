@@ -101,6 +101,10 @@ typedef struct {
     int antenna;         /* a ring turns straight back along its last edge: pds_run
                           * never returns (found/NOTES), so no point is asked for
                           * unless PDS_FUZZ_STRICT is set */
+    int fine;            /* edges or pixel sides below 2^-30 of the coordinates: a
+                          * maximal run may fail pds_verify near the outline
+                          * (found/NOTES, mask_fine_pixels_verify), so no point is
+                          * asked for unless PDS_FUZZ_STRICT is set */
 } fz_shape;
 
 typedef struct {

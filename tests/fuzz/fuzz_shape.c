@@ -264,6 +264,7 @@ int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t 
         }
         if (longest < 0x1p-30 * m) {
             sh->area_known = 0;
+            sh->fine = 1;
             if (!fz_strict()) verdict = -1;
         }
     }
@@ -353,9 +354,10 @@ int fz_shape_mask(fz_shape *sh, size_t w, size_t h, const unsigned char *pix, co
                          (rect[3] - rect[1]) / (double)h >= 0x1p-22 * m;
         /* Pixel sides below 2^-30 of the coordinates: the outline's sides are
          * probed within rounding, as polygon_below_resolution's. */
-        if (((rect[2] - rect[0]) / (double)w < 0x1p-30 * m || (rect[3] - rect[1]) / (double)h < 0x1p-30 * m) &&
-            verdict == 1 && !fz_strict())
-            verdict = -1;
+        if ((rect[2] - rect[0]) / (double)w < 0x1p-30 * m || (rect[3] - rect[1]) / (double)h < 0x1p-30 * m) {
+            sh->fine = 1;
+            if (verdict == 1 && !fz_strict()) verdict = -1;
+        }
         { /* Corners beyond 2^500 beside a nonzero one no scale keeps exact: refused
            * (found/NOTES, mask_magnitudes_beyond_any_scale), as such a polygon. */
             double lo = HUGE_VAL;
