@@ -64,6 +64,18 @@ std::uint16_t SpaceTimeGrid::outside(std::int64_t col, std::int64_t row, const B
     return mask;
 }
 
+std::uint16_t SpaceTimeGrid::covered_by_disks_at(const Point& p, const Aim& a, const Box& domain) const {
+    std::uint16_t mask = 0;
+    for (int di = a.y_lo; di <= a.y_hi; ++di)
+        for (int dj = a.x_lo; dj <= a.x_hi; ++dj) {
+            const Word w = load(a.cell + static_cast<std::size_t>(di * static_cast<std::ptrdiff_t>(stride_) + dj));
+            if (w == 0) continue;
+            const Point q = rounded(w, a.col + dj, a.row + di);
+            if (rounded_within(p, q) >= 0) mask = static_cast<std::uint16_t>(mask | covered_by(a.col, a.row, q, domain));
+        }
+    return mask;
+}
+
 std::uint16_t SpaceTimeGrid::covered_by(std::int64_t col, std::int64_t row, const Point& q, const Box& domain) const {
     // A sub-square's farthest corner is no nearer than its centre: none is
     // covered when every centre lies beyond R (the usual case for the

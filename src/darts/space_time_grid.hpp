@@ -105,6 +105,9 @@ public:
     // margin far above every rounding, so a bit set is a sub-square covered.
     // The sub-squares are clipped to `domain` (darts never land outside it).
     std::uint16_t covered_by(std::int64_t col, std::int64_t row, const Point& q, const Box& domain) const;
+    // The sub-squares of p's cell (aimed at by a) that lie in one of the
+    // disks around p, from the grid's points not surely beyond R of p.
+    std::uint16_t covered_by_disks_at(const Point& p, const Aim& a, const Box& domain) const;
     // The sub-squares of that cell that lie outside `domain` (edge cells).
     std::uint16_t outside(std::int64_t col, std::int64_t row, const Box& domain) const;
 

@@ -214,8 +214,7 @@ void SpaceTimeDartStage::draw(Band& band) {
             // A dart in a sub-square known covered is covered.
             if (mask >> SpaceTimeGrid::sub_square(u, v) & 1u) continue;
             // Only the earlier epochs' points are in the grid now, numbered.
-            const SpaceTimeGrid::Aim a = grid_.aim_in(p, col, row);
-            if (grid_.load(a.cell) != 0) break;  // the cell is covered whole (an active cell has no point)
+            const SpaceTimeGrid::Aim a = grid_.aim_in(p, col, row);  // an active cell holds no point
             const auto covers = [&](int di, int dj) {
                 const SpaceTimeGrid::Word w = grid_.load(a.cell + static_cast<std::size_t>(di * stride + dj));
                 if (w == 0) return false;
@@ -227,15 +226,7 @@ void SpaceTimeDartStage::draw(Band& band) {
                 // Covered: the disks that cover this dart may cover whole
                 // sub-squares of its cell. The certificate is paid for by
                 // the covered darts, where it is likely to pass.
-                for (int di = a.y_lo; di <= a.y_hi; ++di) {
-                    for (int dj = a.x_lo; dj <= a.x_hi; ++dj) {
-                        const SpaceTimeGrid::Word w = grid_.load(a.cell + static_cast<std::size_t>(di * stride + dj));
-                        if (w == 0) continue;
-                        const Point q = grid_.rounded(w, a.col + dj, a.row + di);
-                        if (grid_.rounded_within(p, q) < 0) continue;
-                        mask = static_cast<std::uint16_t>(mask | grid_.covered_by(col, row, q, box));
-                    }
-                }
+                mask = static_cast<std::uint16_t>(mask | grid_.covered_by_disks_at(p, a, box));
                 if (mask == SpaceTimeGrid::kAllCovered) break;  // its other darts are covered too
                 continue;
             }
