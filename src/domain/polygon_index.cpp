@@ -15,12 +15,6 @@ namespace {
 double min_x(const Point& a, const Point& b) { return std::min(a.x, b.x); }
 double max_x(const Point& a, const Point& b) { return std::max(a.x, b.x); }
 
-// p on the closed segment ab (exact).
-bool on_segment(const Point& p, const Point& a, const Point& b) {
-    return p.x >= min_x(a, b) && p.x <= max_x(a, b) && p.y >= std::min(a.y, b.y) && p.y <= std::max(a.y, b.y) &&
-           orient2d(a, b, p) == 0;
-}
-
 // About sixteen cells per edge, at least 1024 and at most 2^22.
 constexpr double kCellsPerEdge = 16.0;
 constexpr double kMinCells = 1024.0;
@@ -46,6 +40,11 @@ std::size_t PolygonIndex::row_of(double y) const {
     const double r = std::floor((y - box_.y0) * row_scale_);
     if (!(r > 0.0)) return 0;
     return r >= static_cast<double>(rows_) ? rows_ - 1 : static_cast<std::size_t>(r);
+}
+
+bool on_segment(const Point& p, const Point& a, const Point& b) {
+    return p.x >= min_x(a, b) && p.x <= max_x(a, b) && p.y >= std::min(a.y, b.y) && p.y <= std::max(a.y, b.y) &&
+           orient2d(a, b, p) == 0;
 }
 
 PolygonIndex::PolygonIndex(const PolygonRings& rings) : rings_(rings), box_(rings.bounds()) {

@@ -31,6 +31,9 @@
 
 namespace pds {
 
+// Whether p lies on the closed segment from a to b (exact).
+bool on_segment(const Point& p, const Point& a, const Point& b);
+
 class PolygonIndex {
 public:
     // Where a point lies.

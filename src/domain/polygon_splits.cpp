@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 
-#include "core/predicates.hpp"
 
 namespace pds {
 
@@ -19,8 +18,7 @@ struct Split {
 // Whether p lies on the segment from a to b, not at an end (exact).
 bool strictly_inside(const Point& p, const Point& a, const Point& b) {
     if ((p.x == a.x && p.y == a.y) || (p.x == b.x && p.y == b.y)) return false;
-    return p.x >= std::min(a.x, b.x) && p.x <= std::max(a.x, b.x) && p.y >= std::min(a.y, b.y) &&
-           p.y <= std::max(a.y, b.y) && orient2d(a, b, p) == 0;
+    return on_segment(p, a, b);
 }
 
 // Position along the edge from a to b of a point on it: its coordinate along
