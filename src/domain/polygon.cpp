@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "core/predicates.hpp"
 #include "domain/polygon_splits.hpp"
 
 namespace pds {
@@ -15,19 +16,37 @@ namespace {
 
 // The side of edge i the inside lies on: +1 left, -1 right, 0 when the
 // probes do not tell (both alike: the edge is cancelled by another, or
-// edges crowd it closer than the probes' offset).
+// edges crowd it closer than every offset tried).
+//
+// The probes sit on the normal through the edge's midpoint, at offsets from
+// about 2^-48 of the coordinates (some 16-32 ulps: clear of rounding, and
+// below any feature a radius above the precision limit can resolve) up by
+// factors of 16 to 2^-20 of the edge's length. The first offset at which the
+// two probes differ decides. Starting small matters where edges crowd one
+// another closer than 2^-20 of their length (a mask of pixels far taller
+// than wide): a probe that jumps over a neighbouring edge reads the wrong
+// place, and an offset below rounding reads the edge itself. Each probe is
+// checked exactly to lie strictly on its side of the edge.
 int edge_side(const PolygonRings& rings, const PolygonIndex& index, std::size_t i) {
-    // The offset is 2^-20 of the edge's length: far below any feature a
-    // sampled pattern can resolve, far above rounding.
-    constexpr double kOffset = 0x1p-20;
     const Point a = rings.edge_start(i), b = rings.edge_end(i);
     const Point m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
-    const Point normal{-(b.y - a.y) * kOffset, (b.x - a.x) * kOffset};  // to the left
-    const PolygonIndex::Place left = index.locate(Point{m.x + normal.x, m.y + normal.y});
-    const PolygonIndex::Place right = index.locate(Point{m.x - normal.x, m.y - normal.y});
-    if (left == PolygonIndex::kInside && right == PolygonIndex::kOutside) return 1;
-    if (left == PolygonIndex::kOutside && right == PolygonIndex::kInside) return -1;
-    return 0;
+    const double dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
+    if (!(length > 0.0)) return 0;
+    const double scale =
+        std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y), length});
+    const double largest = std::max(0x1p-20 * length, 0x1p-48 * scale);
+    for (double offset = 0x1p-48 * scale;; offset *= 16.0) {
+        const bool last = offset >= largest;
+        if (last) offset = largest;
+        const double f = offset / length;
+        const Point left{m.x - dy * f, m.y + dx * f}, right{m.x + dy * f, m.y - dx * f};
+        if (orient2d(a, b, left) > 0 && orient2d(a, b, right) < 0) {
+            const PolygonIndex::Place l = index.locate(left), r = index.locate(right);
+            if (l == PolygonIndex::kInside && r == PolygonIndex::kOutside) return 1;
+            if (l == PolygonIndex::kOutside && r == PolygonIndex::kInside) return -1;
+        }
+        if (last) return 0;
+    }
 }
 
 // Edge i's term of the shoelace area, about the centre of the bounding box

@@ -194,6 +194,34 @@ START_TEST(mask_from_near_the_least_normal_to_3e296)
 }
 END_TEST
 
+/* Pixels 2^-38 of their coordinates wide and a million times taller (a
+ * mask over a thin strip at 1e15, R some 8000 pixels wide): every outline
+ * edge keeps its side, and the run ends maximal. The sides used to be
+ * probed at 2^-20 of an edge's length, which jumped over the columns beside
+ * a tall edge and fell on a short one: a whole ring was dropped, and the
+ * run stopped with half its points. */
+START_TEST(mask_of_pixels_far_taller_than_wide)
+{
+    static const unsigned char pix[64] = {
+        0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 3, 0, 3, 3, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 3, 3, 3, 3, 3, 3, 0,
+        0, 3, 0, 0, 0, 0, 3, 0, 0, 3, 0, 3, 3, 0, 3, 0, 0, 3, 0, 3, 3, 0, 3, 0, 0, 3, 0, 0, 0, 0, 3, 0,
+    };
+    uint64_t seed;
+
+    for (seed = 1; seed <= 3; seed++) {
+        pds_sampler *s = sampler_new(29802322.387695309, seed);
+        int rc;
+
+        ck_assert_int_eq(pds_set_domain(s, 1e15, 1e15, 1000000000029802.4, 1000029802322387.8), 0);
+        ck_assert_msg(pds_set_mask(s, 8, 8, pix) == 0, "%s", pds_errmsg(s));
+        ck_assert_int_eq(pds_run(s, 0, NULL), 0);
+        rc = pds_verify(s);
+        ck_assert_msg(rc == 0, "seed %d, %zu points: %s", (int)seed, pds_count(s), pds_errmsg(s));
+        pds_destroy(s);
+    }
+}
+END_TEST
+
 START_TEST(mask_domain_before_or_after)
 {
     pds_sampler *a = masked(0.05, 9, 1), *b = masked(0.05, 9, 0);
@@ -261,6 +289,7 @@ Suite *domain_raster_suite(void)
     tcase_add_test(tc, mask_at_any_power_of_two);
     tcase_add_test(tc, mask_from_a_quarter_to_the_largest_double);
     tcase_add_test(tc, mask_from_near_the_least_normal_to_3e296);
+    tcase_add_test(tc, mask_of_pixels_far_taller_than_wide);
     tc = new_tcase(s, "radius map");
     tcase_add_test(tc, radius_map_over_the_polygon_box);
     return s;

@@ -2,7 +2,8 @@
 // even-odd area whatever the rings' orientations, an outline with nothing
 // inside refused, a uniform point (inside, and spread by area), the count
 // bound against a packing, exact scaling, a ring traced twice (no part of
-// the outline) around and inside the region.
+// the outline) around and inside the region, frames far thinner than their
+// sides are long.
 #include <check.h>
 
 #include <cmath>
@@ -180,6 +181,24 @@ START_TEST(edges_that_overlap_in_part_cancel_there) {
 }
 END_TEST
 
+START_TEST(frames_far_thinner_than_their_sides_are_long) {
+    // A unit square frame 2^-24 or 2^-36 wide, beside a small square. Each
+    // side's probes must start closer than the frame is wide: at 2^-20 of a
+    // side's length they jump over the frame, every side ties, and the frame
+    // is dropped (the area was the small square's alone).
+    for (const double d : {0x1p-24, 0x1p-36}) {
+        const std::vector<double> outer{1, 1, 2, 1, 2, 2, 1, 2};
+        const std::vector<double> inner{1 + d, 1 + d, 2 - d, 1 + d, 2 - d, 2 - d, 1 + d, 2 - d};
+        const Polygon shape = rings_of({outer, inner, square(2.5, 2.5, 0.0625, false)});
+        const double frame = 1.0 - (1.0 - 2 * d) * (1.0 - 2 * d);
+        ck_assert_msg(std::fabs(shape.area() - (frame + 0x1p-8)) <= 1e-9 * frame, "d %a: area %.17g", d, shape.area());
+        ck_assert(shape.locate(Point{1 + 0.5 * d, 1.5}) == pds::PolygonIndex::kInside);
+        ck_assert(shape.locate(Point{1.5, 2 - 0.5 * d}) == pds::PolygonIndex::kInside);
+        ck_assert(shape.locate(Point{1 + 2 * d, 1.5}) == pds::PolygonIndex::kOutside);
+    }
+}
+END_TEST
+
 }  // namespace
 
 Suite* polygon_domain_suite() {
@@ -192,6 +211,7 @@ Suite* polygon_domain_suite() {
     tcase_add_test(t, scaling_is_exact);
     tcase_add_test(t, a_ring_traced_twice_is_no_outline);
     tcase_add_test(t, edges_that_overlap_in_part_cancel_there);
+    tcase_add_test(t, frames_far_thinner_than_their_sides_are_long);
     suite_add_tcase(s, t);
     return s;
 }
