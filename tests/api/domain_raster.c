@@ -222,6 +222,41 @@ START_TEST(mask_of_pixels_far_taller_than_wide)
 }
 END_TEST
 
+/* A 4 x 4 square polygon at 1e15 (sides of 32 ulps) and a ring mask over
+ * [1e15, 1e15 + 1] x [1e15, 1e15 + 1000]: taken as their rectangles are
+ * (they were refused as "enclosing nothing": the probes that tell an edge's
+ * side fell within rounding of it), then judged at the first point as the
+ * rectangle is: PDS_ERANGE below 2^-26 of the coordinates, one point at a
+ * radius above it. */
+START_TEST(shapes_of_a_few_ulps_judged_as_their_rectangles)
+{
+    static const double xy[8] = {1e15, 1e15, 1e15 + 4, 1e15, 1e15 + 4, 1e15 + 4, 1e15, 1e15 + 4};
+    static const size_t ends[1] = {4};
+    static const unsigned char ring[16] = {1, 1, 1, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 1, 1, 1};
+    static const double radii[2] = {3.0, 1e8};
+    int k;
+
+    for (k = 0; k < 2; k++) {
+        pds_sampler *poly = sampler_new(radii[k], 1), *mask = sampler_new(radii[k], 1);
+        const int want = k == 0 ? PDS_ERANGE : 0;
+
+        ck_assert_msg(pds_set_polygon(poly, xy, ends, 1) == 0, "%s", pds_errmsg(poly));
+        ck_assert_int_eq(pds_set_domain(mask, 1e15, 1e15, 1e15 + 1, 1e15 + 1000), 0);
+        ck_assert_msg(pds_set_mask(mask, 4, 4, ring) == 0, "%s", pds_errmsg(mask));
+        ck_assert_int_eq(pds_run(poly, 0, NULL), want);
+        ck_assert_int_eq(pds_run(mask, 0, NULL), want);
+        ck_assert_uint_eq(pds_count(poly), (size_t)k);
+        ck_assert_uint_eq(pds_count(mask), (size_t)k);
+        if (k == 1) {
+            ck_assert_msg(pds_verify(poly) == 0, "%s", pds_errmsg(poly));
+            ck_assert_msg(pds_verify(mask) == 0, "%s", pds_errmsg(mask));
+        }
+        pds_destroy(poly);
+        pds_destroy(mask);
+    }
+}
+END_TEST
+
 START_TEST(mask_domain_before_or_after)
 {
     pds_sampler *a = masked(0.05, 9, 1), *b = masked(0.05, 9, 0);
@@ -290,6 +325,7 @@ Suite *domain_raster_suite(void)
     tcase_add_test(tc, mask_from_a_quarter_to_the_largest_double);
     tcase_add_test(tc, mask_from_near_the_least_normal_to_3e296);
     tcase_add_test(tc, mask_of_pixels_far_taller_than_wide);
+    tcase_add_test(tc, shapes_of_a_few_ulps_judged_as_their_rectangles);
     tc = new_tcase(s, "radius map");
     tcase_add_test(tc, radius_map_over_the_polygon_box);
     return s;

@@ -484,6 +484,11 @@ SEEDS = {
     "threads_count_torus": radius_factor(0, 8) + [92] + count(7) + threads(4) + op(RUN_TO_END)
     + op(CREATE) + radius_factor(0, 8) + [93] + periodic() + threads(2) + op(RUN_CHUNKS, 3)
     + op(RUN_TO_END),
+    # Fixed in 1.5.2 (found/NOTES): a 4 x 4 square (sides with collinear runs) at
+    # 1e15 was PDS_EINVAL "encloses nothing": the side probes, 2^-20 of an edge
+    # away, rounded onto the edge.
+    "regress_polygon_below_resolution": radius_factor(0, 7) + [81]
+    + polygon([ring(8, SIDES, size=(12, 12))], offset=(3, 3)) + op(RUN_TO_END),
 }
 
 # Reproducers of open library bugs (found/NOTES), written into found/: the harness
@@ -501,10 +506,6 @@ FOUND = {
     # rule, shoelace area 0): PDS_EINVAL "the outline encloses nothing".
     "polygon_bowtie_refused": radius_factor(0, 7) + [80]
     + polygon([ring(4, SCATTER, verts=[(0, 0), (2, 2), (2, 0), (0, 2)])]) + op(RUN_TO_END),
-    # A 4 x 4 square (sides with collinear runs) at 1e15: PDS_EINVAL "encloses
-    # nothing"; the side probes, 2^-20 of an edge away, round onto the edge.
-    "polygon_below_resolution": radius_factor(0, 7) + [81]
-    + polygon([ring(8, SIDES, size=(12, 12))], offset=(3, 3)) + op(RUN_TO_END),
     # Rings that cross: pds_run(s, 0) returns PDS_DONE with no point (seed 71; after
     # steps, pds_verify says PDS_EINTERNAL: part of the domain near the outline uncovered).
     "polygon_crossing_maximal_early": radius_factor(0, 7) + [71]
