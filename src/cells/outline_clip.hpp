@@ -35,6 +35,7 @@
 
 #include "cells/cell_pieces.hpp"
 #include "cells/cell_stream.hpp"
+#include "cells/region_trapezoids.hpp"
 #include "core/point.hpp"
 #include "domain/polygon.hpp"
 
@@ -60,6 +61,15 @@ public:
     bool cut() const { return cut_; }
     bool doubtful() const { return doubtful_; }
     const std::vector<std::uint32_t>& edges() const { return edges_; }
+    // The last cut cell's region (cell and domain) outside the disk of
+    // radius r about its site, relative to the site, as trapezoids
+    // (region_trapezoids.hpp). Allocates its scratch once.
+    const std::vector<Trapezoid>& region_trapezoids(double r) {
+        cut_into_trapezoids(segments_, trapezoid_xs_, trapezoid_crossings_, trapezoid_stack_);
+        drop_inside_disk(trapezoid_stack_, r, trapezoid_split_, trapezoids_);
+        return trapezoids_;
+    }
+    std::vector<double>& trapezoid_sums() { return trapezoid_sums_; }  // scratch for a draw among them
     const Polygon& polygon() const { return polygon_; }
 
     // Whether a draw p (absolute) from `piece` (relative to site) of the last
@@ -122,6 +132,11 @@ private:
     std::vector<Segment> segments_;     // the region's boundary, region on the left
     std::vector<std::uint32_t> edges_;  // outline edges near the cell
     std::vector<double> cuts_;          // scratch: where one cell edge is crossed
+    std::vector<Trapezoid> trapezoids_;  // region_trapezoids() and its scratch
+    std::vector<Trapezoid> trapezoid_stack_, trapezoid_split_;
+    std::vector<double> trapezoid_sums_;
+    std::vector<double> trapezoid_xs_;
+    std::vector<trapezoid_detail::Crossing> trapezoid_crossings_;
     bool cut_ = false;
     bool doubtful_ = false;
 };

@@ -1,5 +1,5 @@
 // jones_loop.cpp - the Jones loop (see jones_loop.hpp), compiled once for
-// each mesh and radius rule, and the factory that picks one.
+// each mesh and radius rule (make_jones_stage.cpp picks one).
 #include "jones/jones_loop.hpp"
 
 #include <algorithm>
@@ -202,6 +202,7 @@ void JonesLoop<Space, Rule>::draw_batch(std::size_t n, Rng& rng) {
     const Rng rng_before = rng;
     const int failures_before = draw_failures_;
     const std::size_t rejections_before = rejections_;
+    const bool region_draws_before = region_draws_;
     const JonesStats stats_before = stats_;
     undo_count_ = 0;
     try {
@@ -214,6 +215,7 @@ void JonesLoop<Space, Rule>::draw_batch(std::size_t n, Rng& rng) {
         rng = rng_before;
         draw_failures_ = failures_before;
         rejections_ = rejections_before;
+        region_draws_ = region_draws_before;
         stats_ = stats_before;
         queue_.clear();
         throw;
@@ -249,7 +251,8 @@ void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
         const CellQuery q = cells.query(v);
         // One pass: the chunk holding target u * U; if the exact area A falls
         // short of the target, the selection is rejected.
-        const CellSelection sel = cells.select(v, rng.next_double() * bound[k]);
+        const double cell_target = rng.next_double() * bound[k];
+        const CellSelection sel = cells.select(v, cell_target);
         if (!sel.found()) {
             // The whole cell was measured: settle doubt, tighten the bound
             // (the same cell may come twice in a batch: only downwards).
@@ -270,6 +273,24 @@ void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
                 continue;
             }
             // else rounding left the target just out of reach: the last chunk
+        }
+        if (region_draws_ && cells.cut()) {
+            // Drawn from its box, the cell is kept with probability (free
+            // area) / bound, not area / bound: the fan's shadow is not drawn
+            // from, so the bound drops to the free area.
+            const CellMeasure m = cells.measure(v);
+            const double free = m.free() > 0.0 ? m.free() : (m.area > 0.0 ? area_floor(q.radius) : 0.0);
+            Point p;
+            if (!(cell_target < free)) {
+                if (free < tree_.weight(site)) set_weight(site, free);
+                ++stats_.stale_selections;
+            } else if (cells.draw_in_cut_cell(v, free, rng, [&](const Point& x) { return acceptable(x, v); }, &p)) {
+                queue_.push_back(Candidate{p, v});
+                ++stats_.region_draws;
+            } else if (++draw_failures_ % kFailuresPerGiveUp == 0) {
+                give_up(site);
+            }
+            continue;
         }
         // A found chunk in a cell floating point could not certify needs no
         // special care: every draw is checked exactly before it is kept, as
@@ -294,9 +315,12 @@ void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
             // A refused draw ends a selection without counting against its
             // cell. So many in a row, with no point placed, means a free
             // region rounding cannot reach (a sliver along the outline): a
-            // failure, as below.
-            if (++rejections_ % kRejectionsPerFailure == 0 && ++draw_failures_ % kFailuresPerGiveUp == 0)
-                give_up(site);
+            // failure, as below; the first such failure turns the cut cells
+            // to draws from their box instead.
+            if (++rejections_ % kRejectionsPerFailure == 0 && ++draw_failures_ % kFailuresPerGiveUp == 0) {
+                if (region_draws_ || !cells.cut()) give_up(site);
+                else region_draws_ = true;
+            }
             continue;
         }
         // A healthy piece practically never fails 64 draws; a cell that keeps
@@ -370,20 +394,5 @@ template class JonesLoop<TorusSpace, OneRadius>;
 template class JonesLoop<TorusSpace, PowerRule>;
 template class JonesLoop<PolygonSpace, OneRadius>;
 template class JonesLoop<PolygonSpace, PowerRule>;
-
-std::unique_ptr<JonesStage> make_jones_stage(const Rectangle& domain, double r, const Torus& torus,
-                                             const PointRadii* radii, std::shared_ptr<const Polygon> polygon) {
-    if (torus.on()) {
-        if (polygon) throw std::logic_error("a polygon on the torus");
-        if (radii) return std::make_unique<JonesLoop<TorusSpace, PowerRule>>(domain, r, torus, radii, nullptr);
-        return std::make_unique<JonesLoop<TorusSpace, OneRadius>>(domain, r, torus, radii, nullptr);
-    }
-    if (polygon) {
-        if (radii) return std::make_unique<JonesLoop<PolygonSpace, PowerRule>>(domain, r, torus, radii, polygon);
-        return std::make_unique<JonesLoop<PolygonSpace, OneRadius>>(domain, r, torus, radii, polygon);
-    }
-    if (radii) return std::make_unique<JonesLoop<PlaneSpace, PowerRule>>(domain, r, torus, radii, nullptr);
-    return std::make_unique<JonesLoop<PlaneSpace, OneRadius>>(domain, r, torus, radii, nullptr);
-}
 
 }  // namespace pds

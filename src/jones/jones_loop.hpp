@@ -93,6 +93,7 @@ public:
     const JonesStats& stats() const override { return stats_; }
     void set_fixed(std::size_t n) override { fixed_ = n; }
     void set_threads(unsigned n) override { threads_ = n < 1 ? 1 : n; }
+    void draw_cut_cells_by_region() override { region_draws_ = true; }
     void set_batch_size(std::size_t n) override { batch_size_ = n < 1 ? 1 : (n > kMaxBatch ? kMaxBatch : n); }
 
 private:
@@ -164,6 +165,9 @@ private:
     std::size_t batch_size_ = 1;
     int draw_failures_ = 0;                   // failed chunk samplings since the last point
     std::size_t rejections_ = 0;              // refused draws since the last point
+    // Set for good once refused draws pile up: cut cells are then drawn from
+    // by rejection from their box (MeshCells::draw_in_cut_cell), not by the fan.
+    bool region_draws_ = false;
     Candidate first_{};                       // the first point, drawn over the whole domain
     bool has_first_ = false;
     WeightUndo undo_[2 * kMaxBatch];          // at most two weight changes per candidate

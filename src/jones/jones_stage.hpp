@@ -37,6 +37,7 @@ struct JonesStats {
     std::size_t selections = 0;
     std::size_t stale_selections = 0;
     std::size_t stale_at_zero = 0;
+    std::size_t region_draws = 0;  // candidates drawn from a cut cell's trapezoids
 };
 
 class JonesStage : public Stage {
@@ -77,6 +78,10 @@ public:
     // the measures do not depend on it. A mesh whose cells cannot be
     // measured side by side ignores it.
     virtual void set_threads(unsigned) {}
+    // Cut cells drawn from by their regions' trapezoids from the first
+    // point, not only once the fan's refusals pile up: lets a test check the
+    // law of those draws.
+    virtual void draw_cut_cells_by_region() = 0;
 };
 
 // The domain and r in the internal frame, torus on for a periodic domain;

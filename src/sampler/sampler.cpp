@@ -107,6 +107,12 @@ void Sampler::skip_dart_stage() {
     skip_darts_ = true;
 }
 
+void Sampler::draw_cut_cells_by_region() {
+    if (count() != 0) throw std::logic_error("draw_cut_cells_by_region after the first point");
+    forget_stages();
+    region_draws_ = true;
+}
+
 void Sampler::prepare(std::size_t points) {
     const JudgedRadius smallest = field_ ? JudgedRadius::field_smallest : JudgedRadius::radius;
     const JudgedRadius largest = field_ ? JudgedRadius::field_largest : JudgedRadius::radius;
@@ -148,6 +154,7 @@ void Sampler::prepare(std::size_t points) {
             darts = make_opening_stage(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr,
                                        parallel_ ? std::optional<std::uint64_t>(seed_) : std::nullopt);
         if (has_fixed()) adopt_fixed(*jones, points);
+        if (region_draws_) jones->draw_cut_cells_by_region();
         jones_ = std::move(jones);
         darts_ = std::move(darts);
         adopted_fixed_ = fixed_.size();

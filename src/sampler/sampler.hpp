@@ -120,6 +120,9 @@ public:
     // Internals, for the unit tests.
     // Runs the Jones loop from the first point; requires count() == 0.
     void skip_dart_stage();
+    // Cut cells drawn from by their regions from the first point
+    // (JonesStage::draw_cut_cells_by_region); requires count() == 0.
+    void draw_cut_cells_by_region();
     bool in_dart_stage() const { return darts_ != nullptr || (!started() && use_darts()); }
     const Frame& frame() const { return frame_; }
     // The Jones stage; requires a point to have been added.
@@ -178,6 +181,7 @@ private:
     std::uint64_t seed_;
     Rng rng_;  // at seed_'s state while count() == 0
     bool skip_darts_ = false;
+    bool region_draws_ = false;  // draw_cut_cells_by_region()
     unsigned threads_ = 1;
     bool parallel_ = false;  // set_threads was called: the space-time opening
     std::size_t count_target_ = 0;

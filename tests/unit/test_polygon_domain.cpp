@@ -6,12 +6,14 @@
 // sides are long.
 #include <check.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "core/rng.hpp"
+#include "law_compare.hpp"
 #include "domain/polygon.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
@@ -199,6 +201,65 @@ START_TEST(frames_far_thinner_than_their_sides_are_long) {
 }
 END_TEST
 
+// The points within r of the outline's segments (as xy pairs, ring by ring).
+std::size_t near_outline(const std::vector<pds::Point>& points, const std::vector<std::vector<double>>& rings, double r) {
+    std::size_t near = 0;
+    for (const pds::Point& p : points) {
+        double best = HUGE_VAL;
+        for (const auto& ring : rings)
+            for (std::size_t i = 0; i < ring.size(); i += 2) {
+                const std::size_t j = (i + 2) % ring.size();
+                const double ax = ring[i], ay = ring[i + 1], dx = ring[j] - ax, dy = ring[j + 1] - ay;
+                const double t = std::clamp(((p.x - ax) * dx + (p.y - ay) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+                best = std::min(best, std::hypot(p.x - ax - t * dx, p.y - ay - t * dy));
+            }
+        near += best < r;
+    }
+    return near;
+}
+
+START_TEST(region_draws_keep_the_law) {
+    // The Jones loop alone in an L with a hole at R 0.1, where nearly every
+    // cell is cut: cut cells drawn from their regions' trapezoids from the
+    // first point, against the fan's draws (whose law the API suite
+    // domain_law checks against dart throwing). Over many seeds each: the
+    // count N and the points within R of the outline, by z tests on the
+    // means, and N by a Kolmogorov-Smirnov test (law_compare.hpp's bounds).
+    const std::vector<std::vector<double>> rings{{0, 0, 1, 0, 1, 0.4, 0.4, 0.4, 0.4, 1, 0, 1},
+                                                 square(0.1, 0.1, 0.15, true)};
+    const double r = 0.1;
+    const std::uint64_t seeds = test_light() ? 40 : 400;
+    std::vector<double> count[2], near[2];
+    std::size_t region_draws[2] = {0, 0};
+    for (int by_region = 0; by_region < 2; ++by_region)
+        for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+            pds::Sampler s(r, seed + static_cast<std::uint64_t>(by_region) * 1000003);
+            s.set_polygon(std::make_shared<const Polygon>(rings_of(rings)));
+            s.skip_dart_stage();
+            if (by_region) s.draw_cut_cells_by_region();
+            std::size_t added = 0;
+            ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+            ck_assert_msg(s.verify().maximal, "seed %llu", static_cast<unsigned long long>(seed));
+            std::vector<double> xy(2 * s.count());
+            s.copy_points(0, s.count(), xy.data());
+            std::vector<pds::Point> points;
+            for (std::size_t k = 0; k < s.count(); ++k) points.push_back(pds::Point{xy[2 * k], xy[2 * k + 1]});
+            count[by_region].push_back(static_cast<double>(points.size()));
+            near[by_region].push_back(static_cast<double>(near_outline(points, rings, r)));
+            region_draws[by_region] += s.jones().stats().region_draws;
+        }
+    ck_assert_uint_eq(region_draws[0], 0);
+    ck_assert_msg(region_draws[1] > seeds * 20, "%zu region draws", region_draws[1]);
+    const double zn = law::z_score(count[1], count[0]), znear = law::z_score(near[1], near[0]);
+    const double ks = law::ks_scaled(count[1], count[0]);
+    ck_assert_msg(std::fabs(zn) < 4.5, "N %.3f by region, %.3f by the fan (z %.2f)", law::mean(count[1]),
+                  law::mean(count[0]), zn);
+    ck_assert_msg(std::fabs(znear) < 4.5, "near the outline %.3f by region, %.3f by the fan (z %.2f)",
+                  law::mean(near[1]), law::mean(near[0]), znear);
+    ck_assert_msg(ks < 1.95, "the distribution of N differs (KS %.3f)", ks);
+}
+END_TEST
+
 }  // namespace
 
 Suite* polygon_domain_suite() {
@@ -212,6 +273,8 @@ Suite* polygon_domain_suite() {
     tcase_add_test(t, a_ring_traced_twice_is_no_outline);
     tcase_add_test(t, edges_that_overlap_in_part_cancel_there);
     tcase_add_test(t, frames_far_thinner_than_their_sides_are_long);
+    tcase_add_test(t, region_draws_keep_the_law);
+    tcase_set_timeout(t, 60);
     suite_add_tcase(s, t);
     return s;
 }
