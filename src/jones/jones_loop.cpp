@@ -275,7 +275,7 @@ void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
             // else rounding left the target just out of reach: the last chunk
         }
         if (region_draws_ && cells.cut()) {
-            // Drawn from its box, the cell is kept with probability (free
+            // Drawn from its trapezoids, the cell is kept with probability (free
             // area) / bound, not area / bound: the fan's shadow is not drawn
             // from, so the bound drops to the free area.
             const CellMeasure m = cells.measure(v);
@@ -316,7 +316,7 @@ void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
             // cell. So many in a row, with no point placed, means a free
             // region rounding cannot reach (a sliver along the outline): a
             // failure, as below; the first such failure turns the cut cells
-            // to draws from their box instead.
+            // to draws from their regions' trapezoids instead.
             if (++rejections_ % kRejectionsPerFailure == 0 && ++draw_failures_ % kFailuresPerGiveUp == 0) {
                 if (region_draws_ || !cells.cut()) give_up(site);
                 else region_draws_ = true;

@@ -165,8 +165,8 @@ private:
     std::size_t batch_size_ = 1;
     int draw_failures_ = 0;                   // failed chunk samplings since the last point
     std::size_t rejections_ = 0;              // refused draws since the last point
-    // Set for good once refused draws pile up: cut cells are then drawn from
-    // by rejection from their box (MeshCells::draw_in_cut_cell), not by the fan.
+    // Set for good once refused draws pile up: cut cells are then drawn
+    // from their regions' trapezoids (MeshCells::draw_in_cut_cell), not by the fan.
     bool region_draws_ = false;
     Candidate first_{};                       // the first point, drawn over the whole domain
     bool has_first_ = false;
