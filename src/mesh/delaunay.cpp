@@ -36,8 +36,9 @@ Delaunay::Delaunay(const Box& domain, bool weighted, double ghost_radius) : weig
 
 void Delaunay::reserve(std::size_t vertices) {
     // An insertion adds three edges (four and deletes one when the point lands
-    // on an edge), so 3 records per vertex always suffice.
-    mesh_.reserve(3 * vertices);
+    // on an edge), so 3 records per vertex always suffice; build_whole() takes
+    // a few more for its parts' arenas.
+    mesh_.reserve(3 * vertices + kBuildWholeSlack);
     points_.reserve(vertices);
     vertex_edge_.reserve(vertices);
     if (weighted_) {

@@ -100,6 +100,28 @@ public:
         }
     }
 
+    // The same mesh built whole from points[order[0]], ... (n of them, vertex
+    // 4 + i for order[i]), by Guibas and Stolfi's divide and conquer
+    // (delaunay_build.cpp): its parts are built and merged side by side on up
+    // to `threads` threads. Only on an unweighted mesh holding its ghosts
+    // alone, with the room reserve(4 + n) makes; does not allocate. The
+    // records and entry edges depend on n and the points alone, never on
+    // the threads. False, and nothing changed, when it does not apply (few
+    // points, a weighted mesh, no room): the caller inserts them instead.
+    template <class Inserted>
+    bool build_whole(const std::vector<Point>& points, const std::uint32_t* order, std::size_t n,
+                     unsigned threads, const Inserted& inserted) {
+        if (!build_whole(points, order, n, threads)) return false;
+        for (std::size_t i = 0; i < n; ++i) inserted(order[i], static_cast<VertexIndex>(kGhosts + i));
+        return true;
+    }
+    bool build_whole(const std::vector<Point>& points, const std::uint32_t* order, std::size_t n,
+                     unsigned threads);
+    // Fewer points than this are inserted one by one (build_whole declines).
+    static constexpr std::size_t kBuildWholeFrom = 4096;
+    // The records build_whole() needs beyond 3 per vertex (its arenas' slack).
+    static constexpr std::size_t kBuildWholeSlack = 8 * 64;
+
     bool weighted() const { return weighted_; }
     double radius(VertexIndex v) const { return weighted_ ? radii_[v] : 0.0; }
     // A weighted mesh only: a disk whose power cell is empty, not in the mesh.

@@ -21,13 +21,50 @@ std::size_t QuadEdgeMesh::spare_records() const {
 
 void QuadEdgeMesh::delete_edge(EdgeRef e) {
     e &= ~3u;
-    splice(e, oprev(e));
-    splice(sym(e), oprev(sym(e)));
-    set_endpoints(e, kNoVertex, kNoVertex);
+    detach(e);
     next_of(e) = free_list_;
     free_list_ = e;
     ++free_count_;
     --live_edges_;
+}
+
+bool QuadEdgeMesh::lay_out_for_arenas(std::size_t records) {
+    if (records > rec_.capacity()) return false;
+    rec_.resize(records);  // within the room: does not allocate
+    free_list_ = kNoEdge;
+    free_count_ = 0;
+    live_edges_ = 0;
+    return true;
+}
+
+QuadEdgeMesh::Arena QuadEdgeMesh::join(Arena a, const Arena& b) {
+    // a's records never handed out go on its free list, then b's list follows.
+    for (; a.next != a.end; ++a.next) {
+        const EdgeRef e = 4 * a.next;
+        set_endpoints(e, kNoVertex, kNoVertex);
+        next_of(e) = a.free_head;
+        if (a.free_head == kNoEdge) a.free_tail = e;
+        a.free_head = e;
+        ++a.free_count;
+    }
+    if (a.free_head == kNoEdge) {
+        a.free_head = b.free_head;
+        a.free_tail = b.free_tail;
+    } else if (b.free_head != kNoEdge) {
+        next_of(a.free_tail) = b.free_head;
+        a.free_tail = b.free_tail;
+    }
+    a.free_count += b.free_count;
+    a.next = b.next;
+    a.end = b.end;
+    return a;
+}
+
+void QuadEdgeMesh::close_arenas(Arena last) {
+    last = join(last, arena(0, 0));
+    free_list_ = last.free_head;
+    free_count_ = last.free_count;
+    live_edges_ = rec_.size() - free_count_;
 }
 
 }  // namespace pds

@@ -72,6 +72,34 @@ public:
         r.org[((e >> 1) & 1u) ^ 1u] = dest;
     }
 
+    // Building a mesh whole, in parts side by side (delaunay_build.cpp):
+    // each part takes records from its own arena, a range of the array with
+    // its own free list, so parts running at once never share a record, and
+    // the records a part gets do not depend on what runs beside it.
+    struct Arena {
+        EdgeRef free_head = kNoEdge, free_tail = kNoEdge;  // record-0 quarters
+        std::size_t free_count = 0;
+        std::uint32_t next = 0, end = 0;  // records [next, end) never handed out
+    };
+    // Drops every edge and lays out `records` unused records for arenas;
+    // false (and nothing changed) when that is more than reserve() made room for.
+    bool lay_out_for_arenas(std::size_t records);
+    static Arena arena(std::uint32_t first, std::uint32_t end) { return Arena{kNoEdge, kNoEdge, 0, first, end}; }
+    EdgeRef make_edge(Arena& arena, std::uint32_t org, std::uint32_t dest);
+    void delete_edge(Arena& arena, EdgeRef e);
+    EdgeRef connect(Arena& arena, EdgeRef a, EdgeRef b);
+    // The arena of a part made of parts a and b (a's spare records first).
+    Arena join(Arena a, const Arena& b);
+    // Ends the build: the last arena's spare records become the free list.
+    void close_arenas(Arena last);
+    // The room of the last lay_out_for_arenas() as plain words, for a
+    // build's scratch before its arenas take the records (word i of 6 per record).
+    std::uint32_t& scratch_word(std::size_t i) {
+        Record& r = rec_[i / 6];
+        const std::size_t k = i % 6;
+        return k < 4 ? r.next[k] : r.org[k - 4];
+    }
+
     // Number of records ever handed out (live or free) and whether one is live.
     std::size_t record_count() const { return rec_.size(); }
     bool is_live(std::size_t record) const { return rec_[record].org[0] != kNoVertex; }
@@ -81,10 +109,18 @@ public:
 
 private:
     struct Record {
+        // Left unset: a record is written whole when handed out, and laying
+        // out a build's records must not write (and fault in) them all on one
+        // thread before its parts write them side by side.
+        Record() {}  // NOLINT: no member initializers on purpose
         EdgeRef next[4];           // onext of quarters 0..3
         std::uint32_t org[2];      // origins of quarters 0 and 2
     };
     EdgeRef& next_of(EdgeRef e) { return rec_[e >> 2].next[e & 3u]; }
+    // Makes record e an isolated edge org -> dest.
+    void init_edge(EdgeRef e, std::uint32_t org, std::uint32_t dest);
+    // Takes e out of its rings and marks its record unused.
+    void detach(EdgeRef e);
 
     std::vector<Record> rec_;
     EdgeRef free_list_ = kNoEdge;      // record-0 quarters of deleted records
@@ -94,6 +130,17 @@ private:
 
 // The operators below are inline: insertion and flips call them in their
 // innermost loops.
+
+inline void QuadEdgeMesh::init_edge(EdgeRef e, std::uint32_t org, std::uint32_t dest) {
+    // An isolated edge: each end is its own ring; the two dual quarters point at
+    // each other (one face on both sides).
+    Record& r = rec_[e >> 2];
+    r.next[0] = e;
+    r.next[1] = e + 3;
+    r.next[2] = e + 2;
+    r.next[3] = e + 1;
+    set_endpoints(e, org, dest);
+}
 
 inline EdgeRef QuadEdgeMesh::make_edge(std::uint32_t org, std::uint32_t dest) {
     EdgeRef e;
@@ -106,15 +153,23 @@ inline EdgeRef QuadEdgeMesh::make_edge(std::uint32_t org, std::uint32_t dest) {
         e = static_cast<EdgeRef>(4 * rec_.size());
         rec_.emplace_back();
     }
-    // An isolated edge: each end is its own ring; the two dual quarters point at
-    // each other (one face on both sides).
-    Record& r = rec_[e >> 2];
-    r.next[0] = e;
-    r.next[1] = e + 3;
-    r.next[2] = e + 2;
-    r.next[3] = e + 1;
-    set_endpoints(e, org, dest);
+    init_edge(e, org, dest);
     ++live_edges_;
+    return e;
+}
+
+inline EdgeRef QuadEdgeMesh::make_edge(Arena& arena, std::uint32_t org, std::uint32_t dest) {
+    EdgeRef e;
+    if (arena.free_head != kNoEdge) {
+        e = arena.free_head;
+        arena.free_head = next_of(e);
+        if (arena.free_head == kNoEdge) arena.free_tail = kNoEdge;
+        --arena.free_count;
+    } else {
+        if (arena.next == arena.end) throw std::logic_error("a mesh part outgrew its arena");
+        e = 4 * arena.next++;
+    }
+    init_edge(e, org, dest);
     return e;
 }
 
@@ -136,6 +191,28 @@ inline EdgeRef QuadEdgeMesh::connect(EdgeRef a, EdgeRef b) {
     splice(e, lnext(a));
     splice(sym(e), b);
     return e;
+}
+
+inline EdgeRef QuadEdgeMesh::connect(Arena& arena, EdgeRef a, EdgeRef b) {
+    const EdgeRef e = make_edge(arena, dest(a), org(b));
+    splice(e, lnext(a));
+    splice(sym(e), b);
+    return e;
+}
+
+inline void QuadEdgeMesh::detach(EdgeRef e) {
+    splice(e, oprev(e));
+    splice(sym(e), oprev(sym(e)));
+    set_endpoints(e, kNoVertex, kNoVertex);
+}
+
+inline void QuadEdgeMesh::delete_edge(Arena& arena, EdgeRef e) {
+    e &= ~3u;
+    detach(e);
+    next_of(e) = arena.free_head;
+    if (arena.free_head == kNoEdge) arena.free_tail = e;
+    arena.free_head = e;
+    ++arena.free_count;
 }
 
 inline void QuadEdgeMesh::swap(EdgeRef e) {

@@ -10,6 +10,7 @@ Suite* expansion_suite();
 Suite* predicates_suite();
 Suite* quadedge_suite();
 Suite* delaunay_suite();
+Suite* delaunay_build_suite();
 Suite* regular_suite();
 Suite* angle_suite();
 Suite* tree_suite();
