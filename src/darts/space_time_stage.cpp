@@ -384,7 +384,7 @@ void SpaceTimeDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {
     next_pending_ = 0;
     const std::uint32_t* order = curve_.order(points_);
     poll();
-    jones.adopt(points_, order, nullptr, poll);
+    jones.adopt(points_, order, nullptr, poll, MeshBuild::whole);
 }
 
 double SpaceTimeDartStage::free_area() const {

@@ -50,12 +50,20 @@ bool JonesLoop<Space, Rule>::has_room_for(std::size_t points) const {
 
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::adopt(const std::vector<Point>& points, const std::uint32_t* order,
-                                   const std::vector<double>* values, const Poll& poll) {
+                                   const std::vector<double>* values, const Poll& poll, MeshBuild build) {
     if (Rule::kWeighted != (values != nullptr) || (values && Space::kPeriodic))
         throw std::logic_error("hand-over without the field's values");
     if (count() != 0 || (!Space::kPeriodic && !has_room_for(points.size())))
         throw std::logic_error("hand-over without room");
     order_.resize(points.size());
+    if constexpr (!Rule::kWeighted && !Space::kPeriodic) {
+        if (build == MeshBuild::whole && dt_.build_whole(points, order, points.size(), threads_,
+                                                         [&](std::uint32_t k, VertexIndex v) { order_.set(k, v); })) {
+            poll();
+            space_.measure_adopted(*this, poll);
+            return;
+        }
+    }
     space_.adopt(*this, points, order, values, poll);
 }
 

@@ -74,7 +74,7 @@ public:
     void reserve(std::size_t points) override;
     bool has_room_for(std::size_t points) const override;
     void adopt(const std::vector<Point>& points, const std::uint32_t* order, const std::vector<double>* values,
-               const Poll& poll) override;
+               const Poll& poll, MeshBuild build) override;
     void settle() override { space_.settle(*this); }
     void set_radius(double r, const PointRadii* radii) override;
 

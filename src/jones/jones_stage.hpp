@@ -40,6 +40,13 @@ struct JonesStats {
     std::size_t region_draws = 0;  // candidates drawn from a cut cell's trapezoids
 };
 
+// How the hand-over makes the mesh: by inserting the points one by one in
+// the order given, or whole (Delaunay::build_whole, its parts side by side on
+// the stage's threads). The same mesh either way, but not the same records,
+// so not the same later points: a dart stage keeps to one. Only the plane
+// without a field builds whole; the others insert.
+enum class MeshBuild { insert, whole };
+
 class JonesStage : public Stage {
 public:
     // Room for `points` points in all; strong guarantee (std::bad_alloc).
@@ -51,7 +58,8 @@ public:
     // Requires count() == 0 and room; never allocates. Calls poll every
     // Poll::kEvery points inserted and cells measured.
     virtual void adopt(const std::vector<Point>& points, const std::uint32_t* order,
-                       const std::vector<double>* values = nullptr, const Poll& poll = Poll{}) = 0;
+                       const std::vector<double>* values = nullptr, const Poll& poll = Poll{},
+                       MeshBuild build = MeshBuild::insert) = 0;
     // The torus: finishes a widening of the margin that memory interrupted,
     // or that the hand-over left to do (may throw std::bad_alloc).
     virtual void settle() = 0;

@@ -79,7 +79,12 @@ public:
                 loop.order_.set(k, v);
                 if (++inserted % Poll::kEvery == 0) poll();
             });
-        loop.tree_.resize(points.size());
+        measure_adopted(loop, poll);
+    }
+    // After the points are in the mesh (inserted, or built whole).
+    template <class Loop>
+    void measure_adopted(Loop& loop, const Poll& poll) {
+        loop.tree_.resize(count(loop));
         loop.measure_all_cells(poll);
     }
     template <class Loop>

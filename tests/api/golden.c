@@ -14,7 +14,8 @@
  * the opening points from the generator in a different way. Varying fields
  * pinned from 1.3.2 on, whose field dart stage changed their points. The
  * parallel opening (pds_set_threads) pinned from 1.5.0 on: one fingerprint
- * for every thread count.
+ * for every thread count; re-pinned for 1.6.0, whose hand-over builds the
+ * mesh whole (the same mesh, other edge records, so other later draws).
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -40,11 +41,11 @@ static const struct golden cases[] = {
     {0.02, 7, 1, 0.015, 0, 0, 13531, 0x72b45bb3f3220347ull},
     {0.05, 12345678901234567ull, 0, 0.0, 0, 0, 304, 0x06bd299d7a5890dcull},
     /* The parallel opening: other points, the same on 1, 2 and 3 threads. */
-    {0.01, 1, 0, 0.0, 0, 2, 7037, 0x7448f060314e6bbfull},
-    {0.01, 1, 0, 0.0, 97, 3, 7037, 0x7448f060314e6bbfull},
-    {0.01, 1, 0, 0.0, 0, 4, 7037, 0x7448f060314e6bbfull},
-    {0.02, 7, 1, 0.015, 0, 3, 13507, 0x53054f1410469b71ull},
-    {0.002, 3, 0, 0.0, 0, 3, 174592, 0x35686e29a80a0ebbull},
+    {0.01, 1, 0, 0.0, 0, 2, 7018, 0x0f511cd368acf884ull},
+    {0.01, 1, 0, 0.0, 97, 3, 7018, 0x0f511cd368acf884ull},
+    {0.01, 1, 0, 0.0, 0, 4, 7018, 0x0f511cd368acf884ull},
+    {0.02, 7, 1, 0.015, 0, 3, 13483, 0xb334e97332018b12ull},
+    {0.002, 3, 0, 0.0, 0, 3, 174539, 0x80ffae0e2ab48e75ull},
 };
 
 static uint64_t fingerprint(const double *v, size_t n)
