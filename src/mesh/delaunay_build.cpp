@@ -1,23 +1,24 @@
 // delaunay_build.cpp - a Delaunay mesh built whole, by divide and conquer.
 //
-// Guibas & Stolfi (1985, section 10): sort the vertices lexicographically,
-// triangulate each half, then zip the halves together from their lower
+// Guibas & Stolfi (1985, section 10): split the vertices in two halves by a
+// line, triangulate each half, then zip the halves together from their lower
 // common tangent upwards, deleting the edges of either half that a new cross
-// edge shows not to be Delaunay. The ghost corners are vertices like any
-// other: the left two sort first and the right two last, so the outer face
-// is the ghost square, as insertion leaves it. With the exact predicates the
-// result is the Delaunay triangulation (ties on a circle decided by the
-// merge's fixed rule).
+// edge shows not to be Delaunay. The cuts alternate between x and y (Dwyer
+// 1987): each level splits at the median along its axis (ties by the other
+// coordinate), so the parts stay about square. The ghost corners are
+// vertices like any other, so the outer face is the ghost square, as
+// insertion leaves it. With the exact predicates the result is the Delaunay
+// triangulation (ties on a circle decided by the merge's fixed rule).
 //
-// Side by side: the recursion's top k levels (k from n alone) cut the sorted
+// Side by side: the recursion's top k levels (k from n alone) cut the
 // vertices into 2^k leaves. Each leaf is built by one worker from its own
 // arena of records (3 per vertex and 8 more: a planar graph on m vertices
 // has at most 3m - 6 edges, at every moment of the build as at its end), then
 // the leaves are merged level by level, the merges of a level side by side,
-// each from its two parts' arenas joined. Which worker runs a part changes
-// none of its records, so the mesh is the same on any number of threads.
+// each from its two parts' arenas joined. A median split gives the same two
+// sets whatever order its range was in, so which worker runs a part changes
+// none of its records: the mesh is the same on any number of threads.
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 
@@ -35,85 +36,91 @@ static_assert(kArenaSlack * kMaxLeaves <= Delaunay::kBuildWholeSlack, "reserve()
 
 // A triangulated part: its counterclockwise hull edge out of its leftmost
 // vertex, and its clockwise hull edge out of its rightmost (Guibas-Stolfi's
-// ldo and rdo). Leftmost in the frame the part was cut in: the plane's, or
-// the plane turned a quarter (x' = y, y' = -x) for the strips' parts.
+// ldo and rdo). Leftmost in the frame of the cut that made the part: the
+// plane's (axis 0, x then y) or the plane turned a quarter (axis 1, y then
+// -x). The predicates do not change under the turn, so one merge serves both.
 struct Part {
     EdgeRef left_out = kNoEdge, right_out = kNoEdge;
 };
 
-bool lexicographic_less(const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
-bool turned_less(const Point& a, const Point& b) { return a.y < b.y || (a.y == b.y && a.x > b.x); }
+bool less_on_axis(const Point& a, const Point& b, unsigned axis) {
+    if (axis == 0) return a.x < b.x || (a.x == b.x && a.y < b.y);
+    return a.y < b.y || (a.y == b.y && a.x > b.x);
+}
 
 class DivideAndConquer {
 public:
-    // `sorted`: the vertices in lexicographic order; strips of up to
-    // `strip` of them are cut across (below).
-    DivideAndConquer(QuadEdgeMesh& mesh, const std::vector<Point>& points, VertexIndex* sorted, std::size_t strip)
-        : m_(mesh), p_(points), s_(sorted), strip_(strip) {}
+    DivideAndConquer(QuadEdgeMesh& mesh, const std::vector<Point>& points, VertexIndex* vertices)
+        : m_(mesh), p_(points), s_(vertices) {}
 
-    // Cuts along x alone, down to strips: a part cut only along x is a tall
-    // sliver whose edges the next merge mostly deletes. So a strip is sorted
-    // by y and cut across (Dwyer 1987: O(n log log n) expected for uniform
-    // points), then its part is turned back to the plane's frame.
-    Part build(QuadEdgeMesh::Arena& arena, std::size_t lo, std::size_t hi) {
-        if (hi - lo > strip_) {
-            const std::size_t mid = lo + (hi - lo) / 2;
-            const Part left = build(arena, lo, mid);
-            const Part right = build(arena, mid, hi);
-            return merge(arena, left, right);
-        }
-        std::sort(s_ + lo, s_ + hi, [&](VertexIndex a, VertexIndex b) { return turned_less(p_[a], p_[b]); });
-        return in_plane_frame(build_in_order(arena, lo, hi));
+    // Splits s_[lo, hi) at its middle along the axis of that depth: the
+    // lower half first (in no particular order within each half).
+    void split(std::size_t lo, std::size_t hi, unsigned depth) {
+        const unsigned axis = depth & 1u;
+        std::nth_element(s_ + lo, s_ + lo + (hi - lo) / 2, s_ + hi,
+                         [&](VertexIndex a, VertexIndex b) { return less_on_axis(p_[a], p_[b], axis); });
     }
 
-    // Guibas and Stolfi's recursion on s_[lo, hi), sorted in the part's frame.
-    Part build_in_order(QuadEdgeMesh::Arena& arena, std::size_t lo, std::size_t hi) {
-        const std::size_t n = hi - lo;
-        if (n == 2) {
-            const EdgeRef a = m_.make_edge(arena, s_[lo], s_[lo + 1]);
-            return {a, QuadEdgeMesh::sym(a)};
+    // Cuts alternately along x and y (Dwyer's alternating cuts): parts cut
+    // along one axis only are slivers whose edges the next merge mostly
+    // deletes, and square parts keep their vertices, numbered along the
+    // hand-over's curve, on few pages.
+    Part build(QuadEdgeMesh::Arena& arena, std::size_t lo, std::size_t hi, unsigned depth) {
+        const unsigned axis = depth & 1u;
+        if (hi - lo <= 3) {
+            std::sort(s_ + lo, s_ + hi,
+                      [&](VertexIndex a, VertexIndex b) { return less_on_axis(p_[a], p_[b], axis); });
+            return build_small(arena, lo, hi);
         }
-        if (n == 3) {
-            const EdgeRef a = m_.make_edge(arena, s_[lo], s_[lo + 1]);
-            const EdgeRef b = m_.make_edge(arena, s_[lo + 1], s_[lo + 2]);
-            m_.splice(QuadEdgeMesh::sym(a), b);
-            const int turn = orient2d(p_[s_[lo]], p_[s_[lo + 1]], p_[s_[lo + 2]]);
-            if (turn > 0) {
-                m_.connect(arena, b, a);
-                return {a, QuadEdgeMesh::sym(b)};
-            }
-            if (turn < 0) {
-                const EdgeRef c = m_.connect(arena, b, a);
-                return {QuadEdgeMesh::sym(c), c};
-            }
-            return {a, QuadEdgeMesh::sym(b)};  // collinear: a path
-        }
-        const std::size_t mid = lo + n / 2;
-        const Part left = build_in_order(arena, lo, mid);
-        const Part right = build_in_order(arena, mid, hi);
-        return merge(arena, left, right);
+        split(lo, hi, depth);
+        const std::size_t mid = lo + (hi - lo) / 2;
+        const Part left = build(arena, lo, mid, depth + 1);
+        const Part right = build(arena, mid, hi, depth + 1);
+        return merge(arena, in_frame(left, axis), in_frame(right, axis));
     }
 
-    // The part's hull edges for the plane's frame: the hull walked once
+    // The part's hull edges for the frame of `axis`: the hull walked once
     // (clockwise, the outside on the left), keeping its extreme vertices.
-    Part in_plane_frame(const Part& turned) const {
-        const EdgeRef first = turned.right_out;
+    Part in_frame(const Part& part, unsigned axis) const {
+        const EdgeRef first = part.right_out;
         EdgeRef before = first, e = first;
         EdgeRef lowest = first, before_lowest = kNoEdge, highest = first;
         do {
             const EdgeRef next = m_.lnext(e);
             if (e != first) {
-                if (lexicographic_less(point_of_org(e), point_of_org(lowest))) {
+                if (less_on_axis(point_of_org(e), point_of_org(lowest), axis)) {
                     lowest = e;
                     before_lowest = before;
                 }
-                if (lexicographic_less(point_of_org(highest), point_of_org(e))) highest = e;
+                if (less_on_axis(point_of_org(highest), point_of_org(e), axis)) highest = e;
             }
             before = e;
             e = next;
         } while (e != first);
         if (before_lowest == kNoEdge) before_lowest = before;  // the first edge's predecessor: the last
         return {QuadEdgeMesh::sym(before_lowest), highest};
+    }
+
+    // Two or three vertices, s_[lo, hi) sorted in the part's frame.
+    Part build_small(QuadEdgeMesh::Arena& arena, std::size_t lo, std::size_t hi) {
+        const std::size_t n = hi - lo;
+        if (n == 2) {
+            const EdgeRef a = m_.make_edge(arena, s_[lo], s_[lo + 1]);
+            return {a, QuadEdgeMesh::sym(a)};
+        }
+        const EdgeRef a = m_.make_edge(arena, s_[lo], s_[lo + 1]);
+        const EdgeRef b = m_.make_edge(arena, s_[lo + 1], s_[lo + 2]);
+        m_.splice(QuadEdgeMesh::sym(a), b);
+        const int turn = orient2d(p_[s_[lo]], p_[s_[lo + 1]], p_[s_[lo + 2]]);
+        if (turn > 0) {
+            m_.connect(arena, b, a);
+            return {a, QuadEdgeMesh::sym(b)};
+        }
+        if (turn < 0) {
+            const EdgeRef c = m_.connect(arena, b, a);
+            return {QuadEdgeMesh::sym(c), c};
+        }
+        return {a, QuadEdgeMesh::sym(b)};  // collinear: a path
     }
 
     Part merge(QuadEdgeMesh::Arena& arena, Part left, const Part& right) {
@@ -180,7 +187,6 @@ private:
     QuadEdgeMesh& m_;
     const std::vector<Point>& p_;
     VertexIndex* s_;
-    std::size_t strip_;
 };
 
 }  // namespace
@@ -207,41 +213,11 @@ bool Delaunay::build_whole(const std::vector<Point>& points, const std::uint32_t
         }
     });
 
-    // The lexicographic order, in vertex_edge_ until the entry edges are
-    // known: a counting sort by x into about n/4 buckets (their counts in the
-    // records' room, before any edge is made), then each bucket sorted.
-    VertexIndex* sorted = vertex_edge_.data();
-    double x0 = points_[kGhosts].x, x1 = x0;
-    for (std::size_t v = kGhosts; v < vertices; ++v) {
-        x0 = std::min(x0, points_[v].x);
-        x1 = std::max(x1, points_[v].x);
-    }
-    const std::size_t buckets = n / 4 + 1;
-    const double scale = x1 > x0 ? static_cast<double>(buckets) / (x1 - x0) : 0.0;
-    auto bucket_of = [&](VertexIndex v) {
-        const double b = (points_[v].x - x0) * scale;
-        return b < static_cast<double>(buckets - 1) ? static_cast<std::size_t>(b) : buckets - 1;
-    };
-    for (std::size_t b = 0; b <= buckets; ++b) mesh_.scratch_word(b) = 0;
-    for (std::size_t v = kGhosts; v < vertices; ++v) ++mesh_.scratch_word(bucket_of(static_cast<VertexIndex>(v)) + 1);
-    mesh_.scratch_word(0) = 2;  // the left ghosts come first
-    for (std::size_t b = 1; b <= buckets; ++b) mesh_.scratch_word(b) += mesh_.scratch_word(b - 1);
-    // Ghosts 0 and 3 are the left corners (bottom first), 1 and 2 the right.
-    sorted[0] = 0;
-    sorted[1] = 3;
-    sorted[vertices - 2] = 1;
-    sorted[vertices - 1] = 2;
-    for (std::size_t v = kGhosts; v < vertices; ++v)
-        sorted[mesh_.scratch_word(bucket_of(static_cast<VertexIndex>(v)))++] = static_cast<VertexIndex>(v);
-    // Now word b is where bucket b ends (and b + 1 begins).
-    pool.run([&](unsigned w) {
-        const std::size_t b0 = buckets * w / workers, b1 = buckets * (w + 1) / workers;
-        for (std::size_t b = b0; b < b1; ++b) {
-            const std::size_t begin = b == 0 ? 2 : mesh_.scratch_word(b - 1), end = mesh_.scratch_word(b);
-            std::sort(sorted + begin, sorted + end,
-                      [&](VertexIndex a, VertexIndex c) { return lexicographic_less(points_[a], points_[c]); });
-        }
-    });
+    // The order of the cuts, in vertex_edge_ until the entry edges are
+    // known: the top levels' splits first (a level's side by side), then
+    // each leaf cuts its own.
+    VertexIndex* order_of_cuts = vertex_edge_.data();
+    for (std::size_t v = 0; v < vertices; ++v) order_of_cuts[v] = static_cast<VertexIndex>(v);
 
     // The leaves: the recursion's cuts (lo + size / 2) down to their level.
     std::size_t cut[kMaxLeaves + 1];
@@ -255,20 +231,27 @@ bool Delaunay::build_whole(const std::vector<Point>& points, const std::uint32_t
     for (std::size_t i = 0; i < leaves; ++i)
         arena[i] = QuadEdgeMesh::arena(static_cast<std::uint32_t>(3 * cut[i] + kArenaSlack * i),
                                        static_cast<std::uint32_t>(3 * cut[i + 1] + kArenaSlack * (i + 1)));
-    // Strips of about sqrt(n log n) vertices (Dwyer's choice).
-    const std::size_t strip = std::max<std::size_t>(
-        1024, static_cast<std::size_t>(std::sqrt(static_cast<double>(vertices) * std::log2(static_cast<double>(vertices)))));
-    DivideAndConquer dc(mesh_, points_, sorted, strip);
+    DivideAndConquer dc(mesh_, points_, order_of_cuts);
+    unsigned leaf_depth = 0;
+    for (std::size_t step = leaves; step > 1; step /= 2, ++leaf_depth) {
+        const std::size_t ranges = leaves / step;
+        pool.run([&](unsigned w) {
+            for (std::size_t j = w; j < ranges; j += workers)
+                dc.split(cut[j * step], cut[(j + 1) * step], leaf_depth);
+        });
+    }
     pool.run([&](unsigned w) {
-        for (std::size_t i = w; i < leaves; i += workers) part[i] = dc.build(arena[i], cut[i], cut[i + 1]);
+        for (std::size_t i = w; i < leaves; i += workers) part[i] = dc.build(arena[i], cut[i], cut[i + 1], leaf_depth);
     });
+    unsigned depth = leaf_depth;
     for (std::size_t step = 1; step < leaves; step *= 2) {
         const std::size_t pairs = leaves / (2 * step);
+        const unsigned axis = --depth & 1u;
         pool.run([&](unsigned w) {
             for (std::size_t j = w; j < pairs; j += workers) {
                 const std::size_t a = 2 * j * step, b = a + step;
                 arena[a] = mesh_.join(arena[a], arena[b]);
-                part[a] = dc.merge(arena[a], part[a], part[b]);
+                part[a] = dc.merge(arena[a], dc.in_frame(part[a], axis), dc.in_frame(part[b], axis));
             }
         });
     }
