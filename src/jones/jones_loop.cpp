@@ -56,15 +56,7 @@ void JonesLoop<Space, Rule>::adopt(const std::vector<Point>& points, const std::
     if (count() != 0 || (!Space::kPeriodic && !has_room_for(points.size())))
         throw std::logic_error("hand-over without room");
     order_.resize(points.size());
-    if constexpr (!Rule::kWeighted && !Space::kPeriodic) {
-        if (build == MeshBuild::whole && dt_.build_whole(points, order, points.size(), threads_,
-                                                         [&](std::uint32_t k, VertexIndex v) { order_.set(k, v); })) {
-            poll();
-            space_.measure_adopted(*this, poll);
-            return;
-        }
-    }
-    space_.adopt(*this, points, order, values, poll);
+    space_.adopt(*this, points, order, values, poll, build);
 }
 
 template <class Space, class Rule>

@@ -19,6 +19,7 @@
 #include "core/torus.hpp"
 #include "domain/polygon.hpp"
 #include "domain/rectangle.hpp"
+#include "jones/mesh_build.hpp"
 #include "jones/mesh_cells.hpp"
 #include "jones/stage.hpp"
 #include "mesh/delaunay.hpp"
@@ -39,13 +40,6 @@ struct JonesStats {
     std::size_t stale_at_zero = 0;
     std::size_t region_draws = 0;  // candidates drawn from a cut cell's trapezoids
 };
-
-// How the hand-over makes the mesh: by inserting the points one by one in
-// the order given, or whole (Delaunay::build_whole, its parts side by side on
-// the stage's threads). The same mesh either way, but not the same records,
-// so not the same later points: a dart stage keeps to one. Only the plane
-// without a field builds whole; the others insert.
-enum class MeshBuild { insert, whole };
 
 class JonesStage : public Stage {
 public:

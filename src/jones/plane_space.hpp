@@ -25,6 +25,7 @@
 #include "core/rng.hpp"
 #include "core/torus.hpp"
 #include "domain/rectangle.hpp"
+#include "jones/mesh_build.hpp"
 #include "jones/mesh_cells.hpp"
 #include "mesh/delaunay.hpp"
 #include "mesh/torus_copies.hpp"
@@ -70,21 +71,22 @@ public:
 
     template <class Loop>
     void adopt(Loop& loop, const std::vector<Point>& points, const std::uint32_t* order,
-               const std::vector<double>* values, const Poll& poll) {
+               const std::vector<double>* values, const Poll& poll, MeshBuild build) {
         if (values) loop.rule_.assign_values(*values);  // within the reserved room
-        std::size_t inserted = 0;
-        loop.dt_.insert_in_order(
-            points, order, points.size(), [&](std::uint32_t k) { return loop.rule_.radius_of(loop.rule_.value(k)); },
-            [&](std::uint32_t k, VertexIndex v) {
-                loop.order_.set(k, v);
-                if (++inserted % Poll::kEvery == 0) poll();
-            });
-        measure_adopted(loop, poll);
-    }
-    // After the points are in the mesh (inserted, or built whole).
-    template <class Loop>
-    void measure_adopted(Loop& loop, const Poll& poll) {
-        loop.tree_.resize(count(loop));
+        // build_whole() declines a weighted mesh and small hand-overs.
+        if (build != MeshBuild::whole ||
+            !loop.dt_.build_whole(points, order, points.size(), loop.threads_,
+                                  [&](std::uint32_t k, VertexIndex v) { loop.order_.set(k, v); })) {
+            std::size_t inserted = 0;
+            loop.dt_.insert_in_order(
+                points, order, points.size(),
+                [&](std::uint32_t k) { return loop.rule_.radius_of(loop.rule_.value(k)); },
+                [&](std::uint32_t k, VertexIndex v) {
+                    loop.order_.set(k, v);
+                    if (++inserted % Poll::kEvery == 0) poll();
+                });
+        }
+        loop.tree_.resize(points.size());
         loop.measure_all_cells(poll);
     }
     template <class Loop>

@@ -28,6 +28,7 @@
 #include "core/rng.hpp"
 #include "core/torus.hpp"
 #include "domain/rectangle.hpp"
+#include "jones/mesh_build.hpp"
 #include "jones/mesh_cells.hpp"
 #include "mesh/delaunay.hpp"
 #include "mesh/torus_copies.hpp"
@@ -73,7 +74,7 @@ public:
 
     template <class Loop>
     void adopt(Loop& loop, const std::vector<Point>& points, const std::uint32_t* order,
-               const std::vector<double>* values, const Poll& poll);
+               const std::vector<double>* values, const Poll& poll, MeshBuild /*inserted on the torus*/);
     template <class Loop>
     void insert_point(Loop& loop, const Point& p, VertexIndex near, double value);
     // Whether the triangles around real vertex v, measured as m, keep the

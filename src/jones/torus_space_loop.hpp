@@ -77,7 +77,8 @@ VertexIndex TorusSpace::insert_with_copies(Loop& loop, const Point& p, VertexInd
 
 template <class Loop>
 void TorusSpace::adopt(Loop& loop, const std::vector<Point>& points, const std::uint32_t* order,
-                       const std::vector<double>* /*values: none on the torus*/, const Poll& poll) {
+                       const std::vector<double>* /*values: none on the torus*/, const Poll& poll,
+                       MeshBuild) {
     // The points along the curve, then their copies in the same order (so
     // each offset's walks stay short); then the margin is settled. Room
     // first, so a failure changes nothing; the margin is settled by the first
