@@ -116,6 +116,10 @@ void Sampler::draw_cut_cells_by_region() {
 void Sampler::prepare(std::size_t points) {
     const JudgedRadius smallest = field_ ? JudgedRadius::field_smallest : JudgedRadius::radius;
     const JudgedRadius largest = field_ ? JudgedRadius::field_largest : JudgedRadius::radius;
+    // Coordinates too close to zero are the reason before any count: the
+    // count a run asks for comes from the area over R^2, which underflows.
+    if (!started() && frame_.precision_limit() == Limit::coordinates_too_small)
+        throw LimitError(Limit::coordinates_too_small, smallest_frame().user_radius(), smallest);
     if (points > Frame::max_points()) throw LimitError(Limit::too_many_points, frame_.user_radius());
     if (!started()) {
         // A field: precision at the smallest radius, the torus's period at

@@ -18,6 +18,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "helpers.h"
 #include "suites.h"
@@ -80,19 +81,21 @@ struct far_case {
     const char *why;
     double r;
     test_domain rejected, accepted;
+    const char *because; /* in pds_errmsg after every refused call */
 };
 
 static const struct far_case far_cases[] = {
     /* Doubles near 1e15 are 0.125 apart: R = 0.05 is not resolvable there. */
     {"R below 2^-26 of |coordinates| near 1e15", 0.05,
-     {1e15, 0.0, 1e15 + 1.0, 1.0}, {0.0, 0.0, 1.0, 1.0}},
+     {1e15, 0.0, 1e15 + 1.0, 1.0}, {0.0, 0.0, 1.0, 1.0}, "for double precision"},
     {"R below 2^-26 of |coordinates| near -1e9", 1.0,
-     {-1e9, -1e9, -1e9 + 30.0, -1e9 + 30.0}, {-30.0, 0.0, 0.0, 30.0}},
+     {-1e9, -1e9, -1e9 + 30.0, -1e9 + 30.0}, {-30.0, 0.0, 0.0, 30.0}, "for double precision"},
     {"R = 1e-9 below 2^-26 of |coordinates| near 1", 1e-9,
-     {1.0, 1.0, 1.0 + 5e-8, 1.0 + 5e-8}, {0.0, 0.0, 5e-8, 5e-8}},
-    /* Every coordinate below 2^-900 (about 1.5e-271). */
+     {1.0, 1.0, 1.0 + 5e-8, 1.0 + 5e-8}, {0.0, 0.0, 5e-8, 5e-8}, "for double precision"},
+    /* Every coordinate below 2^-900 (about 1.5e-271): the reason even for an
+     * unbounded run, whose count bound (the area over R^2) underflows there. */
     {"coordinates below 2^-900", 1e-273,
-     {0.0, 0.0, 1e-272, 1e-272}, {0.0, 0.0, 2e-271, 2e-271}},
+     {0.0, 0.0, 1e-272, 1e-272}, {0.0, 0.0, 2e-271, 2e-271}, "too close to zero"},
 };
 
 START_TEST(far_domain_rejected_at_first_point)
@@ -109,10 +112,17 @@ START_TEST(far_domain_rejected_at_first_point)
     rc = pds_set_domain(s, bad.x0, bad.y0, bad.x1, bad.y1);
     ck_assert_msg(rc == 0, "%s: pds_set_domain returned %d (%s); the pair is judged at the first "
                   "point", what, rc, pds_errmsg(s));
-    /* Precision rejects every way of adding a point, bounded or not. */
+    /* Precision rejects every way of adding a point, bounded or not, and
+     * each says so. */
     assert_run_rejected(s, 0, what);
+    ck_assert_msg(strstr(pds_errmsg(s), c->because) != NULL, "%s: pds_run(s, 0) said \"%s\"", what,
+                  pds_errmsg(s));
     assert_run_rejected(s, 1, what);
+    ck_assert_msg(strstr(pds_errmsg(s), c->because) != NULL, "%s: pds_run(s, 1) said \"%s\"", what,
+                  pds_errmsg(s));
     assert_step_rejected(s, what);
+    ck_assert_msg(strstr(pds_errmsg(s), c->because) != NULL, "%s: pds_step said \"%s\"", what,
+                  pds_errmsg(s));
     ck_assert_int_eq(pds_verify(s), 1); /* the empty pattern is valid */
     /* Nothing was added, so the domain may still change, and then it works. */
     rc = pds_set_domain(s, good.x0, good.y0, good.x1, good.y1);
