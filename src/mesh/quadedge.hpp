@@ -92,13 +92,6 @@ public:
     Arena join(Arena a, const Arena& b);
     // Ends the build: the last arena's spare records become the free list.
     void close_arenas(Arena last);
-    // The room of the last lay_out_for_arenas() as plain words, for a
-    // build's scratch before its arenas take the records (word i of 6 per record).
-    std::uint32_t& scratch_word(std::size_t i) {
-        Record& r = rec_[i / 6];
-        const std::size_t k = i % 6;
-        return k < 4 ? r.next[k] : r.org[k - 4];
-    }
 
     // Number of records ever handed out (live or free) and whether one is live.
     std::size_t record_count() const { return rec_.size(); }
