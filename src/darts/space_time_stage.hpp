@@ -47,7 +47,7 @@
 #include "darts/curve_order.hpp"
 #include "darts/opening_stage.hpp"
 #include "darts/space_time_grid.hpp"
-#include "darts/space_time_stream.hpp"
+#include "core/space_time_stream.hpp"
 #include "domain/rectangle.hpp"
 
 namespace pds {

@@ -1,5 +1,7 @@
-// space_time_stream.hpp - the random numbers of one cell in one epoch of the
-// space-time dart process (space_time_stage.hpp).
+// space_time_stream.hpp - the random numbers of one cell in one epoch of a
+// space-time dart process: the parallel opening's grid cells
+// (darts/space_time_stage.hpp) and, after it, the Voronoi cells' free
+// regions (jones/region_darts.hpp), each with its own salt.
 //
 // A counter-based stream: its state is a hash of (seed, cell, epoch), so a
 // cell's darts are the same whichever thread draws them, in whatever order,
