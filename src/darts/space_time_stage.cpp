@@ -385,6 +385,7 @@ void SpaceTimeDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {
     const std::uint32_t* order = curve_.order(points_);
     poll();
     jones.adopt(points_, order, nullptr, poll, MeshBuild::whole);
+    jones.carry_darts(SpaceTimeStream::salted(seed_), epoch_);
 }
 
 double SpaceTimeDartStage::free_area() const {

@@ -63,6 +63,7 @@ template <class Space, class Rule>
 void JonesLoop<Space, Rule>::set_radius(double r, const PointRadii* radii) {
     settle();
     rule_.rescale(*this, radii);
+    regions_.stop();  // its darts were drawn for the old radius
     drop_queue();
     has_first_ = false;
     r_ = r;
@@ -129,6 +130,8 @@ const Point* JonesLoop<Space, Rule>::next(Rng& rng) {
         }
         return &first_.p;
     }
+    if (regions_.on())
+        if (const Point* p = next_region_point()) return p;
     for (;;) {
         while (queue_head_ < queue_.size()) {
             const Candidate& cand = queue_[queue_head_];
@@ -150,6 +153,10 @@ void JonesLoop<Space, Rule>::add_next() {
         const double value = rule_.value_at(space_, first_.p);
         has_first_ = false;
         space_.insert_point(*this, first_.p, 0, value);
+        return;
+    }
+    if (regions_.on()) {
+        add_region_point();
         return;
     }
     if (queue_head_ >= queue_.size()) throw std::logic_error("add_next without next");

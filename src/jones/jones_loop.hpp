@@ -61,6 +61,7 @@
 #include "jones/free_area_tree.hpp"
 #include "jones/jones_stage.hpp"
 #include "jones/point_order.hpp"
+#include "jones/region_darts.hpp"
 #include "mesh/delaunay.hpp"
 
 namespace pds {
@@ -95,6 +96,9 @@ public:
     void set_threads(unsigned n) override { threads_ = n < 1 ? 1 : n; }
     void draw_cut_cells_by_region() override { region_draws_ = true; }
     void set_batch_size(std::size_t n) override { batch_size_ = n < 1 ? 1 : (n > kMaxBatch ? kMaxBatch : n); }
+    void carry_darts(std::uint64_t salted_seed, std::size_t epoch) override;
+    const RegionDarts::Stats& region_stats() const override { return regions_.stats(); }
+    void set_region_darts_per_cell(double mean) override { regions_.set_darts_per_cell(mean); }
 
 private:
     friend Space;
@@ -141,6 +145,15 @@ private:
     void draw_batch_unguarded(std::size_t n, Rng& rng);
     void set_weight(SiteIndex site, double weight);
     void give_up(SiteIndex site);
+    // The free regions' dart process (region_darts.hpp, jones_loop_regions.cpp):
+    // the next of its points, or nullptr once it has ended.
+    const Point* next_region_point();
+    void add_region_point();  // inserts the next of them
+    bool draw_region_epoch();
+    void draw_region_block(const MeshCells& cells, std::size_t block, double dt,
+                           RegionDarts::Block& out) const;
+    void draw_in_region(const MeshCells& cells, SiteIndex site, unsigned darts, std::uint64_t seed,
+                        RegionDarts::Block& out) const;
     // Exact: inside the domain, outside every disk, inside v's cell.
     bool acceptable(const Point& p, VertexIndex v) const {
         return space_.inside(p) && rule_.acceptable(dt_, p, v, r_);
@@ -175,6 +188,7 @@ private:
     JonesStats stats_;  // counters only: never steer the sampling
     std::size_t fixed_ = 0;  // the first points are fixed (set_fixed)
     unsigned threads_ = 1;   // for measure_all_cells (set_threads)
+    RegionDarts regions_;    // on from the parallel opening's hand-over (carry_darts)
 };
 
 }  // namespace pds

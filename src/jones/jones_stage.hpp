@@ -21,6 +21,7 @@
 #include "domain/rectangle.hpp"
 #include "jones/mesh_build.hpp"
 #include "jones/mesh_cells.hpp"
+#include "jones/region_darts.hpp"
 #include "jones/stage.hpp"
 #include "mesh/delaunay.hpp"
 #include "mesh/torus_copies.hpp"
@@ -84,6 +85,15 @@ public:
     // point, not only once the fan's refusals pile up: lets a test check the
     // law of those draws.
     virtual void draw_cut_cells_by_region() = 0;
+    // After the parallel opening's hand-over: carry its dart process on in
+    // the cells' free regions (region_darts.hpp), its streams salted_seed's
+    // from epoch `epoch` on. Only the one-radius rectangle's stage does;
+    // the others ignore it.
+    virtual void carry_darts(std::uint64_t /*salted_seed*/, std::size_t /*epoch*/) {}
+    virtual const RegionDarts::Stats& region_stats() const = 0;
+    // Epochs of another mean length (RegionDarts::set_darts_per_cell): lets
+    // a test check the law where the darts of an epoch often meet.
+    virtual void set_region_darts_per_cell(double mean) = 0;
 };
 
 // The domain and r in the internal frame, torus on for a periodic domain;

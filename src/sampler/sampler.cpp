@@ -159,6 +159,7 @@ void Sampler::prepare(std::size_t points) {
                                        parallel_ ? std::optional<std::uint64_t>(seed_) : std::nullopt);
         if (has_fixed()) adopt_fixed(*jones, points);
         if (region_draws_) jones->draw_cut_cells_by_region();
+        if (region_darts_per_cell_ > 0.0) jones->set_region_darts_per_cell(region_darts_per_cell_);
         jones_ = std::move(jones);
         darts_ = std::move(darts);
         adopted_fixed_ = fixed_.size();

@@ -123,6 +123,9 @@ public:
     // Cut cells drawn from by their regions from the first point
     // (JonesStage::draw_cut_cells_by_region); requires count() == 0.
     void draw_cut_cells_by_region();
+    // Epochs of the free regions' darts of another mean length
+    // (JonesStage::set_region_darts_per_cell); requires count() == 0.
+    void set_region_darts_per_cell(double mean) { region_darts_per_cell_ = mean; }
     bool in_dart_stage() const { return darts_ != nullptr || (!started() && use_darts()); }
     const Frame& frame() const { return frame_; }
     // The Jones stage; requires a point to have been added.
@@ -182,6 +185,7 @@ private:
     Rng rng_;  // at seed_'s state while count() == 0
     bool skip_darts_ = false;
     bool region_draws_ = false;  // draw_cut_cells_by_region()
+    double region_darts_per_cell_ = 0.0;  // set_region_darts_per_cell(); 0: the default
     unsigned threads_ = 1;
     bool parallel_ = false;  // set_threads was called: the space-time opening
     std::size_t count_target_ = 0;

@@ -38,6 +38,7 @@ struct Config {
     double rmin = 0, rmax = 0;
     Stages stages = Stages::darts_then_jones;
     unsigned threads = 0;            // > 0: the parallel opening (set_threads) on that many
+    double region_darts_per_cell = 0;  // > 0: the free regions' epochs of that mean length
     int runs = 0;                    // seeds 1..runs (the dart thrower: 10^6 + seed)
 };
 
@@ -97,6 +98,7 @@ inline void configure(pds::Sampler& s, const Config& c) {
     if (c.field) s.set_field(pds::RadiusField::function(c.field, nullptr, c.rmin, c.rmax));
     if (c.stages == Stages::jones_only) s.skip_dart_stage();
     if (c.threads != 0) s.set_threads(c.threads);
+    if (c.region_darts_per_cell > 0) s.set_region_darts_per_cell(c.region_darts_per_cell);
 }
 
 // Runs s to the end, checks it ends maximal and returns its points and radii.
@@ -165,16 +167,22 @@ void assert_saturated(const oracle::Pattern& t, const Distance& distance, int pr
 template <class Distance, class Radius>
 void compare_with(const Config& c, oracle::DartThrowing<Distance, Radius> reference) {
     Sample sampler, darts;
-    std::size_t from_darts = 0, total = 0;
+    std::size_t from_darts = 0, from_regions = 0, total = 0;
     for (int seed = 1; seed <= c.runs; ++seed) {
         pds::Sampler s(c.field ? 1.0 : c.r, static_cast<std::uint64_t>(seed));
         configure(s, c);
         const oracle::Pattern a = run_to_the_end(s, &from_darts);
         total += a.p.size();
+        from_regions += s.jones().region_stats().points;
         add(sampler, a, reference.distance());
         add(darts, reference.run(static_cast<std::uint64_t>(1000000 + seed)), reference.distance());
     }
     assert_stages(c, from_darts, total);
+    // The parallel process carries its darts on into the free regions: they
+    // must place a real share of the points, or the test would not test them.
+    const double regions = static_cast<double>(from_regions) / static_cast<double>(total);
+    if (c.threads != 0) ck_assert_msg(regions > 0.1, "the free regions' darts placed %.3f of the points", regions);
+    else ck_assert_msg(from_regions == 0, "the free regions' darts ran without threads");
     assert_same_law(sampler, darts);
 }
 

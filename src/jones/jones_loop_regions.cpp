@@ -1,0 +1,204 @@
+// jones_loop_regions.cpp - the Jones loop's part of the free regions' dart
+// process (region_darts.hpp): the epochs drawn from its cells, side by side,
+// and their points handed out in order of time.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+#include <type_traits>
+
+#include "core/worker_pool.hpp"
+#include "core/space_time_stream.hpp"
+#include "jones/jones_loop.hpp"
+#include "jones/plane_space.hpp"
+#include "jones/polygon_space.hpp"
+#include "jones/radius_rule.hpp"
+#include "jones/torus_space.hpp"
+
+namespace pds {
+
+namespace {
+// The plane's one-radius cells only: measured side by side, no copies, no
+// outline (the parallel opening runs in a plain rectangle alone).
+template <class Space, class Rule>
+constexpr bool kCarriesDarts = std::is_same_v<Space, PlaneSpace>&& std::is_same_v<Rule, OneRadius>;
+}  // namespace
+
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::carry_darts(std::uint64_t salted_seed, std::size_t epoch) {
+    if constexpr (kCarriesDarts<Space, Rule>) {
+        // Another salt: these streams share nothing with the opening's.
+        regions_.start(mix64(salted_seed ^ 0x6A09E667F3BCC909ull), epoch);
+    }
+}
+
+template <class Space, class Rule>
+const Point* JonesLoop<Space, Rule>::next_region_point() {
+    while (!regions_.has_pending()) {
+        if (regions_.ending() || !draw_region_epoch()) {
+            // The loop's own draws go on from here: its tree of bounds.
+            regions_.stop();
+            tree_.rebuild();
+            return nullptr;
+        }
+    }
+    return &regions_.pending().p;
+}
+
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::add_region_point() {
+    if (!regions_.has_pending()) throw std::logic_error("add_next without next");
+    // The next darts' rings, fetched together ahead of their insertions.
+    if (regions_.next_index() % kMaxBatch == 0) {
+        VertexIndex ahead[kMaxBatch];
+        const std::size_t n = regions_.sources_ahead(ahead, kMaxBatch);
+        dt_.prefetch_rings(ahead, n);
+        dt_.prefetch_beyond_rings(ahead, n);
+    }
+    const RegionDarts::Dart dart = regions_.pending();
+    const double value = rule_.value_at(space_, dart.p);
+    regions_.pop();
+    space_.insert_point(*this, dart.p, dart.source, value);
+    since_batch_.clear();  // the loop's queue is empty while the process runs
+}
+
+template <class Space, class Rule>
+bool JonesLoop<Space, Rule>::draw_region_epoch() {
+    std::vector<SiteIndex>& active = regions_.active();
+    const std::size_t sites = dt_.vertex_count() - Delaunay::kGhosts;
+    // The sites added since the last epoch join the list (room first: a
+    // failure must leave the list as it was); the covered ones leave it.
+    active.reserve(active.size() + (sites - regions_.listed()));
+    for (std::size_t s = regions_.listed(); s < sites; ++s)
+        if (tree_.weight(s) > 0.0) active.push_back(static_cast<SiteIndex>(s));
+    regions_.set_listed(sites);
+    double total = 0.0;
+    std::size_t kept = 0;
+    for (const SiteIndex s : active) {
+        const double w = tree_.weight(s);
+        if (w > 0.0) {
+            active[kept++] = s;
+            total += w;
+        }
+    }
+    active.resize(kept);
+    if (kept == 0 || !(total > 0.0)) return false;
+    // An epoch's length: about kDartsPerCell darts per cell at its bound.
+    const double dt = regions_.darts_per_cell() * static_cast<double>(kept) / total;
+    const std::size_t nblocks = (kept + RegionDarts::kBlock - 1) / RegionDarts::kBlock;
+    std::vector<RegionDarts::Block>& blocks = regions_.blocks(nblocks);
+    const MeshCells cells = this->cells();
+    // Blocks are taken in turn by whichever worker is free; each writes its
+    // own block, so the joined lists do not depend on who drew them.
+    WorkerPool pool(nblocks > 1 ? threads_ : 1);
+    std::atomic<std::size_t> next_block{0};
+    pool.run([&](unsigned) {
+        for (std::size_t b; (b = next_block.fetch_add(1, std::memory_order_relaxed)) < nblocks;)
+            draw_region_block(cells, b, dt, blocks[b]);
+    });
+    regions_.decide_and_commit(nblocks, r_, [&](SiteIndex site, double w) { tree_.set_leaf_only(site, w); });
+    return true;
+}
+
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::draw_region_block(const MeshCells& cells, std::size_t block, double dt,
+                                               RegionDarts::Block& out) const {
+    const std::vector<SiteIndex>& active = regions_.active_sites();
+    const std::size_t first = block * RegionDarts::kBlock;
+    const std::size_t last = std::min(active.size(), first + RegionDarts::kBlock);
+    // The cells that draw darts are found kMaxBatch at a time, then their
+    // rings are fetched together (their misses overlap) and drawn from.
+    struct Drawer {
+        SiteIndex site;
+        unsigned darts;
+        std::uint64_t seed;
+    };
+    Drawer drawers[kMaxBatch];
+    VertexIndex rings[kMaxBatch];
+    std::size_t i = first;
+    while (i < last) {
+        std::size_t n = 0;
+        for (; i < last && n < kMaxBatch; ++i) {
+            const SiteIndex site = active[i];
+            const double mean = tree_.weight(site) * dt;
+            SpaceTimeStream stream(regions_.salted_seed(), site, regions_.epoch());
+            // P(at least one dart) = 1 - e^-mean <= mean: most cells stop here.
+            const double u = stream.next_double();
+            if (u >= mean) continue;
+            // The count by inversion of 1 - u (0 iff 1 - u < e^-mean).
+            const double v = 1.0 - u;
+            double p = std::exp(-mean), sum = p;
+            unsigned darts = 0;
+            while (v >= sum && darts < 63) {
+                ++darts;
+                p *= mean / darts;
+                sum += p;
+            }
+            if (darts == 0) continue;
+            rings[n] = vertex_of(site);
+            drawers[n++] = Drawer{site, darts, stream.next_u64()};
+        }
+        dt_.prefetch_rings(rings, n);
+        for (std::size_t k = 0; k < n; ++k)
+            draw_in_region(cells, drawers[k].site, drawers[k].darts, drawers[k].seed, out);
+    }
+}
+
+template <class Space, class Rule>
+void JonesLoop<Space, Rule>::draw_in_region(const MeshCells& cells, SiteIndex site, unsigned darts, std::uint64_t seed,
+                                            RegionDarts::Block& out) const {
+    const double bound = tree_.weight(site);
+    Rng rng(seed);
+    const VertexIndex vx = vertex_of(site);
+    const CellQuery q = cells.query(vx);
+    double weight = bound;
+    bool exact = false;  // weight is the cell's exact free area
+    for (unsigned d = 0; d < darts; ++d) {
+        // Kept iff its target u U falls in the exact free area.
+        const double target = rng.next_double() * bound;
+        if (exact && !(target < weight)) continue;  // thinned, known without the ring
+        const CellSelection sel = cells.select(vx, target);
+        if (!sel.found()) {
+            if (sel.measure.doubtful && cells.covered_exactly(vx)) {
+                weight = 0.0;
+                break;
+            }
+            weight = std::min(weight, sel.measure.area);
+            exact = true;
+            if (sel.measure.area < bound) continue;  // thinned
+            // Free by its vertices, yet no chunk with area: the loop's
+            // own draws settle such a cell (and count it) at the end.
+            if (!sel.fallback()) continue;
+        }
+        Point chosen{0.0, 0.0};
+        const auto accept = [&](const Point& x, const Piece& piece) {
+            chosen = space_.snap(x);
+            return acceptable(chosen, vx) && cells.counts(vx, chosen, piece);
+        };
+        Point drawn;
+        const double piece_u = rng.next_double();
+        if (sample_chunk(q, sel.chunk(), piece_u, rng, accept, kMaxDraws, &drawn, true) == SampleOutcome::placed)
+            out.darts.push_back(RegionDarts::Dart{chosen, rng.next_double(), vx});
+        // else: 64 refused draws in a healthy piece (never seen); the
+        // dart is lost, and the loop's own draws settle such a cell.
+    }
+    if (weight < bound) out.bounds.push_back(RegionDarts::Bound{site, weight});
+}
+
+#define PDS_REGION_MEMBERS(Space, Rule)                                                                        \
+    template void JonesLoop<Space, Rule>::carry_darts(std::uint64_t, std::size_t);                             \
+    template const Point* JonesLoop<Space, Rule>::next_region_point();                                         \
+    template void JonesLoop<Space, Rule>::add_region_point();                                                  \
+    template bool JonesLoop<Space, Rule>::draw_region_epoch();                                                 \
+    template void JonesLoop<Space, Rule>::draw_region_block(const MeshCells&, std::size_t, double,             \
+                                                            RegionDarts::Block&) const;                        \
+    template void JonesLoop<Space, Rule>::draw_in_region(const MeshCells&, SiteIndex, unsigned, std::uint64_t, \
+                                                         RegionDarts::Block&) const;
+PDS_REGION_MEMBERS(PlaneSpace, OneRadius)
+PDS_REGION_MEMBERS(PlaneSpace, PowerRule)
+PDS_REGION_MEMBERS(TorusSpace, OneRadius)
+PDS_REGION_MEMBERS(TorusSpace, PowerRule)
+PDS_REGION_MEMBERS(PolygonSpace, OneRadius)
+PDS_REGION_MEMBERS(PolygonSpace, PowerRule)
+
+}  // namespace pds

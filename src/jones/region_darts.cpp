@@ -1,0 +1,105 @@
+// region_darts.cpp - the bookkeeping and the greedy decision of the free
+// regions' dart process (region_darts.hpp).
+#include "jones/region_darts.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/predicates.hpp"
+
+namespace pds {
+
+void RegionDarts::start(std::uint64_t salted_seed, std::size_t epoch) {
+    stop();
+    on_ = true;
+    salted_ = salted_seed;
+    epoch_ = epoch;
+}
+
+void RegionDarts::stop() {
+    on_ = false;
+    ending_ = false;
+    listed_ = 0;
+    next_ = 0;
+    pending_.clear();
+    std::vector<SiteIndex>().swap(active_);
+    std::vector<Block>().swap(blocks_);
+    std::vector<Dart>().swap(darts_);
+    std::vector<std::uint32_t>().swap(by_time_);
+    std::vector<std::uint32_t>().swap(chain_);
+    std::vector<std::uint32_t>().swap(bucket_);
+    heads_ = HashMap();
+}
+
+std::vector<RegionDarts::Block>& RegionDarts::blocks(std::size_t n) {
+    if (blocks_.size() < n) blocks_.resize(n);
+    for (std::size_t b = 0; b < n; ++b) {
+        blocks_[b].darts.clear();
+        blocks_[b].bounds.clear();
+    }
+    return blocks_;
+}
+
+void RegionDarts::decide(std::size_t nblocks, double r) {
+    // Everything is allocated before pending_ changes: std::bad_alloc here
+    // leaves the points that were pending (none: an epoch starts when they
+    // are all handed out) and the bounds as they were.
+    darts_.clear();
+    for (std::size_t b = 0; b < nblocks; ++b)
+        darts_.insert(darts_.end(), blocks_[b].darts.begin(), blocks_[b].darts.end());
+    const std::size_t n = darts_.size();
+    by_time_.resize(n);
+    chain_.resize(n);
+    bucket_.reserve(n + 1);
+    heads_.clear();
+    heads_.reserve(n);
+    pending_.reserve(n);
+    // In order of time by a bucket sort: the times are uniform in [0, 1),
+    // so n buckets hold one dart each on average; ties (1 in 2^53 per
+    // pair) go to the earlier in block order.
+    bucket_.assign(n + 1, 0);
+    const auto bucket_of = [n](double t) { return std::min(n - 1, static_cast<std::size_t>(t * static_cast<double>(n))); };
+    for (std::size_t i = 0; i < n; ++i) ++bucket_[bucket_of(darts_[i].t) + 1];
+    for (std::size_t b = 0; b < n; ++b) bucket_[b + 1] += bucket_[b];
+    for (std::size_t i = 0; i < n; ++i) by_time_[bucket_[bucket_of(darts_[i].t)]++] = static_cast<std::uint32_t>(i);
+    const auto earlier = [&](std::uint32_t a, std::uint32_t b) {
+        return darts_[a].t < darts_[b].t || (darts_[a].t == darts_[b].t && a < b);
+    };
+    for (std::size_t i = 1; i < n; ++i)  // buckets in order; inside one, by insertion
+        for (std::size_t j = i; j > 0 && earlier(by_time_[j], by_time_[j - 1]); --j) std::swap(by_time_[j], by_time_[j - 1]);
+    // Accepted darts hang from a grid of cells of side 2r: the disk of
+    // radius r around a dart meets at most 2 x 2 of them.
+    const double side = 2.0 * r;
+    const auto cell_of = [side](double x) { return static_cast<std::int64_t>(std::floor(x / side)); };
+    // Offset so that no cell's key is the map's empty key.
+    const auto key = [](std::int64_t x, std::int64_t y) {
+        constexpr std::int64_t kOffset = std::int64_t{1} << 30;
+        return (static_cast<std::uint64_t>(x + kOffset) << 32) | static_cast<std::uint64_t>((y + kOffset) & 0xFFFFFFFF);
+    };
+    constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    pending_.clear();
+    next_ = 0;
+    for (const std::uint32_t i : by_time_) {
+        const Point& p = darts_[i].p;
+        const std::int64_t x0 = cell_of(p.x - r), x1 = cell_of(p.x + r);
+        const std::int64_t y0 = cell_of(p.y - r), y1 = cell_of(p.y + r);
+        bool free = true;
+        for (std::int64_t y = y0; y <= y1 && free; ++y)
+            for (std::int64_t x = x0; x <= x1 && free; ++x) {
+                const std::uint32_t* head = heads_.find(key(x, y));
+                for (std::uint32_t j = head ? *head : kNone; j != kNone && free; j = chain_[j])
+                    if (compare_distance(p, darts_[j].p, r) < 0) free = false;
+            }
+        if (!free) continue;
+        const std::uint64_t k = key(cell_of(p.x), cell_of(p.y));
+        const std::uint32_t* head = heads_.find(k);
+        chain_[i] = head ? *head : kNone;
+        heads_.insert_or_assign(k, i);
+        pending_.push_back(darts_[i]);
+    }
+    ++stats_.epochs;
+    stats_.darts += n;
+    stats_.points += pending_.size();
+}
+
+}  // namespace pds
