@@ -1,7 +1,7 @@
 // hash_map.hpp - open-addressing hash map from 64-bit keys to 32-bit values.
 //
 // Linear probing in a power-of-two table kept at most half full; no deletion
-// (the users build a map once and read it, or clear it whole). One key value, kEmptyKey, is
+// (the users build a map once and read it). One key value, kEmptyKey, is
 // reserved to mark free slots. Growth rehashes into a table twice as large and
 // has the strong guarantee (std::bad_alloc leaves the map as it was).
 //
@@ -53,12 +53,6 @@ public:
                 return;
             }
         }
-    }
-
-    // Empties the map and keeps its table (no allocation).
-    void clear() {
-        for (Slot& s : slots_) s.key = kEmptyKey;
-        size_ = 0;
     }
 
     std::size_t size() const { return size_; }

@@ -28,7 +28,7 @@ template <class Space, class Rule>
 void JonesLoop<Space, Rule>::carry_darts(std::uint64_t salted_seed, std::size_t epoch) {
     if constexpr (kCarriesDarts<Space, Rule>) {
         // Another salt: these streams share nothing with the opening's.
-        regions_.start(mix64(salted_seed ^ 0x6A09E667F3BCC909ull), epoch);
+        regions_.start(mix64(salted_seed ^ 0x6A09E667F3BCC909ull), epoch, space_.clip_box(), r_);
     }
 }
 

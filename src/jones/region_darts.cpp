@@ -9,11 +9,17 @@
 
 namespace pds {
 
-void RegionDarts::start(std::uint64_t salted_seed, std::size_t epoch) {
+void RegionDarts::start(std::uint64_t salted_seed, std::size_t epoch, const Box& domain, double r) {
     stop();
     on_ = true;
     salted_ = salted_seed;
     epoch_ = epoch;
+    // The grid is allocated at the first decision (the hand-over allocates
+    // nothing); here only its shape.
+    grid_x0_ = domain.x0 - r;
+    grid_y0_ = domain.y0 - r;
+    grid_columns_ = static_cast<std::size_t>(std::ceil((domain.width() + 2.0 * r) / (2.0 * r))) + 1;
+    grid_rows_ = static_cast<std::size_t>(std::ceil((domain.height() + 2.0 * r) / (2.0 * r))) + 1;
 }
 
 void RegionDarts::stop() {
@@ -28,7 +34,7 @@ void RegionDarts::stop() {
     std::vector<std::uint32_t>().swap(by_time_);
     std::vector<std::uint32_t>().swap(chain_);
     std::vector<std::uint32_t>().swap(bucket_);
-    heads_ = HashMap();
+    std::vector<std::uint32_t>().swap(grid_);
 }
 
 std::vector<RegionDarts::Block>& RegionDarts::blocks(std::size_t n) {
@@ -41,9 +47,23 @@ std::vector<RegionDarts::Block>& RegionDarts::blocks(std::size_t n) {
 }
 
 void RegionDarts::decide(std::size_t nblocks, double r) {
+    // The grid of accepted darts: cells of side 2r over the domain and a
+    // margin of r, so the disk of radius r around a dart meets at most 2 x 2
+    // of them (two words in each of two rows). Its cells are emptied of the
+    // last epoch's darts first.
+    const double side = 2.0 * r;
+    const auto column = [&](double x) {
+        return std::min(grid_columns_ - 1, static_cast<std::size_t>(std::max(0.0, std::floor((x - grid_x0_) / side))));
+    };
+    const auto row = [&](double y) {
+        return std::min(grid_rows_ - 1, static_cast<std::size_t>(std::max(0.0, std::floor((y - grid_y0_) / side))));
+    };
+    constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    for (const Dart& d : pending_) grid_[row(d.p.y) * grid_columns_ + column(d.p.x)] = kNone;
     // Everything is allocated before pending_ changes: std::bad_alloc here
     // leaves the points that were pending (none: an epoch starts when they
     // are all handed out) and the bounds as they were.
+    if (grid_.empty()) grid_.assign(grid_columns_ * grid_rows_, kNone);
     darts_.clear();
     for (std::size_t b = 0; b < nblocks; ++b)
         darts_.insert(darts_.end(), blocks_[b].darts.begin(), blocks_[b].darts.end());
@@ -51,14 +71,14 @@ void RegionDarts::decide(std::size_t nblocks, double r) {
     by_time_.resize(n);
     chain_.resize(n);
     bucket_.reserve(n + 1);
-    heads_.clear();
-    heads_.reserve(n);
     pending_.reserve(n);
     // In order of time by a bucket sort: the times are uniform in [0, 1),
     // so n buckets hold one dart each on average; ties (1 in 2^53 per
     // pair) go to the earlier in block order.
     bucket_.assign(n + 1, 0);
-    const auto bucket_of = [n](double t) { return std::min(n - 1, static_cast<std::size_t>(t * static_cast<double>(n))); };
+    const auto bucket_of = [n](double t) {
+        return std::min(n - 1, static_cast<std::size_t>(t * static_cast<double>(n)));
+    };
     for (std::size_t i = 0; i < n; ++i) ++bucket_[bucket_of(darts_[i].t) + 1];
     for (std::size_t b = 0; b < n; ++b) bucket_[b + 1] += bucket_[b];
     for (std::size_t i = 0; i < n; ++i) by_time_[bucket_[bucket_of(darts_[i].t)]++] = static_cast<std::uint32_t>(i);
@@ -66,35 +86,23 @@ void RegionDarts::decide(std::size_t nblocks, double r) {
         return darts_[a].t < darts_[b].t || (darts_[a].t == darts_[b].t && a < b);
     };
     for (std::size_t i = 1; i < n; ++i)  // buckets in order; inside one, by insertion
-        for (std::size_t j = i; j > 0 && earlier(by_time_[j], by_time_[j - 1]); --j) std::swap(by_time_[j], by_time_[j - 1]);
-    // Accepted darts hang from a grid of cells of side 2r: the disk of
-    // radius r around a dart meets at most 2 x 2 of them.
-    const double side = 2.0 * r;
-    const auto cell_of = [side](double x) { return static_cast<std::int64_t>(std::floor(x / side)); };
-    // Offset so that no cell's key is the map's empty key.
-    const auto key = [](std::int64_t x, std::int64_t y) {
-        constexpr std::int64_t kOffset = std::int64_t{1} << 30;
-        return (static_cast<std::uint64_t>(x + kOffset) << 32) | static_cast<std::uint64_t>((y + kOffset) & 0xFFFFFFFF);
-    };
-    constexpr std::uint32_t kNone = ~std::uint32_t{0};
+        for (std::size_t j = i; j > 0 && earlier(by_time_[j], by_time_[j - 1]); --j)
+            std::swap(by_time_[j], by_time_[j - 1]);
     pending_.clear();
     next_ = 0;
     for (const std::uint32_t i : by_time_) {
         const Point& p = darts_[i].p;
-        const std::int64_t x0 = cell_of(p.x - r), x1 = cell_of(p.x + r);
-        const std::int64_t y0 = cell_of(p.y - r), y1 = cell_of(p.y + r);
+        const std::size_t x0 = column(p.x - r), x1 = column(p.x + r);
+        const std::size_t y0 = row(p.y - r), y1 = row(p.y + r);
         bool free = true;
-        for (std::int64_t y = y0; y <= y1 && free; ++y)
-            for (std::int64_t x = x0; x <= x1 && free; ++x) {
-                const std::uint32_t* head = heads_.find(key(x, y));
-                for (std::uint32_t j = head ? *head : kNone; j != kNone && free; j = chain_[j])
+        for (std::size_t y = y0; y <= y1 && free; ++y)
+            for (std::size_t x = x0; x <= x1 && free; ++x)
+                for (std::uint32_t j = grid_[y * grid_columns_ + x]; j != kNone && free; j = chain_[j])
                     if (compare_distance(p, darts_[j].p, r) < 0) free = false;
-            }
         if (!free) continue;
-        const std::uint64_t k = key(cell_of(p.x), cell_of(p.y));
-        const std::uint32_t* head = heads_.find(k);
-        chain_[i] = head ? *head : kNone;
-        heads_.insert_or_assign(k, i);
+        std::uint32_t& head = grid_[row(p.y) * grid_columns_ + column(p.x)];
+        chain_[i] = head;
+        head = i;
         pending_.push_back(darts_[i]);
     }
     ++stats_.epochs;

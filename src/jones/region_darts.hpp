@@ -38,7 +38,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/hash_map.hpp"
 #include "core/indices.hpp"
 #include "core/point.hpp"
 
@@ -72,8 +71,8 @@ public:
     static constexpr std::size_t kBlock = 4096;  // active sites per block
 
     // Starts the process, its streams keyed from epoch `epoch` on (the
-    // opening's epochs come before).
-    void start(std::uint64_t salted_seed, std::size_t epoch);
+    // opening's epochs come before), for points in `domain` at radius r.
+    void start(std::uint64_t salted_seed, std::size_t epoch, const Box& domain, double r);
     void stop();
     bool on() const { return on_; }
     // Another mean for the tests: longer epochs, whose darts meet often.
@@ -136,7 +135,9 @@ private:
     std::vector<std::uint32_t> by_time_;  // their indices in order of time
     std::vector<std::uint32_t> chain_;    // accepted darts of one grid cell
     std::vector<std::uint32_t> bucket_;   // the time sort's buckets
-    HashMap heads_;                       // grid cell -> its last accepted dart
+    std::vector<std::uint32_t> grid_;     // per cell of side 2R: its last accepted dart
+    double grid_x0_ = 0, grid_y0_ = 0;    // the grid's corner
+    std::size_t grid_columns_ = 0, grid_rows_ = 0;
     std::vector<Dart> pending_;           // accepted, in order of time
     std::size_t next_ = 0;
     Stats stats_;

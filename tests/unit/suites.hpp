@@ -22,6 +22,7 @@ Suite* verify_field_suite();
 Suite* dart_stage_suite();
 Suite* field_dart_stage_suite();
 Suite* space_time_stage_suite();
+Suite* region_darts_suite();
 Suite* sampler_suite();
 Suite* law_suite();
 Suite* law_torus_suite();

@@ -1,0 +1,161 @@
+// test_region_darts.cpp - the free regions' dart process after the parallel
+// opening (jones/region_darts.hpp): an epoch's decision is the greedy set in
+// order of time, against a brute-force one, over blocks, across epochs and
+// at the domain's edges; and in a run it places a real share of the points,
+// which stay the same on any number of threads and are dropped by a refine.
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+#include "core/predicates.hpp"
+#include "core/rng.hpp"
+#include "jones/region_darts.hpp"
+#include "sampler/sampler.hpp"
+#include "suites.hpp"
+
+namespace {
+
+using Dart = pds::RegionDarts::Dart;
+
+// Greedy in order of time (ties: the earlier in the list), by brute force.
+std::vector<Dart> greedy(const std::vector<Dart>& darts, double r) {
+    std::vector<std::size_t> order(darts.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return darts[a].t < darts[b].t; });
+    std::vector<Dart> kept;
+    for (std::size_t i : order) {
+        bool free = true;
+        for (const Dart& k : kept)
+            if (pds::compare_distance(darts[i].p, k.p, r) < 0) free = false;
+        if (free) kept.push_back(darts[i]);
+    }
+    return kept;
+}
+
+// Hands `darts` to `rd` split over `nblocks` blocks in list order, decides
+// them and returns what became pending.
+std::vector<Dart> decide(pds::RegionDarts& rd, const std::vector<Dart>& darts, std::size_t nblocks, double r) {
+    std::vector<pds::RegionDarts::Block>& blocks = rd.blocks(nblocks);
+    for (std::size_t i = 0; i < darts.size(); ++i) blocks[i * nblocks / darts.size()].darts.push_back(darts[i]);
+    rd.decide_and_commit(nblocks, r, [](pds::SiteIndex, double) {});
+    std::vector<Dart> out;
+    for (; rd.has_pending(); rd.pop()) out.push_back(rd.pending());
+    return out;
+}
+
+void assert_same_darts(const std::vector<Dart>& got, const std::vector<Dart>& want, const char* what) {
+    ck_assert_msg(got.size() == want.size(), "%s: %zu accepted, the greedy set has %zu", what, got.size(), want.size());
+    for (std::size_t i = 0; i < got.size(); ++i)
+        ck_assert_msg(got[i].p.x == want[i].p.x && got[i].p.y == want[i].p.y && got[i].t == want[i].t,
+                      "%s: accepted dart %zu differs", what, i);
+}
+
+// n darts uniform in box and in time, a tenth of them on its edges.
+std::vector<Dart> random_darts(pds::Rng& rng, const pds::Box& box, std::size_t n) {
+    std::vector<Dart> d(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        double x = box.x0 + rng.next_double() * box.width(), y = box.y0 + rng.next_double() * box.height();
+        if (i % 10 == 0) x = (i % 20 == 0) ? box.x0 : box.x1;
+        if (i % 15 == 0) y = (i % 30 == 0) ? box.y0 : box.y1;
+        d[i] = Dart{{x, y}, rng.next_double(), static_cast<pds::VertexIndex>(i)};
+    }
+    return d;
+}
+
+}  // namespace
+
+START_TEST(decision_is_the_greedy_set_in_order_of_time) {
+    // Many darts per disk, so nearly every one meets others: the order
+    // decides. Several epochs in a row: the grid must forget the last one's.
+    const pds::Box box{-1.0, 2.0, 0.5, 2.6};
+    const double r = 0.05;
+    pds::RegionDarts rd;
+    rd.start(1, 0, box, r);
+    pds::Rng rng(17);
+    for (int epoch = 0; epoch < 4; ++epoch) {
+        const std::vector<Dart> darts = random_darts(rng, box, 1500);
+        const std::vector<Dart> got = decide(rd, darts, 1 + static_cast<std::size_t>(epoch) * 3, r);
+        assert_same_darts(got, greedy(darts, r), "epoch");
+        ck_assert_uint_gt(got.size(), 50);
+        ck_assert_uint_lt(got.size(), 1000);
+    }
+    ck_assert_uint_eq(rd.stats().epochs, 4);
+}
+END_TEST
+
+START_TEST(ties_in_time_go_to_the_earlier_block) {
+    const pds::Box box{0, 0, 1, 1};
+    pds::RegionDarts rd;
+    rd.start(1, 0, box, 0.1);
+    // Two darts 0.05 apart at the same time, in two blocks; a third, far
+    // away and later, is kept too.
+    const std::vector<Dart> darts{{{0.5, 0.5}, 0.25, 7}, {{0.55, 0.5}, 0.25, 8}, {{0.9, 0.9}, 0.5, 9}};
+    const std::vector<Dart> got = decide(rd, darts, 3, 0.1);
+    ck_assert_uint_eq(got.size(), 2);
+    ck_assert_uint_eq(got[0].source, 7);
+    ck_assert_uint_eq(got[1].source, 9);
+}
+END_TEST
+
+START_TEST(darts_exactly_r_apart_are_both_kept) {
+    // "At least R apart" is allowed: only a distance below R conflicts.
+    const pds::Box box{0, 0, 1, 1};
+    pds::RegionDarts rd;
+    rd.start(1, 0, box, 0.25);
+    const std::vector<Dart> darts{{{0.25, 0.5}, 0.1, 1}, {{0.5, 0.5}, 0.2, 2}, {{0.5, 0.7}, 0.3, 3}};
+    const std::vector<Dart> got = decide(rd, darts, 1, 0.25);
+    ck_assert_uint_eq(got.size(), 2);
+    ck_assert_uint_eq(got[1].source, 2);
+}
+END_TEST
+
+START_TEST(run_places_a_share_the_same_on_any_threads) {
+    // 40,000 points: the free cells at the hand-over fill several blocks.
+    std::vector<double> first;
+    for (unsigned threads = 1; threads <= 3; ++threads) {
+        pds::Sampler s(0.004, 5);
+        s.set_threads(threads);
+        std::size_t added = 0;
+        ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+        const pds::RegionDarts::Stats& st = s.jones().region_stats();
+        const double share = static_cast<double>(st.points) / static_cast<double>(s.count());
+        ck_assert_msg(share > 0.15 && share < 0.4, "the free regions' darts placed %.3f of the points", share);
+        ck_assert_uint_ge(st.darts, st.points);
+        std::vector<double> xy(2 * s.count());
+        s.copy_points(0, s.count(), xy.data());
+        if (threads == 1) first = xy;
+        else ck_assert_msg(xy == first, "%u threads: other points", threads);
+        ck_assert_msg(s.verify().failure.empty(), "verify: %s", s.verify().failure.c_str());
+    }
+}
+END_TEST
+
+START_TEST(refine_ends_the_free_regions_darts) {
+    // A refine in the middle of the process: the darts drawn for the old
+    // radius are dropped and the loop's own draws finish maximal.
+    pds::Sampler s(0.004, 5);
+    s.set_threads(2);
+    std::size_t added = 0;
+    s.run(50000 * 3 / 4 + 2000, &added);  // past the hand-over (about 75%)
+    const std::size_t placed = s.jones().region_stats().points;
+    ck_assert_uint_gt(placed, 0);
+    s.refine(0.0035);
+    ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+    ck_assert_uint_eq(s.jones().region_stats().points, placed);
+    ck_assert_msg(s.verify().failure.empty(), "verify: %s", s.verify().failure.c_str());
+}
+END_TEST
+
+Suite* region_darts_suite() {
+    Suite* s = suite_create("region_darts");
+    TCase* t = tcase_create("region_darts");
+    tcase_set_timeout(t, 120);
+    tcase_add_test(t, decision_is_the_greedy_set_in_order_of_time);
+    tcase_add_test(t, ties_in_time_go_to_the_earlier_block);
+    tcase_add_test(t, darts_exactly_r_apart_are_both_kept);
+    tcase_add_test(t, run_places_a_share_the_same_on_any_threads);
+    tcase_add_test(t, refine_ends_the_free_regions_darts);
+    suite_add_tcase(s, t);
+    return s;
+}
