@@ -25,12 +25,16 @@
 // a stream keyed by (seed, site, e); a site's number never depends on the
 // threads (points are inserted in order of time). The cells are drawn side
 // by side in fixed blocks, each block writing its own list; the lists are
-// joined in block order, and the decision reads times only. Only the
-// decision and the insertions run on the caller's thread.
+// joined in block order, and the decision reads times only. The scan of
+// the active list (its bounds summed in its order), the decision and the
+// insertions run on the caller's thread.
 //
 // Memory. An epoch is all or nothing: its darts and its tightened bounds are
 // written to buffers and committed once all of them exist; std::bad_alloc
 // leaves the process as before the epoch, so a later call draws the same.
+// Besides the active list (4 bytes a free cell) and an epoch's darts, the
+// decision keeps a grid of one word per cell of side 2R (about 1.5 bytes a
+// point), allocated at the first epoch; about 8 bytes a point in all.
 #ifndef PDS_REGION_DARTS_HPP
 #define PDS_REGION_DARTS_HPP
 
@@ -93,7 +97,7 @@ public:
         return m;
     }
 
-    // Epoch bookkeeping for the loop (region_darts_epoch.hpp runs it).
+    // Epoch bookkeeping for the loop (jones_loop_regions.cpp runs it).
     std::uint64_t salted_seed() const { return salted_; }
     std::size_t epoch() const { return epoch_; }
     std::vector<SiteIndex>& active() { return active_; }
