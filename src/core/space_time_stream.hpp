@@ -36,8 +36,9 @@ public:
     // A Poisson count of the given mean, by inversion; exp_minus_mean is
     // e^-mean (worked out once per epoch). Capped at 63, whose probability
     // is far below 2^-53 for the means used (at most a few).
-    unsigned poisson(double mean, double exp_minus_mean) {
-        const double u = next_double();
+    unsigned poisson(double mean, double exp_minus_mean) { return poisson_at(next_double(), mean, exp_minus_mean); }
+    // The count whose cumulative probability first passes u in [0, 1).
+    static unsigned poisson_at(double u, double mean, double exp_minus_mean) {
         double p = exp_minus_mean, sum = p;
         unsigned k = 0;
         while (u >= sum && k < 63) {

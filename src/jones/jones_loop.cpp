@@ -7,7 +7,6 @@
 #include <cmath>
 #include <new>
 #include <stdexcept>
-#include <string>
 
 #include "core/worker_pool.hpp"
 #include "jones/plane_space.hpp"
@@ -130,8 +129,7 @@ const Point* JonesLoop<Space, Rule>::next(Rng& rng) {
         }
         return &first_.p;
     }
-    if (regions_.on())
-        if (const Point* p = next_region_point()) return p;
+    if (const Point* p = regions_.on() ? next_region_point() : nullptr) return p;
     for (;;) {
         while (queue_head_ < queue_.size()) {
             const Candidate& cand = queue_[queue_head_];
@@ -155,10 +153,7 @@ void JonesLoop<Space, Rule>::add_next() {
         space_.insert_point(*this, first_.p, 0, value);
         return;
     }
-    if (regions_.on()) {
-        add_region_point();
-        return;
-    }
+    if (regions_.on()) return add_region_point();
     if (queue_head_ >= queue_.size()) throw std::logic_error("add_next without next");
     const double value = rule_.value_at(space_, queue_[queue_head_].p);
     const Candidate cand = queue_[queue_head_++];
@@ -345,54 +340,6 @@ template <class Space, class Rule>
 void JonesLoop<Space, Rule>::give_up(SiteIndex site) {
     if (!cells().covered_exactly(vertex_of(site))) ++stats_.gave_up_cells;
     set_weight(site, 0.0);
-}
-
-template <class Space, class Rule>
-double JonesLoop<Space, Rule>::free_area() const {
-    // Cells are the torus's only once the margin is settled.
-    if (space_.pending()) throw std::bad_alloc();
-    // The tree holds upper bounds; the exact area is re-measured, cell by cell,
-    // in leaf order (so the sum is the same on every call). A cell whose
-    // measure rounding leaves open counts only if the exact test finds room
-    // in it, as when a draw selects it: a pattern that is maximal has 0,
-    // not a residue of rounding (a refine by an ulp leaves such cells).
-    const MeshCells cells = this->cells();
-    double sum = 0.0;
-    tree_.for_each_positive([&](SiteIndex site) {
-        const VertexIndex v = vertex_of(site);
-        if (rule_.hidden(dt_, v)) return true;
-        const CellMeasure m = cells.measure(v);
-        if (m.free() > 0.0 && !(m.doubtful && cells.covered_exactly(v))) sum += m.free();
-        return true;
-    });
-    return sum;
-}
-
-template <class Space, class Rule>
-VerifyReport JonesLoop<Space, Rule>::verify() const {
-    if (space_.pending()) throw std::bad_alloc();
-    VerifyReport rep;
-    if (Rule::kWeighted) {
-        // Each disk is checked against the points after it: their ranks.
-        std::vector<std::size_t> rank(dt_.vertex_count(), 0);
-        for (std::size_t k = 0; k < count(); ++k) rank[order_.vertex(k)] = k;
-        rep = space_.verify(dt_, r_, &rank, fixed_);
-    } else {
-        rep = space_.verify(dt_, r_, nullptr, fixed_);
-    }
-    if (rep.vertex != kNoVertex) {
-        const PointIndex k = order_.point(rep.vertex);
-        if (k < fixed_) rep.failure += " (fixed point " + std::to_string(k) + ")";
-        else name_point(rep, k - fixed_);
-    }
-    if (rep.valid && !rep.maximal && count() > 0 && tree_.total() == 0.0) {
-        rep.valid = false;
-        rep.failure = "the sampler reported a maximal pattern, but " + rep.failure;
-        if (stats_.gave_up_cells > 0)
-            rep.failure += " (" + std::to_string(stats_.gave_up_cells) +
-                           " free regions were below double-precision resolution)";
-    }
-    return rep;
 }
 
 template class JonesLoop<PlaneSpace, OneRadius>;

@@ -103,7 +103,7 @@ bool JonesLoop<Space, Rule>::draw_region_epoch() {
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::draw_region_block(const MeshCells& cells, std::size_t block, double dt,
                                                RegionDarts::Block& out) const {
-    const std::vector<SiteIndex>& active = regions_.active_sites();
+    const std::vector<SiteIndex>& active = regions_.active();
     const std::size_t first = block * RegionDarts::kBlock;
     const std::size_t last = std::min(active.size(), first + RegionDarts::kBlock);
     // The cells that draw darts are found kMaxBatch at a time, then their
@@ -126,14 +126,7 @@ void JonesLoop<Space, Rule>::draw_region_block(const MeshCells& cells, std::size
             const double u = stream.next_double();
             if (u >= mean) continue;
             // The count by inversion of 1 - u (0 iff 1 - u < e^-mean).
-            const double v = 1.0 - u;
-            double p = std::exp(-mean), sum = p;
-            unsigned darts = 0;
-            while (v >= sum && darts < 63) {
-                ++darts;
-                p *= mean / darts;
-                sum += p;
-            }
+            const unsigned darts = SpaceTimeStream::poisson_at(1.0 - u, mean, std::exp(-mean));
             if (darts == 0) continue;
             rings[n] = vertex_of(site);
             drawers[n++] = Drawer{site, darts, stream.next_u64()};

@@ -101,7 +101,7 @@ public:
     std::uint64_t salted_seed() const { return salted_; }
     std::size_t epoch() const { return epoch_; }
     std::vector<SiteIndex>& active() { return active_; }
-    const std::vector<SiteIndex>& active_sites() const { return active_; }
+    const std::vector<SiteIndex>& active() const { return active_; }
     std::size_t listed() const { return listed_; }
     void set_listed(std::size_t sites) { listed_ = sites; }
     std::vector<Block>& blocks(std::size_t n);

@@ -44,6 +44,13 @@ std::vector<Dart> decide(pds::RegionDarts& rd, const std::vector<Dart>& darts, s
     return out;
 }
 
+// One epoch of `darts` in the unit square.
+std::vector<Dart> decide_once(const std::vector<Dart>& darts, std::size_t nblocks, double r) {
+    pds::RegionDarts rd;
+    rd.start(1, 0, pds::Box{0, 0, 1, 1}, r);
+    return decide(rd, darts, nblocks, r);
+}
+
 void assert_same_darts(const std::vector<Dart>& got, const std::vector<Dart>& want, const char* what) {
     ck_assert_msg(got.size() == want.size(), "%s: %zu accepted, the greedy set has %zu", what, got.size(), want.size());
     for (std::size_t i = 0; i < got.size(); ++i)
@@ -85,13 +92,10 @@ START_TEST(decision_is_the_greedy_set_in_order_of_time) {
 END_TEST
 
 START_TEST(ties_in_time_go_to_the_earlier_block) {
-    const pds::Box box{0, 0, 1, 1};
-    pds::RegionDarts rd;
-    rd.start(1, 0, box, 0.1);
     // Two darts 0.05 apart at the same time, in two blocks; a third, far
     // away and later, is kept too.
     const std::vector<Dart> darts{{{0.5, 0.5}, 0.25, 7}, {{0.55, 0.5}, 0.25, 8}, {{0.9, 0.9}, 0.5, 9}};
-    const std::vector<Dart> got = decide(rd, darts, 3, 0.1);
+    const std::vector<Dart> got = decide_once(darts, 3, 0.1);
     ck_assert_uint_eq(got.size(), 2);
     ck_assert_uint_eq(got[0].source, 7);
     ck_assert_uint_eq(got[1].source, 9);
@@ -100,11 +104,8 @@ END_TEST
 
 START_TEST(darts_exactly_r_apart_are_both_kept) {
     // "At least R apart" is allowed: only a distance below R conflicts.
-    const pds::Box box{0, 0, 1, 1};
-    pds::RegionDarts rd;
-    rd.start(1, 0, box, 0.25);
     const std::vector<Dart> darts{{{0.25, 0.5}, 0.1, 1}, {{0.5, 0.5}, 0.2, 2}, {{0.5, 0.7}, 0.3, 3}};
-    const std::vector<Dart> got = decide(rd, darts, 1, 0.25);
+    const std::vector<Dart> got = decide_once(darts, 1, 0.25);
     ck_assert_uint_eq(got.size(), 2);
     ck_assert_uint_eq(got[1].source, 2);
 }
