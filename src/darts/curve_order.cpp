@@ -9,7 +9,10 @@ namespace pds {
 
 CurveOrder::CurveOrder(const Box& box, double side_x, double side_y, std::size_t cols, std::size_t rows)
     : box_(box), inv_side_x_(1.0 / side_x), inv_side_y_(1.0 / side_y), cols_(cols), rows_(rows) {
-    while (side_ < cols_ || side_ < rows_) side_ *= 2;
+    while (side_ < cols_ || side_ < rows_) {
+        side_ *= 2;
+        ++side_bits_;
+    }
 }
 
 void CurveOrder::reserve(std::size_t points) {
@@ -20,26 +23,80 @@ void CurveOrder::reserve(std::size_t points) {
     tmp_key_.reserve(points);
 }
 
+namespace {
+
+// The Hilbert curve as a state machine. Each level of the grid splits a cell
+// into quadrants; the curve visits them in the order (0,0) (0,1) (1,1) (1,0)
+// of the quadrant's (x, y) bits, after the level's transformation of the
+// coordinates: a swap of x and y, a complement of both, both or neither (they
+// commute, so four states: bit 0 swap, bit 1 complement). Entering quadrant
+// (tx, 0) swaps, and (1, 0) also complements, for the levels below.
+struct LevelStep {
+    unsigned digit, state;
+};
+constexpr LevelStep level_step(unsigned state, unsigned bx, unsigned by) {
+    unsigned tx = bx, ty = by;
+    if (state & 2u) {
+        tx ^= 1u;
+        ty ^= 1u;
+    }
+    if (state & 1u) {
+        const unsigned t = tx;
+        tx = ty;
+        ty = t;
+    }
+    unsigned next = state;
+    if (ty == 0) next ^= tx != 0 ? 3u : 1u;
+    return LevelStep{(3u * tx) ^ ty, next};
+}
+
+// Two levels at a time: entry [state][x1 y1 x0 y0] holds the two digits
+// (4 bits) over the next state (2 bits). One level for an odd level count.
+struct HilbertTables {
+    std::uint8_t two[4][16] = {};
+    std::uint8_t one[4][4] = {};
+};
+constexpr HilbertTables make_hilbert_tables() {
+    HilbertTables t;
+    for (unsigned state = 0; state < 4; ++state) {
+        for (unsigned bits = 0; bits < 16; ++bits) {
+            const LevelStep high = level_step(state, (bits >> 3) & 1u, (bits >> 2) & 1u);
+            const LevelStep low = level_step(high.state, (bits >> 1) & 1u, bits & 1u);
+            t.two[state][bits] = static_cast<std::uint8_t>((((high.digit << 2) | low.digit) << 2) | low.state);
+        }
+        for (unsigned bits = 0; bits < 4; ++bits) {
+            const LevelStep step = level_step(state, bits >> 1, bits & 1u);
+            t.one[state][bits] = static_cast<std::uint8_t>((step.digit << 2) | step.state);
+        }
+    }
+    return t;
+}
+constexpr HilbertTables kHilbert = make_hilbert_tables();
+
+}  // namespace
+
 std::uint64_t CurveOrder::key(const Point& p) const {
-    // Position along a Hilbert curve over the cells (rotating each quadrant
-    // so the curve stays continuous); nearby keys are nearby cells. 64 bits:
-    // a side of up to 2^32 cells.
-    std::uint64_t x = clamped_cell((p.x - box_.x0) * inv_side_x_, cols_);
-    std::uint64_t y = clamped_cell((p.y - box_.y0) * inv_side_y_, rows_);
+    // Position along a Hilbert curve over the cells; nearby keys are nearby
+    // cells. 64 bits: a side of up to 2^32 cells. By table, two levels a
+    // step: the state is the only dependence between steps (branches on the
+    // random quadrants, then masks, were most of the hand-over's sort).
+    const std::uint64_t x = clamped_cell((p.x - box_.x0) * inv_side_x_, cols_);
+    const std::uint64_t y = clamped_cell((p.y - box_.y0) * inv_side_y_, rows_);
     std::uint64_t key = 0;
-    // Without branches (they were most of the hand-over's sorting time, the
-    // quadrants being random): the rotation is a flip by masks (s - 1 - v is
-    // v ^ (s - 1) below s) and a masked swap. Only bits below s matter later.
-    for (std::uint64_t s = side_ / 2; s > 0; s /= 2) {
-        const std::uint64_t rx = (x & s) != 0, ry = (y & s) != 0;
-        key += s * s * ((3 * rx) ^ ry);
-        const std::uint64_t low = s - 1;
-        const std::uint64_t flip = (0 - (rx & (ry ^ 1))) & low;
-        x = (x & low) ^ flip;
-        y = (y & low) ^ flip;
-        const std::uint64_t swap = (x ^ y) & (0 - (ry ^ 1));
-        x ^= swap;
-        y ^= swap;
+    unsigned state = 0;
+    int level = side_bits_;
+    if (level & 1) {
+        --level;
+        const unsigned e = kHilbert.one[state][(((x >> level) & 1u) << 1) | ((y >> level) & 1u)];
+        key = e >> 2;
+        state = e & 3u;
+    }
+    while (level > 0) {
+        level -= 2;
+        const unsigned bx = static_cast<unsigned>((x >> level) & 3u), by = static_cast<unsigned>((y >> level) & 3u);
+        const unsigned e = kHilbert.two[state][((bx & 2u) << 2) | ((by & 2u) << 1) | ((bx & 1u) << 1) | (by & 1u)];
+        key = (key << 4) | (e >> 2);
+        state = e & 3u;
     }
     return key;
 }
@@ -73,9 +130,7 @@ void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, st
     // The side stays below 2^30 cells: a dart stage runs only when Oler's
     // bound fits the index type (sampler.cpp), and a grid k cells long has
     // a bound of at least k/1.43 points; so keys fit 64 bits.
-    int side_bits = 0;
-    while ((std::uint64_t{1} << side_bits) < side_) ++side_bits;
-    const int key_bits = 2 * side_bits;
+    const int key_bits = 2 * side_bits_;
     constexpr int kDigit = 11;
     constexpr std::uint64_t kMask = (std::uint64_t{1} << kDigit) - 1;
     std::size_t begin = 0;

@@ -49,6 +49,7 @@ void Frame::set_domain(const Box& user_domain) {
     user_domain_ = user_domain;
     // Coordinates too small to scale keep k = 0; precision_limit() refuses them.
     scale_exp_ = max_magnitude(user_domain) < kMinMagnitude ? 0 : -std::ilogb(max_magnitude(user_domain));
+    to_user_factor_ = scale_exp_ >= -1023 && scale_exp_ <= 1022 ? std::ldexp(1.0, -scale_exp_) : 0.0;
     Box box = Rectangle(user_domain).scaled(scale_exp_).bounds();
     if (torus_) {
         // Periods on the torus grid, rounded down so every point stays inside
@@ -184,10 +185,6 @@ std::size_t Frame::max_points() {
     const std::size_t by_edges = kMaxEdgeRecords / 3 - Delaunay::kGhosts;
     const std::size_t by_memory = static_cast<std::size_t>(-1) / 2 / kBytesPerPointBudget;
     return std::min(by_edges, by_memory);
-}
-
-Point Frame::to_user(const Point& p) const {
-    return Point{std::ldexp(p.x, -scale_exp_), std::ldexp(p.y, -scale_exp_)};
 }
 
 Point Frame::to_internal(const Point& user) const {

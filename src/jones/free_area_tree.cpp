@@ -6,6 +6,7 @@
 
 #include "core/batch.hpp"
 #include "core/huge_pages.hpp"
+#include "core/page_populate.hpp"
 #include "core/prefetch.hpp"
 
 namespace pds {
@@ -20,6 +21,11 @@ static_assert(FreeAreaTree::kFanout == 8, "the pairwise sums are written for eig
 static_assert(FreeAreaTree::kFanout * sizeof(double) == 64, "a group is one cache line");
 
 }  // namespace
+
+void FreeAreaTree::populate_for(std::size_t leaves) const {
+    if (leaves > capacity_) leaves = capacity_;
+    if (leaves > size_) populate_pages(nodes_.get() + size_, (leaves - size_) * sizeof(double));
+}
 
 void FreeAreaTree::reserve(std::size_t leaves) {
     if (leaves <= capacity_) return;

@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "core/worker_pool.hpp"
 #include "core/space_time_stream.hpp"
+#include "core/worker_pool.hpp"
 #include "jones/jones_loop.hpp"
 #include "jones/plane_space.hpp"
 #include "jones/polygon_space.hpp"
@@ -91,8 +91,16 @@ bool JonesLoop<Space, Rule>::draw_region_epoch() {
     // Blocks are taken in turn by whichever worker is free; each writes its
     // own block, so the joined lists do not depend on who drew them.
     WorkerPool pool(nblocks > 1 ? threads_ : 1);
+    // The pages this epoch's insertions will first write (mesh and tree,
+    // room for 1.25 times the darts expected), made resident by the last
+    // helper before it draws: else the caller's thread faults them in alone.
+    const std::size_t ahead = static_cast<std::size_t>(1.25 * regions_.darts_per_cell() * static_cast<double>(kept));
     std::atomic<std::size_t> next_block{0};
-    pool.run([&](unsigned) {
+    pool.run([&](unsigned w) {
+        if (w != 0 && w + 1 == pool.size()) {
+            dt_.populate_for(dt_.vertex_count() + ahead);
+            tree_.populate_for(tree_.size() + ahead);
+        }
         for (std::size_t b; (b = next_block.fetch_add(1, std::memory_order_relaxed)) < nblocks;)
             draw_region_block(cells, b, dt, blocks[b]);
     });

@@ -6,6 +6,7 @@
 
 #include "core/batch.hpp"
 #include "core/huge_pages.hpp"
+#include "core/page_populate.hpp"
 #include "core/predicates.hpp"
 #include "core/prefetch.hpp"
 
@@ -48,6 +49,16 @@ void Delaunay::reserve(std::size_t vertices) {
     }
     advise_huge_pages(points_);
     advise_huge_pages(vertex_edge_);
+}
+
+void Delaunay::populate_for(std::size_t vertices) const {
+    mesh_.populate_for(mesh_.record_count() + 3 * (vertices > points_.size() ? vertices - points_.size() : 0));
+    populate_ahead(points_, vertices);
+    populate_ahead(vertex_edge_, vertices);
+    if (weighted_) {
+        populate_ahead(radii_, vertices);
+        populate_ahead(hidden_by_, vertices);
+    }
 }
 
 bool Delaunay::has_room_for_one() const {

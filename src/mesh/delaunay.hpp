@@ -59,6 +59,11 @@ public:
     void reserve(std::size_t vertices);
     // True when insert() can run without allocating.
     bool has_room_for_one() const;
+    // Makes resident the pages that insertions up to `vertices` vertices in
+    // all will first write (core/page_populate.hpp), within the room
+    // reserved. Changes nothing the mesh holds: another thread may read the
+    // mesh meanwhile, none may insert.
+    void populate_for(std::size_t vertices) const;
     // True when the mesh has room for `vertices` vertices in all (ghosts
     // included) without allocating, as reserve(vertices) makes.
     bool has_room_for(std::size_t vertices) const {

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/huge_pages.hpp"
+#include "core/page_populate.hpp"
 
 namespace pds {
 
@@ -14,6 +15,8 @@ void QuadEdgeMesh::reserve(std::size_t records) {
     rec_.reserve(records);
     advise_huge_pages(rec_);
 }
+
+void QuadEdgeMesh::populate_for(std::size_t records) const { populate_ahead(rec_, records); }
 
 std::size_t QuadEdgeMesh::spare_records() const {
     return free_count_ + (rec_.capacity() - rec_.size());

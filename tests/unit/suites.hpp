@@ -21,6 +21,7 @@ Suite* verify_suite();
 Suite* verify_field_suite();
 Suite* dart_stage_suite();
 Suite* field_dart_stage_suite();
+Suite* curve_order_suite();
 Suite* space_time_stage_suite();
 Suite* region_darts_suite();
 Suite* sampler_suite();
