@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "core/worker_pool.hpp"
 #include "darts/grid_arithmetic.hpp"
 
 namespace pds {
@@ -101,14 +102,14 @@ std::uint64_t CurveOrder::key(const Point& p) const {
     return key;
 }
 
-const std::uint32_t* CurveOrder::order(const std::vector<Point>& points) {
+const std::uint32_t* CurveOrder::order(const std::vector<Point>& points, unsigned threads) {
     // Sizes within the reserved capacity: no allocation.
     const std::size_t n = points.size();
     order_.resize(n);
     tmp_order_.resize(n);
     key_.resize(n);
     tmp_key_.resize(n);
-    sort(points, order_.data(), key_.data(), tmp_order_.data(), tmp_key_.data());
+    sort(points, order_.data(), key_.data(), tmp_order_.data(), tmp_key_.data(), threads);
     return order_.data();
 }
 
@@ -116,12 +117,12 @@ std::vector<std::uint32_t> CurveOrder::fresh_order(const std::vector<Point>& poi
     const std::size_t n = points.size();
     std::vector<std::uint32_t> order(n), tmp_order(n);
     std::vector<std::uint64_t> key(n), tmp_key(n);
-    sort(points, order.data(), key.data(), tmp_order.data(), tmp_key.data());
+    sort(points, order.data(), key.data(), tmp_order.data(), tmp_key.data(), 1);
     return order;
 }
 
 void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, std::uint64_t* key,
-                      std::uint32_t* tmp_order, std::uint64_t* tmp_key) const {
+                      std::uint32_t* tmp_order, std::uint64_t* tmp_key, unsigned threads) const {
     const std::size_t n = points.size();
     std::size_t ends[64];
     std::size_t rounds = 0;
@@ -132,26 +133,65 @@ void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, st
     // a bound of at least k/1.43 points; so keys fit 64 bits.
     const int key_bits = 2 * side_bits_;
     constexpr int kDigit = 11;
-    constexpr std::uint64_t kMask = (std::uint64_t{1} << kDigit) - 1;
-    std::size_t begin = 0;
-    for (std::size_t r = rounds; r-- > 0;) {
-        const std::size_t end = ends[r];
-        for (std::size_t i = begin; i < end; ++i) {
+    constexpr std::uint32_t kMask = (std::uint32_t{1} << kDigit) - 1;
+    // Side by side only where it pays; each worker's counts on its stack.
+    WorkerPool pool(n >= kSideBySideFrom ? std::min(threads, kMaxWorkers) : 1);
+    const unsigned workers = pool.size();
+    pool.run([&](unsigned w) {
+        for (std::size_t i = n * w / workers, end = n * (w + 1) / workers; i < end; ++i) {
             key[i] = this->key(points[i]);
             order[i] = static_cast<std::uint32_t>(i);
         }
-        // Stable LSD radix sort of [begin, end) by key.
+    });
+    std::uint32_t count[kMaxWorkers][kMask + 1];
+    std::size_t begin = 0;
+    for (std::size_t r = rounds; r-- > 0;) {
+        const std::size_t end = ends[r], size = end - begin;
+        // Stable LSD radix sort of [begin, end) by key, passes alternating
+        // between the arrays and the scratch. Worker w counts and then
+        // scatters its own slice; the slices' places follow from all the
+        // counts in slice order, so the result is the one-worker sort.
+        const unsigned parts = size >= kSideBySideFrom ? workers : 1;
+        const auto slice = [&](unsigned w) { return begin + size * w / parts; };
+        std::uint64_t *from_key = key, *to_key = tmp_key;
+        std::uint32_t *from_order = order, *to_order = tmp_order;
         for (int shift = 0; shift < key_bits; shift += kDigit) {
-            std::size_t count[kMask + 2] = {};
-            for (std::size_t i = begin; i < end; ++i) ++count[((key[i] >> shift) & kMask) + 1];
-            for (std::size_t d = 0; d <= kMask; ++d) count[d + 1] += count[d];
-            for (std::size_t i = begin; i < end; ++i) {
-                const std::size_t at = begin + count[(key[i] >> shift) & kMask]++;
-                tmp_key[at] = key[i];
-                tmp_order[at] = order[i];
+            const auto digit = [&](std::size_t i) { return static_cast<std::uint32_t>(from_key[i] >> shift) & kMask; };
+            const auto counts = [&](unsigned w) {
+                std::fill(count[w], count[w] + kMask + 1, 0u);
+                for (std::size_t i = slice(w), e = slice(w + 1); i < e; ++i) ++count[w][digit(i)];
+            };
+            const auto scatter = [&](unsigned w) {
+                for (std::size_t i = slice(w), e = slice(w + 1); i < e; ++i) {
+                    const std::size_t at = begin + count[w][digit(i)]++;
+                    to_key[at] = from_key[i];
+                    to_order[at] = from_order[i];
+                }
+            };
+            if (parts > 1) {
+                pool.run(counts);
+            } else {
+                counts(0);
             }
-            std::copy(tmp_key + begin, tmp_key + end, key + begin);
-            std::copy(tmp_order + begin, tmp_order + end, order + begin);
+            // Each slice's first place for each digit.
+            std::uint32_t at = 0;
+            for (std::uint32_t d = 0; d <= kMask; ++d)
+                for (unsigned w = 0; w < parts; ++w) {
+                    const std::uint32_t c = count[w][d];
+                    count[w][d] = at;
+                    at += c;
+                }
+            if (parts > 1) {
+                pool.run(scatter);
+            } else {
+                scatter(0);
+            }
+            std::swap(from_key, to_key);
+            std::swap(from_order, to_order);
+        }
+        if (from_key != key) {
+            std::copy(from_key + begin, from_key + end, key + begin);
+            std::copy(from_order + begin, from_order + end, order + begin);
         }
         begin = end;
     }

@@ -35,8 +35,9 @@ public:
                tmp_key_.capacity() >= points;
     }
     // The indices of points in insertion order, in the reserved scratch
-    // (valid until the next call); requires room for points.size().
-    const std::uint32_t* order(const std::vector<Point>& points);
+    // (valid until the next call); requires room for points.size(). Large
+    // sets are keyed and sorted on up to `threads` threads (the same order).
+    const std::uint32_t* order(const std::vector<Point>& points, unsigned threads = 1);
     // The same order in fresh scratch (for queries; allocates).
     std::vector<std::uint32_t> fresh_order(const std::vector<Point>& points) const;
 
@@ -47,7 +48,9 @@ private:
     // Sorts points into order[0, n); the other three arrays are scratch of
     // n entries each.
     void sort(const std::vector<Point>& points, std::uint32_t* order, std::uint64_t* key, std::uint32_t* tmp_order,
-              std::uint64_t* tmp_key) const;
+              std::uint64_t* tmp_key, unsigned threads) const;
+    static constexpr std::size_t kSideBySideFrom = std::size_t{1} << 16;  // points
+    static constexpr unsigned kMaxWorkers = 8;
 
     Box box_{0.0, 0.0, 1.0, 1.0};
     double inv_side_x_ = 1.0, inv_side_y_ = 1.0;

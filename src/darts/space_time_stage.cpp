@@ -382,7 +382,7 @@ void SpaceTimeDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {
     std::vector<std::uint16_t>().swap(masks_);
     std::vector<Point>().swap(pending_);
     next_pending_ = 0;
-    const std::uint32_t* order = curve_.order(points_);
+    const std::uint32_t* order = curve_.order(points_, threads_);
     poll();
     jones.adopt(points_, order, nullptr, poll, MeshBuild::whole);
     jones.carry_darts(SpaceTimeStream::salted(seed_), epoch_);

@@ -81,6 +81,15 @@ public:
 
     std::size_t count() const override { return space_.count(*this); }
     const Point& point(PointIndex k) const override { return dt_.point(order_.vertex(k)); }
+    void copy_points(PointIndex first, std::size_t n, Point* out) const override {
+        // The hand-over put the points in curve order: a copy in the order
+        // added reads them at random, so the reads are asked for ahead.
+        constexpr std::size_t kAhead = 16;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (i + kAhead < n) pds::prefetch(&dt_.point(order_.vertex(first + static_cast<PointIndex>(i + kAhead))));
+            out[i] = point(first + static_cast<PointIndex>(i));
+        }
+    }
     double value(PointIndex k) const override { return rule_.value(k); }
     const Point* next(Rng& rng) override;
     void add_next() override;

@@ -31,6 +31,10 @@ public:
     virtual std::size_t count() const = 0;
     // Point k in the order added.
     virtual const Point& point(PointIndex k) const = 0;
+    // Points first .. first + n - 1 into out: one call for many points.
+    virtual void copy_points(PointIndex first, std::size_t n, Point* out) const {
+        for (std::size_t i = 0; i < n; ++i) out[i] = point(first + static_cast<PointIndex>(i));
+    }
     // Point k's field value (user units; a varying radius only, else 0).
     virtual double value(PointIndex k) const = 0;
     // The next point, or nullptr when this stage has none: the dart stage

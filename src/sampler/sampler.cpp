@@ -328,10 +328,16 @@ std::size_t Sampler::copy_points(std::size_t first, std::size_t n, double* xy) c
     if (first >= have) return 0;
     n = std::min(n, have - first);
     const Stage& s = stage();
-    for (std::size_t i = 0; i < n; ++i) {
-        const Point p = frame_.to_user(s.point(adopted_fixed_ + first + i));
-        xy[2 * i] = p.x;
-        xy[2 * i + 1] = p.y;
+    constexpr std::size_t kChunk = 512;
+    Point chunk[kChunk];
+    for (std::size_t done = 0; done < n; done += kChunk) {
+        const std::size_t m = std::min(kChunk, n - done);
+        s.copy_points(static_cast<PointIndex>(adopted_fixed_ + first + done), m, chunk);
+        for (std::size_t i = 0; i < m; ++i) {
+            const Point p = frame_.to_user(chunk[i]);
+            xy[2 * (done + i)] = p.x;
+            xy[2 * (done + i) + 1] = p.y;
+        }
     }
     return n;
 }

@@ -2,7 +2,7 @@
 // (darts/curve_order.hpp): the Hilbert keys walk every grid cell once, each
 // step to a neighbouring cell, and equal those of a level-by-level evaluation
 // of the same curve; the order is a permutation made of BRIO rounds, each
-// sorted by key, ties kept in point order.
+// sorted by key, ties kept in point order, the same on any number of threads.
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
@@ -124,12 +124,32 @@ START_TEST(order_is_rounds_sorted_by_key) {
 }
 END_TEST
 
+START_TEST(order_on_several_threads_is_the_one_thread_order) {
+    // Large enough for the keys and the largest rounds to be split among
+    // workers; many points share a cell, so ties test the sort's stability.
+    const std::size_t n = test_light() ? 140000 : 400000;
+    pds::CurveOrder curve(pds::Box{0.0, 0.0, 1.0, 1.0}, 1.0 / 300, 1.0 / 300, 300, 300);
+    pds::Rng rng(5);
+    std::vector<pds::Point> points(n);
+    for (pds::Point& p : points) p = pds::Point{rng.next_double(), rng.next_double()};
+    const std::vector<std::uint32_t> one = curve.fresh_order(points);
+    curve.reserve(n);
+    for (unsigned threads : {2u, 3u, 8u, 20u}) {
+        const std::uint32_t* order = curve.order(points, threads);
+        for (std::size_t k = 0; k < n; ++k)
+            ck_assert_msg(order[k] == one[k], "%u threads: entry %zu is %u, one thread gives %u", threads, k, order[k],
+                          one[k]);
+    }
+}
+END_TEST
+
 Suite* curve_order_suite() {
     Suite* s = suite_create("curve_order");
     TCase* tc = tcase_create("curve_order");
     tcase_add_test(tc, keys_walk_a_square_grid_cell_by_neighbouring_cell);
     tcase_add_test(tc, keys_equal_the_level_by_level_curve);
     tcase_add_test(tc, order_is_rounds_sorted_by_key);
+    tcase_add_test(tc, order_on_several_threads_is_the_one_thread_order);
     suite_add_tcase(s, tc);
     return s;
 }
