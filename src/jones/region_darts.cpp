@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/predicates.hpp"
+#include "core/prefetch.hpp"
 
 namespace pds {
 
@@ -31,7 +32,6 @@ void RegionDarts::stop() {
     std::vector<SiteIndex>().swap(active_);
     std::vector<Block>().swap(blocks_);
     std::vector<Dart>().swap(darts_);
-    std::vector<std::uint32_t>().swap(by_time_);
     std::vector<std::uint32_t>().swap(chain_);
     std::vector<std::uint32_t>().swap(bucket_);
     std::vector<std::uint32_t>().swap(grid_);
@@ -64,33 +64,41 @@ void RegionDarts::decide(std::size_t nblocks, double r) {
     // leaves the points that were pending (none: an epoch starts when they
     // are all handed out) and the bounds as they were.
     if (grid_.empty()) grid_.assign(grid_columns_ * grid_rows_, kNone);
-    darts_.clear();
-    for (std::size_t b = 0; b < nblocks; ++b)
-        darts_.insert(darts_.end(), blocks_[b].darts.begin(), blocks_[b].darts.end());
-    const std::size_t n = darts_.size();
-    by_time_.resize(n);
+    std::size_t n = 0;
+    for (std::size_t b = 0; b < nblocks; ++b) n += blocks_[b].darts.size();
+    darts_.resize(n);
     chain_.resize(n);
     bucket_.reserve(n + 1);
     pending_.reserve(n);
-    // In order of time by a bucket sort: the times are uniform in [0, 1),
-    // so n buckets hold one dart each on average; ties (1 in 2^53 per
-    // pair) go to the earlier in block order.
+    // The blocks' darts copied straight into order of time by a bucket
+    // sort (the times are uniform in [0, 1), so n buckets hold one dart
+    // each on average), then sorted inside their buckets by insertion,
+    // stably: ties (1 in 2^53 per pair) go to the earlier in block order.
+    // The decision then reads the darts in sequence.
     bucket_.assign(n + 1, 0);
     const auto bucket_of = [n](double t) {
         return std::min(n - 1, static_cast<std::size_t>(t * static_cast<double>(n)));
     };
-    for (std::size_t i = 0; i < n; ++i) ++bucket_[bucket_of(darts_[i].t) + 1];
+    for (std::size_t b = 0; b < nblocks; ++b)
+        for (const Dart& d : blocks_[b].darts) ++bucket_[bucket_of(d.t) + 1];
     for (std::size_t b = 0; b < n; ++b) bucket_[b + 1] += bucket_[b];
-    for (std::size_t i = 0; i < n; ++i) by_time_[bucket_[bucket_of(darts_[i].t)]++] = static_cast<std::uint32_t>(i);
-    const auto earlier = [&](std::uint32_t a, std::uint32_t b) {
-        return darts_[a].t < darts_[b].t || (darts_[a].t == darts_[b].t && a < b);
-    };
-    for (std::size_t i = 1; i < n; ++i)  // buckets in order; inside one, by insertion
-        for (std::size_t j = i; j > 0 && earlier(by_time_[j], by_time_[j - 1]); --j)
-            std::swap(by_time_[j], by_time_[j - 1]);
+    for (std::size_t b = 0; b < nblocks; ++b)
+        for (const Dart& d : blocks_[b].darts) darts_[bucket_[bucket_of(d.t)]++] = d;
+    for (std::size_t i = 1; i < n; ++i)
+        for (std::size_t j = i; j > 0 && darts_[j].t < darts_[j - 1].t; --j) std::swap(darts_[j], darts_[j - 1]);
     pending_.clear();
     next_ = 0;
-    for (const std::uint32_t i : by_time_) {
+    // The grid's rows for the darts a few ahead, asked for early.
+    constexpr std::size_t kAhead = 8;
+    const auto prefetch_rows = [&](std::size_t i) {
+        const Point& q = darts_[i].p;
+        const std::size_t x0 = column(q.x - r), y0 = row(q.y - r), y1 = row(q.y + r);
+        pds::prefetch(&grid_[y0 * grid_columns_ + x0]);
+        pds::prefetch(&grid_[y1 * grid_columns_ + x0]);
+    };
+    for (std::size_t i = 0; i < std::min(n, kAhead); ++i) prefetch_rows(i);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (i + kAhead < n) prefetch_rows(i + kAhead);
         const Point& p = darts_[i].p;
         const std::size_t x0 = column(p.x - r), x1 = column(p.x + r);
         const std::size_t y0 = row(p.y - r), y1 = row(p.y + r);

@@ -135,8 +135,7 @@ private:
     std::size_t listed_ = 0;         // sites 0 .. listed_-1 were put on the active list
     std::vector<SiteIndex> active_;  // sites whose bound may be positive, in order
     std::vector<Block> blocks_;
-    std::vector<Dart> darts_;             // the epoch's darts, blocks joined
-    std::vector<std::uint32_t> by_time_;  // their indices in order of time
+    std::vector<Dart> darts_;             // the epoch's darts, in order of time
     std::vector<std::uint32_t> chain_;    // accepted darts of one grid cell
     std::vector<std::uint32_t> bucket_;   // the time sort's buckets
     std::vector<std::uint32_t> grid_;     // per cell of side 2R: its last accepted dart
