@@ -22,6 +22,7 @@ void CurveOrder::reserve(std::size_t points) {
     tmp_order_.reserve(points);
     key_.reserve(points);
     tmp_key_.reserve(points);
+    counts_.reserve(kCounts);
 }
 
 namespace {
@@ -109,7 +110,8 @@ const std::uint32_t* CurveOrder::order(const std::vector<Point>& points, unsigne
     tmp_order_.resize(n);
     key_.resize(n);
     tmp_key_.resize(n);
-    sort(points, order_.data(), key_.data(), tmp_order_.data(), tmp_key_.data(), threads);
+    counts_.resize(kCounts);
+    sort(points, order_.data(), key_.data(), tmp_order_.data(), tmp_key_.data(), counts_.data(), threads);
     return order_.data();
 }
 
@@ -117,12 +119,14 @@ std::vector<std::uint32_t> CurveOrder::fresh_order(const std::vector<Point>& poi
     const std::size_t n = points.size();
     std::vector<std::uint32_t> order(n), tmp_order(n);
     std::vector<std::uint64_t> key(n), tmp_key(n);
-    sort(points, order.data(), key.data(), tmp_order.data(), tmp_key.data(), 1);
+    std::vector<std::uint32_t> counts(kCounts);
+    sort(points, order.data(), key.data(), tmp_order.data(), tmp_key.data(), counts.data(), 1);
     return order;
 }
 
 void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, std::uint64_t* key,
-                      std::uint32_t* tmp_order, std::uint64_t* tmp_key, unsigned threads) const {
+                      std::uint32_t* tmp_order, std::uint64_t* tmp_key, std::uint32_t* counts,
+                      unsigned threads) const {
     const std::size_t n = points.size();
     std::size_t ends[64];
     std::size_t rounds = 0;
@@ -132,9 +136,8 @@ void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, st
     // bound fits the index type (sampler.cpp), and a grid k cells long has
     // a bound of at least k/1.43 points; so keys fit 64 bits.
     const int key_bits = 2 * side_bits_;
-    constexpr int kDigit = 11;
     constexpr std::uint32_t kMask = (std::uint32_t{1} << kDigit) - 1;
-    // Side by side only where it pays; each worker's counts on its stack.
+    // Side by side only where it pays; worker w's counts at counts[w << kDigit].
     WorkerPool pool(n >= kSideBySideFrom ? std::min(threads, kMaxWorkers) : 1);
     const unsigned workers = pool.size();
     pool.run([&](unsigned w) {
@@ -143,7 +146,7 @@ void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, st
             order[i] = static_cast<std::uint32_t>(i);
         }
     });
-    std::uint32_t count[kMaxWorkers][kMask + 1];
+    const auto count = [counts](unsigned w) { return counts + (std::size_t{w} << kDigit); };
     std::size_t begin = 0;
     for (std::size_t r = rounds; r-- > 0;) {
         const std::size_t end = ends[r], size = end - begin;
@@ -157,28 +160,28 @@ void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, st
         std::uint32_t *from_order = order, *to_order = tmp_order;
         for (int shift = 0; shift < key_bits; shift += kDigit) {
             const auto digit = [&](std::size_t i) { return static_cast<std::uint32_t>(from_key[i] >> shift) & kMask; };
-            const auto counts = [&](unsigned w) {
-                std::fill(count[w], count[w] + kMask + 1, 0u);
-                for (std::size_t i = slice(w), e = slice(w + 1); i < e; ++i) ++count[w][digit(i)];
+            const auto tally = [&](unsigned w) {
+                std::fill(count(w), count(w) + kMask + 1, 0u);
+                for (std::size_t i = slice(w), e = slice(w + 1); i < e; ++i) ++count(w)[digit(i)];
             };
             const auto scatter = [&](unsigned w) {
                 for (std::size_t i = slice(w), e = slice(w + 1); i < e; ++i) {
-                    const std::size_t at = begin + count[w][digit(i)]++;
+                    const std::size_t at = begin + count(w)[digit(i)]++;
                     to_key[at] = from_key[i];
                     to_order[at] = from_order[i];
                 }
             };
             if (parts > 1) {
-                pool.run(counts);
+                pool.run(tally);
             } else {
-                counts(0);
+                tally(0);
             }
             // Each slice's first place for each digit.
             std::uint32_t at = 0;
             for (std::uint32_t d = 0; d <= kMask; ++d)
                 for (unsigned w = 0; w < parts; ++w) {
-                    const std::uint32_t c = count[w][d];
-                    count[w][d] = at;
+                    const std::uint32_t c = count(w)[d];
+                    count(w)[d] = at;
                     at += c;
                 }
             if (parts > 1) {

@@ -32,7 +32,7 @@ public:
     void reserve(std::size_t points);
     bool has_room_for(std::size_t points) const {
         return order_.capacity() >= points && tmp_order_.capacity() >= points && key_.capacity() >= points &&
-               tmp_key_.capacity() >= points;
+               tmp_key_.capacity() >= points && counts_.capacity() >= kCounts;
     }
     // The indices of points in insertion order, in the reserved scratch
     // (valid until the next call); requires room for points.size(). Large
@@ -45,12 +45,14 @@ public:
     std::uint64_t key(const Point& p) const;
 
 private:
-    // Sorts points into order[0, n); the other three arrays are scratch of
-    // n entries each.
-    void sort(const std::vector<Point>& points, std::uint32_t* order, std::uint64_t* key, std::uint32_t* tmp_order,
-              std::uint64_t* tmp_key, unsigned threads) const;
     static constexpr std::size_t kSideBySideFrom = std::size_t{1} << 16;  // points
     static constexpr unsigned kMaxWorkers = 8;
+    static constexpr int kDigit = 11;  // bits per radix pass
+    static constexpr std::size_t kCounts = kMaxWorkers << kDigit;
+    // Sorts points into order[0, n); the other three arrays are scratch of
+    // n entries each, counts of kCounts.
+    void sort(const std::vector<Point>& points, std::uint32_t* order, std::uint64_t* key, std::uint32_t* tmp_order,
+              std::uint64_t* tmp_key, std::uint32_t* counts, unsigned threads) const;
 
     Box box_{0.0, 0.0, 1.0, 1.0};
     double inv_side_x_ = 1.0, inv_side_y_ = 1.0;
@@ -59,6 +61,7 @@ private:
     int side_bits_ = 0;       // its log2
     std::vector<std::uint32_t> order_, tmp_order_;
     std::vector<std::uint64_t> key_, tmp_key_;
+    std::vector<std::uint32_t> counts_;  // the radix sort's, kCounts
 };
 
 }  // namespace pds
