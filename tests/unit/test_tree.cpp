@@ -1,12 +1,20 @@
 // test_tree.cpp - the free-area tree: sums always equal to a fresh recount,
 // exact zero when every leaf is zero, selection frequencies proportional to
-// the weights, and growth that keeps every leaf.
+// the weights, and growth that keeps every leaf; its pages made resident
+// ahead (core/page_populate.hpp) without a change to anything it holds.
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
+#include "core/page_populate.hpp"
 #include "jones/free_area_tree.hpp"
 #include "suites.hpp"
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 namespace {
 
@@ -93,11 +101,54 @@ START_TEST(selection_is_proportional) {
 }
 END_TEST
 
+START_TEST(pages_made_resident_ahead_change_nothing) {
+    // A vector's spare capacity: only whole pages past its entries are asked
+    // for, never more than the room, and the entries stay as they were.
+    std::vector<double> v(1000, 0.0);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = 0.5 + static_cast<double>(i);
+    v.reserve(1 << 20);
+    const std::vector<double> before(v.begin(), v.end());
+    const std::size_t asked = pds::populate_ahead(v, 300000);
+    ck_assert_uint_le(asked, (300000 - v.size()) * sizeof(double));
+    ck_assert(std::vector<double>(v.begin(), v.end()) == before);
+    ck_assert_uint_eq(pds::populate_ahead(v, 10), 0);  // nothing beyond the entries
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+    if (asked > 0) {
+        // The pages asked for are resident now.
+        const std::size_t page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+        const std::uintptr_t start = (reinterpret_cast<std::uintptr_t>(v.data() + v.size()) + page - 1) & ~(page - 1);
+        std::vector<unsigned char> in(asked / page);
+        ck_assert_int_eq(mincore(reinterpret_cast<void*>(start), asked, in.data()), 0);
+        for (std::size_t k = 0; k < in.size(); ++k) ck_assert_msg(in[k] & 1, "page %zu of %zu not resident", k, in.size());
+    }
+#endif
+    // The tree: its weights and sums stay, leaves added later sum as ever.
+    pds::FreeAreaTree tree;
+    tree.reserve(1 << 18);
+    std::vector<double> w;
+    for (int i = 0; i < 5000; ++i) {
+        w.push_back(static_cast<double>(i % 7) * 0.25);
+        tree.push_back(w.back());
+    }
+    const double total = tree.total();
+    tree.populate_for(1 << 17);
+    tree.populate_for(std::size_t{1} << 40);  // past the capacity: capped
+    ck_assert(tree.total() == total);
+    for (std::size_t i = 0; i < w.size(); ++i) ck_assert(tree.weight(i) == w[i]);
+    for (int i = 0; i < 3000; ++i) {
+        w.push_back(1.0);
+        tree.push_back(1.0);
+    }
+    ck_assert(tree.total() == recount(w, tree.capacity()));
+}
+END_TEST
+
 Suite* tree_suite() {
     Suite* s = suite_create("free_area_tree");
     TCase* t = tcase_create("sums");
     tcase_add_test(t, sums_follow_updates);
     tcase_add_test(t, growth_keeps_leaves);
+    tcase_add_test(t, pages_made_resident_ahead_change_nothing);
     suite_add_tcase(s, t);
     t = tcase_create("selection");
     tcase_add_test(t, selection_is_proportional);
