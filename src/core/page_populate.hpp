@@ -4,12 +4,12 @@
 // The sampler reserves its arrays for the points it may place and writes
 // them as points arrive; the first write to each page traps into the kernel,
 // which zeroes the page. At the end of a parallel run those writes come from
-// the insertions on the caller's thread, alone: at 10^7 points about a
-// tenth of a second of its time per epoch's worth of pages (perf). Asking
-// the kernel to populate the pages (Linux's MADV_POPULATE_WRITE) from a
-// worker moves that work off the serial path. A hint only: contents never
-// change (the pages are beyond what the arrays hold), and where the kernel
-// or the platform lacks it, it does nothing.
+// the insertions on the caller's thread while the others wait (most of its
+// kernel time there: docs/performance.md, 1.7.1). Asking the kernel to
+// populate the pages (Linux's MADV_POPULATE_WRITE) from a worker moves that
+// work off the serial path. A hint only: contents never change (the pages
+// are beyond what the arrays hold), and where the kernel or the platform
+// lacks it, it does nothing.
 #ifndef PDS_PAGE_POPULATE_HPP
 #define PDS_PAGE_POPULATE_HPP
 
