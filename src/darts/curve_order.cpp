@@ -86,15 +86,15 @@ std::uint64_t CurveOrder::key(const Point& p) const {
     const std::uint64_t y = clamped_cell((p.y - box_.y0) * inv_side_y_, rows_);
     std::uint64_t key = 0;
     unsigned state = 0;
-    int level = side_bits_;
-    if (level & 1) {
-        --level;
+    int pairs = side_bits_ / 2;  // levels below the top one of an odd count
+    if (side_bits_ & 1) {
+        const int level = side_bits_ - 1;
         const unsigned e = kHilbert.one[state][(((x >> level) & 1u) << 1) | ((y >> level) & 1u)];
         key = e >> 2;
         state = e & 3u;
     }
-    while (level > 0) {
-        level -= 2;
+    while (pairs-- > 0) {
+        const int level = 2 * pairs;
         const unsigned bx = static_cast<unsigned>((x >> level) & 3u), by = static_cast<unsigned>((y >> level) & 3u);
         const unsigned e = kHilbert.two[state][((bx & 2u) << 2) | ((by & 2u) << 1) | ((bx & 1u) << 1) | (by & 1u)];
         key = (key << 4) | (e >> 2);
