@@ -10,10 +10,7 @@ namespace pds {
 
 CurveOrder::CurveOrder(const Box& box, double side_x, double side_y, std::size_t cols, std::size_t rows)
     : box_(box), inv_side_x_(1.0 / side_x), inv_side_y_(1.0 / side_y), cols_(cols), rows_(rows) {
-    while (side_ < cols_ || side_ < rows_) {
-        side_ *= 2;
-        ++side_bits_;
-    }
+    while ((std::size_t{1} << side_bits_) < std::max(cols_, rows_)) ++side_bits_;
 }
 
 void CurveOrder::reserve(std::size_t points) {
@@ -156,6 +153,12 @@ void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, st
         // counts in slice order, so the result is the one-worker sort.
         const unsigned parts = size >= kSideBySideFrom ? workers : 1;
         const auto slice = [&](unsigned w) { return begin + size * w / parts; };
+        const auto in_parts = [&](const auto& task) {
+            if (parts > 1)
+                pool.run(task);  // parts is then the pool's size
+            else
+                task(0u);
+        };
         std::uint64_t *from_key = key, *to_key = tmp_key;
         std::uint32_t *from_order = order, *to_order = tmp_order;
         for (int shift = 0; shift < key_bits; shift += kDigit) {
@@ -171,11 +174,7 @@ void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, st
                     to_order[at] = from_order[i];
                 }
             };
-            if (parts > 1) {
-                pool.run(tally);
-            } else {
-                tally(0);
-            }
+            in_parts(tally);
             // Each slice's first place for each digit.
             std::uint32_t at = 0;
             for (std::uint32_t d = 0; d <= kMask; ++d)
@@ -184,11 +183,7 @@ void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, st
                     count(w)[d] = at;
                     at += c;
                 }
-            if (parts > 1) {
-                pool.run(scatter);
-            } else {
-                scatter(0);
-            }
+            in_parts(scatter);
             std::swap(from_key, to_key);
             std::swap(from_order, to_order);
         }

@@ -57,8 +57,7 @@ private:
     Box box_{0.0, 0.0, 1.0, 1.0};
     double inv_side_x_ = 1.0, inv_side_y_ = 1.0;
     std::size_t cols_ = 1, rows_ = 1;
-    std::uint64_t side_ = 1;  // a power of two at least cols_ and rows_
-    int side_bits_ = 0;       // its log2
+    int side_bits_ = 0;  // the curve's side is 2^side_bits_ cells, at least cols_ and rows_
     std::vector<std::uint32_t> order_, tmp_order_;
     std::vector<std::uint64_t> key_, tmp_key_;
     std::vector<std::uint32_t> counts_;  // the radix sort's, kCounts

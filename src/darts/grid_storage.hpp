@@ -26,7 +26,7 @@
 #include <new>
 #include <vector>
 
-#include "core/huge_pages.hpp"
+#include "core/page_hints.hpp"
 #include "core/rng.hpp"
 #include "core/prefetch.hpp"
 

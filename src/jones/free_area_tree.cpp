@@ -5,8 +5,7 @@
 #include <new>
 
 #include "core/batch.hpp"
-#include "core/huge_pages.hpp"
-#include "core/page_populate.hpp"
+#include "core/page_hints.hpp"
 #include "core/prefetch.hpp"
 
 namespace pds {

@@ -42,7 +42,7 @@ public:
     // Appends a leaf (requires capacity) and updates its ancestors.
     void push_back(double weight);
     // Makes resident the pages of the leaves up to `leaves` in all
-    // (core/page_populate.hpp); the tree is unchanged.
+    // (core/page_hints.hpp); the tree is unchanged.
     void populate_for(std::size_t leaves) const;
     // Sets a leaf and updates its ancestors: O(log N).
     void set(std::size_t leaf, double weight);

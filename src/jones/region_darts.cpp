@@ -52,12 +52,11 @@ void RegionDarts::decide(std::size_t nblocks, double r) {
     // of them (two words in each of two rows). Its cells are emptied of the
     // last epoch's darts first.
     const double side = 2.0 * r;
-    const auto column = [&](double x) {
-        return std::min(grid_columns_ - 1, static_cast<std::size_t>(std::max(0.0, std::floor((x - grid_x0_) / side))));
+    const auto index = [side](double v, double v0, std::size_t count) {
+        return std::min(count - 1, static_cast<std::size_t>(std::max(0.0, std::floor((v - v0) / side))));
     };
-    const auto row = [&](double y) {
-        return std::min(grid_rows_ - 1, static_cast<std::size_t>(std::max(0.0, std::floor((y - grid_y0_) / side))));
-    };
+    const auto column = [&](double x) { return index(x, grid_x0_, grid_columns_); };
+    const auto row = [&](double y) { return index(y, grid_y0_, grid_rows_); };
     constexpr std::uint32_t kNone = ~std::uint32_t{0};
     for (const Dart& d : pending_) grid_[row(d.p.y) * grid_columns_ + column(d.p.x)] = kNone;
     // Everything is allocated before pending_ changes: std::bad_alloc here

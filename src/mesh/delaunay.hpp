@@ -60,7 +60,7 @@ public:
     // True when insert() can run without allocating.
     bool has_room_for_one() const;
     // Makes resident the pages that insertions up to `vertices` vertices in
-    // all will first write (core/page_populate.hpp), within the room
+    // all will first write (core/page_hints.hpp), within the room
     // reserved. Changes nothing the mesh holds: another thread may read the
     // mesh meanwhile, none may insert.
     void populate_for(std::size_t vertices) const;

@@ -3,8 +3,7 @@
 
 #include <stdexcept>
 
-#include "core/huge_pages.hpp"
-#include "core/page_populate.hpp"
+#include "core/page_hints.hpp"
 
 namespace pds {
 

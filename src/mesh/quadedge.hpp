@@ -38,7 +38,7 @@ public:
     // Records the next make_edge calls can take without allocating.
     std::size_t spare_records() const;
     // Makes resident the pages of the records up to `records` in all that
-    // new edges will take (core/page_populate.hpp); the edges are unchanged.
+    // new edges will take (core/page_hints.hpp); the edges are unchanged.
     void populate_for(std::size_t records) const;
 
     // A new isolated edge org -> dest (its own ring at both ends).

@@ -1,13 +1,13 @@
 // test_tree.cpp - the free-area tree: sums always equal to a fresh recount,
 // exact zero when every leaf is zero, selection frequencies proportional to
 // the weights, and growth that keeps every leaf; its pages made resident
-// ahead (core/page_populate.hpp) without a change to anything it holds.
+// ahead (core/page_hints.hpp) without a change to anything it holds.
 #include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
 
-#include "core/page_populate.hpp"
+#include "core/page_hints.hpp"
 #include "jones/free_area_tree.hpp"
 #include "suites.hpp"
 

@@ -1,13 +1,15 @@
-// huge_pages.hpp - ask the kernel for transparent huge pages under the large
-// arrays the sampler reads at random.
+// page_hints.hpp - hints to the kernel about the pages under the sampler's
+// large arrays. Hints only: no result depends on them, and where the kernel
+// or the platform lacks one, it does nothing.
+//
+// Huge pages for the arrays the sampler reads at random.
 //
 // Every dart, ring walk and tree descent lands somewhere new in arrays of
 // tens of bytes per point; past a few million points most of those accesses
 // also miss the TLB, and a page-table walk is one more dependent miss.
 // Backing the arrays with 2 MiB pages removes most of those walks. Linux
 // gives huge pages to anonymous memory only where asked when its setting is
-// "madvise" (Debian's default), so the large reservations ask. A hint only:
-// it never changes a result, and where it is unsupported it does nothing.
+// "madvise" (Debian's default), so the large reservations ask.
 //
 // Only arrays of 128 MiB and more ask: below that the kernel's compaction
 // to find huge pages costs more than the TLB misses it saves
@@ -18,8 +20,19 @@
 // make most of its small pages resident anyway (huge_pages_worth): before
 // that, each scattered write would make a whole 2 MiB page resident, and
 // memory would follow the array's size instead of what is written.
-#ifndef PDS_HUGE_PAGES_HPP
-#define PDS_HUGE_PAGES_HPP
+//
+// Pages made resident ahead of time, on a thread that would otherwise wait.
+//
+// The sampler reserves its arrays for the points it may place and writes
+// them as points arrive; the first write to each page traps into the kernel,
+// which zeroes the page. At the end of a parallel run those writes come from
+// the insertions on the caller's thread while the others wait (most of its
+// kernel time there: docs/performance.md, 1.7.1). Asking the kernel to
+// populate the pages (Linux's MADV_POPULATE_WRITE) from a worker moves that
+// work off the serial path. Contents never change: the pages are beyond
+// what the arrays hold.
+#ifndef PDS_PAGE_HINTS_HPP
+#define PDS_PAGE_HINTS_HPP
 
 #include <cstddef>
 #include <vector>
@@ -41,6 +54,20 @@ std::size_t advise_huge_pages(const std::vector<T>& v) {
 inline bool huge_pages_worth(std::size_t bytes, std::size_t writes) {
     constexpr std::size_t kSmallPage = 4096;
     return writes >= bytes / kSmallPage;
+}
+
+// Populates the whole pages inside [p, p + bytes) for writing. Returns the
+// bytes asked for (0: nothing, or no support).
+std::size_t populate_pages(const void* p, std::size_t bytes);
+
+// The pages of v's spare capacity that entries [v.size(), until) will take
+// (until capped by the capacity). Reads only the vector's bounds: safe while
+// another thread reads its entries.
+template <class T>
+std::size_t populate_ahead(const std::vector<T>& v, std::size_t until) {
+    if (until > v.capacity()) until = v.capacity();
+    if (until <= v.size()) return 0;
+    return populate_pages(v.data() + v.size(), (until - v.size()) * sizeof(T));
 }
 
 }  // namespace pds
