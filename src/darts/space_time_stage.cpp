@@ -44,7 +44,9 @@ enum : std::uint8_t { kUndecided = 0, kAccepted = 1, kRejected = 2 };
 
 }  // namespace
 
-struct SpaceTimeDartStage::Band {
+// Each on its own cache lines: one worker writes a band's cursors while another
+// reads the next band's bounds.
+struct alignas(64) SpaceTimeDartStage::Band {
     std::int64_t r0 = 0, r1 = 0;  // its rows
     std::size_t a0 = 0, a1 = 0;   // its active cells, active_[a0..a1)
     std::size_t kept = 0;         // active cells still active after the epoch

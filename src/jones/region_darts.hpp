@@ -60,8 +60,9 @@ public:
         SiteIndex site;
         double weight;
     };
-    // What one block of active sites drew.
-    struct Block {
+    // What one block of active sites drew; each on its own cache lines, as
+    // the workers grow neighbouring blocks' lists at once.
+    struct alignas(64) Block {
         std::vector<Dart> darts;
         std::vector<Bound> bounds;
     };
