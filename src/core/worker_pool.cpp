@@ -3,7 +3,37 @@
 
 #if !defined(__wasi__)
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 namespace pds {
+
+namespace {
+
+// About 50 microseconds of waiting awake (a pause takes 10 to 150 cycles;
+// 23 ns on the machines of docs/performance.md).
+constexpr unsigned kSpins = 2048;
+
+inline void relax() {
+#if defined(__x86_64__) || defined(__i386__)
+    _mm_pause();
+#else
+    std::this_thread::yield();
+#endif
+}
+
+// Waits awake until done() holds, up to kSpins checks; says whether it did.
+template <class Done>
+bool spin_until(const Done& done) {
+    for (unsigned i = 0; i < kSpins; ++i) {
+        if (done()) return true;
+        relax();
+    }
+    return done();
+}
+
+}  // namespace
 
 WorkerPool::WorkerPool(unsigned wanted) {
     const unsigned helpers = wanted > 1 ? wanted - 1 : 0;
@@ -21,7 +51,7 @@ WorkerPool::WorkerPool(unsigned wanted) {
 WorkerPool::~WorkerPool() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        closing_ = true;
+        closing_.store(true, std::memory_order_release);
     }
     start_.notify_all();
     for (std::thread& t : threads_) t.join();
@@ -29,14 +59,20 @@ WorkerPool::~WorkerPool() {
 
 void WorkerPool::serve(unsigned index) {
     std::size_t seen = 0;
+    const auto called = [&] {
+        return closing_.load(std::memory_order_acquire) || generation_.load(std::memory_order_acquire) != seen;
+    };
     for (;;) {
         void (*call)(const void*, unsigned);
         const void* task;
+        spin_until(called);
         {
+            // Asleep if the spin ended first; either way call_ and task_
+            // are read under the lock they were written under.
             std::unique_lock<std::mutex> lock(mutex_);
-            start_.wait(lock, [&] { return closing_ || generation_ != seen; });
-            if (closing_) return;
-            seen = generation_;
+            start_.wait(lock, called);
+            if (closing_.load(std::memory_order_relaxed)) return;
+            seen = generation_.load(std::memory_order_relaxed);
             call = call_;
             task = task_;
         }
@@ -45,8 +81,12 @@ void WorkerPool::serve(unsigned index) {
         } catch (...) {
             helper_errors_[index - 1] = std::current_exception();
         }
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (--running_ == 0) done_.notify_one();
+        // The last helper out wakes the caller if it sleeps: under the lock,
+        // so the caller cannot check running_ and then miss the notice.
+        if (running_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            done_.notify_one();
+        }
     }
 }
 
@@ -55,9 +95,9 @@ void WorkerPool::run_erased(void (*call)(const void*, unsigned), const void* tas
         std::lock_guard<std::mutex> lock(mutex_);
         call_ = call;
         task_ = task;
-        running_ = static_cast<unsigned>(threads_.size());
-        ++generation_;
+        running_.store(static_cast<unsigned>(threads_.size()), std::memory_order_relaxed);
         for (std::exception_ptr& e : helper_errors_) e = nullptr;
+        generation_.fetch_add(1, std::memory_order_release);
     }
     start_.notify_all();
     std::exception_ptr own;
@@ -66,11 +106,10 @@ void WorkerPool::run_erased(void (*call)(const void*, unsigned), const void* tas
     } catch (...) {
         own = std::current_exception();
     }
-    {
+    const auto finished = [&] { return running_.load(std::memory_order_acquire) == 0; };
+    if (!spin_until(finished)) {
         std::unique_lock<std::mutex> lock(mutex_);
-        done_.wait(lock, [&] { return running_ == 0; });
-        call_ = nullptr;
-        task_ = nullptr;
+        done_.wait(lock, finished);
     }
     if (own) std::rethrow_exception(own);
     for (const std::exception_ptr& e : helper_errors_)

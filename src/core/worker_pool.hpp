@@ -8,6 +8,11 @@
 // their results never depend on it (the darts are tied to space, not to
 // threads), so fewer threads only means less speed.
 //
+// Between runs a helper waits a few tens of microseconds awake before it
+// sleeps, and so does the caller for the helpers' end: an epoch's steps
+// follow one another closely, and waking a sleeping thread costs more (an
+// interrupt to another core, tens of microseconds in a virtual machine).
+//
 // run(task) calls task(i) for i = 0 .. size()-1 at the same time, task(0) on
 // the calling thread, and returns when all have returned. The tasks may wait
 // for one another (the dart stage's bands do): every task runs on its own
@@ -20,6 +25,7 @@
 #include <exception>
 #include <vector>
 #if !defined(__wasi__)  // wasm32-wasi has no threads: the pool is its caller alone
+#include <atomic>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
@@ -64,9 +70,10 @@ private:
     std::condition_variable start_, done_;
     void (*call_)(const void*, unsigned) = nullptr;
     const void* task_ = nullptr;
-    std::size_t generation_ = 0;  // one per run()
-    unsigned running_ = 0;        // helpers still in the current run
-    bool closing_ = false;
+    // Written under mutex_, read awake without it as well.
+    std::atomic<std::size_t> generation_{0};  // one per run()
+    std::atomic<unsigned> running_{0};        // helpers still in the current run
+    std::atomic<bool> closing_{false};
     std::vector<std::exception_ptr> helper_errors_;  // worker i's at i - 1
     std::vector<std::thread> threads_;
 };
