@@ -48,6 +48,15 @@ bool less_on_axis(const Point& a, const Point& b, unsigned axis) {
     return a.y < b.y || (a.y == b.y && a.x > b.x);
 }
 
+// The same order with no branch on the outcome, for the partitions (on
+// points in no order the outcome is a coin flip, which a branch would
+// mispredict half the time).
+template <unsigned kAxis>
+bool less_on_axis_flat(const Point& a, const Point& b) {
+    if (kAxis == 0) return (a.x < b.x) | ((a.x == b.x) & (a.y < b.y));
+    return (a.y < b.y) | ((a.y == b.y) & (a.x > b.x));
+}
+
 class DivideAndConquer {
 public:
     DivideAndConquer(QuadEdgeMesh& mesh, const std::vector<Point>& points, VertexIndex* vertices)
@@ -56,9 +65,44 @@ public:
     // Splits s_[lo, hi) at its middle along the axis of that depth: the
     // lower half first (in no particular order within each half).
     void split(std::size_t lo, std::size_t hi, unsigned depth) {
-        const unsigned axis = depth & 1u;
-        std::nth_element(s_ + lo, s_ + lo + (hi - lo) / 2, s_ + hi,
-                         [&](VertexIndex a, VertexIndex b) { return less_on_axis(p_[a], p_[b], axis); });
+        if (depth & 1u)
+            select<1>(lo, hi, lo + (hi - lo) / 2);
+        else
+            select<0>(lo, hi, lo + (hi - lo) / 2);
+    }
+
+    // Puts in s_[k] the vertex that sorted order would, the smaller ones
+    // before it: quickselect with flat partitions (pivot: the median of
+    // three), points fetched ahead; std::nth_element finishes small ranges,
+    // and long ones if the pivots keep failing.
+    template <unsigned kAxis>
+    void select(std::size_t lo, std::size_t hi, std::size_t k) {
+        constexpr std::size_t kSmall = 8, kAhead = 16;
+        const auto less = [&](VertexIndex a, VertexIndex b) { return less_on_axis_flat<kAxis>(p_[a], p_[b]); };
+        for (int rounds = 0; hi - lo > kSmall && rounds < 64; ++rounds) {
+            const std::size_t last = hi - 1, mid = lo + (hi - lo) / 2;
+            if (less(s_[mid], s_[lo])) std::swap(s_[mid], s_[lo]);
+            if (less(s_[last], s_[mid])) std::swap(s_[last], s_[mid]);
+            if (less(s_[mid], s_[lo])) std::swap(s_[mid], s_[lo]);
+            std::swap(s_[mid], s_[last]);  // the pivot waits at the end
+            const Point pivot = p_[s_[last]];
+            std::size_t below = lo;
+            for (std::size_t i = lo; i < last; ++i) {
+                if (i + kAhead < last) pds::prefetch(&p_[s_[i + kAhead]]);
+                const VertexIndex v = s_[i];
+                const bool smaller = less_on_axis_flat<kAxis>(p_[v], pivot);
+                s_[i] = s_[below];
+                s_[below] = v;
+                below += smaller;
+            }
+            std::swap(s_[below], s_[last]);  // the pivot in its place
+            if (k == below) return;
+            if (k < below)
+                hi = below;
+            else
+                lo = below + 1;
+        }
+        std::nth_element(s_ + lo, s_ + k, s_ + hi, less);
     }
 
     // Cuts alternately along x and y (Dwyer's alternating cuts): parts cut
