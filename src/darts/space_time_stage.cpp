@@ -267,9 +267,36 @@ void SpaceTimeDartStage::resolve(Band& band) {
     for (std::size_t k = 0; k < band.cands.size(); ++k)
         if (decide(b, k, band.stack)) band.accepted.push_back(Band::Accepted{band.cands[k].t, static_cast<std::uint32_t>(k), 0});
     // By time, for merge(): each band sorts its own, side by side.
-    std::sort(band.accepted.begin(), band.accepted.end(), [&](const Band::Accepted& x, const Band::Accepted& y) {
+    sort_by_time(band);
+}
+
+void SpaceTimeDartStage::sort_by_time(Band& band) {
+    std::vector<Band::Accepted>& a = band.accepted;
+    const std::size_t n = a.size();
+    const auto before = [&](const Band::Accepted& x, const Band::Accepted& y) {
         return x.t != y.t ? x.t < y.t : earlier(band.cands[x.k], band.cands[y.k]);
-    });
+    };
+    if (n < 64) {
+        std::sort(a.begin(), a.end(), before);
+        return;
+    }
+    // The times are uniform in [0, 1): scattered into as many buckets as
+    // entries (bucket order is time order), each entry then moves past its
+    // few bucket-mates only. The order is std::sort's: before() is total.
+    std::vector<std::uint32_t> start(n + 1, 0);
+    std::vector<Band::Accepted> out(n);
+    const double scale = static_cast<double>(n);
+    const auto bucket = [&](double t) { return std::min(n - 1, static_cast<std::size_t>(t * scale)); };
+    for (const Band::Accepted& x : a) ++start[bucket(x.t) + 1];
+    for (std::size_t i = 1; i <= n; ++i) start[i] += start[i - 1];
+    for (const Band::Accepted& x : a) out[start[bucket(x.t)]++] = x;
+    for (std::size_t i = 1; i < n; ++i) {
+        const Band::Accepted x = out[i];
+        std::size_t j = i;
+        for (; j > 0 && before(x, out[j - 1]); --j) out[j] = out[j - 1];
+        out[j] = x;
+    }
+    a.swap(out);
 }
 
 bool SpaceTimeDartStage::decide(std::size_t b0, std::size_t k0, std::vector<std::uint64_t>& stack) {

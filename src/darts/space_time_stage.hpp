@@ -90,6 +90,7 @@ private:
     void draw(Band& band);
     void list_candidates(Band& band, std::uint32_t band_index, bool write);
     void resolve(Band& band);
+    void sort_by_time(Band& band);
     bool decide(std::size_t band, std::size_t k, std::vector<std::uint64_t>& stack);
     void merge();
     void write_points(Band& band);
