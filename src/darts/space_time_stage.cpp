@@ -9,6 +9,7 @@
 #include "core/predicates.hpp"
 #include "core/prefetch.hpp"
 #include "darts/jones_of_points.hpp"
+#include "darts/space_time_band.hpp"
 #include "jones/jones_stage.hpp"
 
 namespace pds {
@@ -32,43 +33,9 @@ constexpr std::size_t kAhead = 8;
 // Epochs at most: past them the Jones loop is far cheaper anyway.
 constexpr std::size_t kMaxEpochs = 65535;
 
-// Time order, ties (of probability about 2^-53 a pair) broken by cell and
-// place in the cell, so the order is total and fixed by the seed.
-bool earlier(const SpaceTimeDartStage::Candidate& a, const SpaceTimeDartStage::Candidate& b) {
-    if (a.t != b.t) return a.t < b.t;
-    if (a.cell != b.cell) return a.cell < b.cell;
-    return a.k < b.k;
-}
-
 enum : std::uint8_t { kUndecided = 0, kAccepted = 1, kRejected = 2 };
 
 }  // namespace
-
-// Each on its own cache lines: one worker writes a band's cursors while another
-// reads the next band's bounds.
-struct alignas(64) SpaceTimeDartStage::Band {
-    std::int64_t r0 = 0, r1 = 0;  // its rows
-    std::size_t a0 = 0, a1 = 0;   // its active cells, active_[a0..a1)
-    std::size_t kept = 0;         // active cells still active after the epoch
-    std::size_t thrown = 0;
-    std::vector<Candidate> cands;  // in the order of their cells
-    std::unique_ptr<std::atomic<std::uint8_t>[]> state;  // outcomes, read by every band
-    std::size_t state_room = 0;
-    std::vector<std::uint64_t> stack;     // decide()'s
-    struct Accepted {
-        double t;
-        std::uint32_t k;       // the candidate
-        std::uint32_t number;  // its point's index (merge())
-    };
-    std::vector<Accepted> accepted;  // by time once sorted
-    std::size_t head = 0;                 // merge()'s cursor
-    struct Darting {
-        SpaceTimeStream stream;  // past the count
-        std::uint32_t cell;
-        unsigned darts;
-    };
-    std::vector<Darting> darting;  // draw()'s cells with darts this epoch
-};
 
 SpaceTimeDartStage::SpaceTimeDartStage(const Rectangle& domain, double radius, std::uint64_t seed)
     : domain_(domain), r_(radius), seed_(seed), grid_(domain.bounds(), radius) {
@@ -270,35 +237,6 @@ void SpaceTimeDartStage::resolve(Band& band) {
     sort_by_time(band);
 }
 
-void SpaceTimeDartStage::sort_by_time(Band& band) {
-    std::vector<Band::Accepted>& a = band.accepted;
-    const std::size_t n = a.size();
-    const auto before = [&](const Band::Accepted& x, const Band::Accepted& y) {
-        return x.t != y.t ? x.t < y.t : earlier(band.cands[x.k], band.cands[y.k]);
-    };
-    if (n < 64) {
-        std::sort(a.begin(), a.end(), before);
-        return;
-    }
-    // The times are uniform in [0, 1): scattered into as many buckets as
-    // entries (bucket order is time order), each entry then moves past its
-    // few bucket-mates only. The order is std::sort's: before() is total.
-    std::vector<std::uint32_t> start(n + 1, 0);
-    std::vector<Band::Accepted> out(n);
-    const double scale = static_cast<double>(n);
-    const auto bucket = [&](double t) { return std::min(n - 1, static_cast<std::size_t>(t * scale)); };
-    for (const Band::Accepted& x : a) ++start[bucket(x.t) + 1];
-    for (std::size_t i = 1; i <= n; ++i) start[i] += start[i - 1];
-    for (const Band::Accepted& x : a) out[start[bucket(x.t)]++] = x;
-    for (std::size_t i = 1; i < n; ++i) {
-        const Band::Accepted x = out[i];
-        std::size_t j = i;
-        for (; j > 0 && before(x, out[j - 1]); --j) out[j] = out[j - 1];
-        out[j] = x;
-    }
-    a.swap(out);
-}
-
 bool SpaceTimeDartStage::decide(std::size_t b0, std::size_t k0, std::vector<std::uint64_t>& stack) {
     const auto state = [&](std::size_t b, std::size_t k) -> std::atomic<std::uint8_t>& { return bands_[b].state[k]; };
     const std::uint8_t known = state(b0, k0).load(std::memory_order_acquire);
@@ -349,57 +287,6 @@ bool SpaceTimeDartStage::decide(std::size_t b0, std::size_t k0, std::vector<std:
         }
     }
     return state(b0, k0).load(std::memory_order_acquire) == kAccepted;
-}
-
-void SpaceTimeDartStage::merge() {
-    // The bands' accepted candidates numbered by time: a merge of a few
-    // lists sorted by resolve(), which reads the lists alone (the
-    // candidates only for ties of time); write_points() puts the points in
-    // place, band by band.
-    std::size_t total = 0;
-    for (Band& band : bands_) {
-        band.head = 0;
-        total += band.accepted.size();
-    }
-    pending_base_ = points_.size();
-    next_pending_ = 0;
-    pending_.resize(total);  // within the room run_epoch() reserved
-    for (std::size_t next = 0; next < total; ++next) {
-        Band* best = nullptr;
-        for (Band& band : bands_) {
-            if (band.head == band.accepted.size()) continue;
-            if (best) {
-                const Band::Accepted &x = band.accepted[band.head], &y = best->accepted[best->head];
-                if (x.t > y.t || (x.t == y.t && !earlier(band.cands[x.k], best->cands[y.k]))) continue;
-            }
-            best = &band;
-        }
-        best->accepted[best->head++].number = static_cast<std::uint32_t>(pending_base_ + next);
-    }
-}
-
-void SpaceTimeDartStage::write_points(Band& band) {
-    // Each cell that listed candidates gets its point (at most one: a cell's
-    // diagonal is under R), or is empty again.
-    const auto cols = static_cast<std::uint32_t>(grid_.cols());
-    for (const Candidate& c : band.cands) grid_.store(grid_.padded(c.cell % cols, c.cell / cols), 0);
-    for (const Band::Accepted& x : band.accepted) {
-        const Candidate& c = band.cands[x.k];
-        pending_[x.number - pending_base_] = c.p;
-        grid_.write(c.cell % cols, c.cell / cols, c.p, x.number);
-        masks_[c.cell] = SpaceTimeGrid::kAllCovered;  // its point's disk holds it whole
-    }
-}
-
-void SpaceTimeDartStage::drop_covered(Band& band) {
-    // Cells whose sub-squares each lie in one disk leave: those with a
-    // point (write_points()) and those whose masks grew whole in draw().
-    std::size_t kept = band.a0;
-    for (std::size_t i = band.a0; i < band.a1; ++i) {
-        const std::uint32_t cell = active_[i];
-        if (masks_[cell] != SpaceTimeGrid::kAllCovered) active_[kept++] = cell;
-    }
-    band.kept = kept - band.a0;
 }
 
 void SpaceTimeDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {

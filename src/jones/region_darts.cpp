@@ -7,6 +7,7 @@
 
 #include "core/predicates.hpp"
 #include "core/prefetch.hpp"
+#include "core/time_order.hpp"
 
 namespace pds {
 
@@ -69,22 +70,17 @@ void RegionDarts::decide(std::size_t nblocks, double r) {
     chain_.resize(n);
     bucket_.reserve(n + 1);
     pending_.reserve(n);
-    // The blocks' darts copied straight into order of time by a bucket
-    // sort (the times are uniform in [0, 1), so n buckets hold one dart
-    // each on average), then sorted inside their buckets by insertion,
-    // stably: ties (1 in 2^53 per pair) go to the earlier in block order.
-    // The decision then reads the darts in sequence.
-    bucket_.assign(n + 1, 0);
-    const auto bucket_of = [n](double t) {
-        return std::min(n - 1, static_cast<std::size_t>(t * static_cast<double>(n)));
-    };
-    for (std::size_t b = 0; b < nblocks; ++b)
-        for (const Dart& d : blocks_[b].darts) ++bucket_[bucket_of(d.t) + 1];
-    for (std::size_t b = 0; b < n; ++b) bucket_[b + 1] += bucket_[b];
-    for (std::size_t b = 0; b < nblocks; ++b)
-        for (const Dart& d : blocks_[b].darts) darts_[bucket_[bucket_of(d.t)]++] = d;
-    for (std::size_t i = 1; i < n; ++i)
-        for (std::size_t j = i; j > 0 && darts_[j].t < darts_[j - 1].t; --j) std::swap(darts_[j], darts_[j - 1]);
+    // The blocks' darts copied straight into order of time, stably: ties
+    // (1 in 2^53 per pair) go to the earlier in block order. The decision
+    // then reads the darts in sequence.
+    order_by_time(
+        n,
+        [&](const auto& put) {
+            for (std::size_t b = 0; b < nblocks; ++b)
+                for (const Dart& d : blocks_[b].darts) put(d);
+        },
+        [](const Dart& d) { return d.t; }, [](const Dart& x, const Dart& y) { return x.t < y.t; }, darts_.data(),
+        bucket_);
     pending_.clear();
     next_ = 0;
     // The grid's rows for the darts a few ahead, asked for early.
