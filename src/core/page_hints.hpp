@@ -30,7 +30,9 @@
 // kernel time there: docs/performance.md, 1.7.1). Asking the kernel to
 // populate the pages (Linux's MADV_POPULATE_WRITE) from a worker moves that
 // work off the serial path. Contents never change: the pages are beyond
-// what the arrays hold.
+// what the arrays hold. The dart grids ask for all their pages when a run
+// reserves enough points (grid_storage.hpp): darts read a page before any
+// point writes it, and that write would fault a second time.
 #ifndef PDS_PAGE_HINTS_HPP
 #define PDS_PAGE_HINTS_HPP
 

@@ -52,15 +52,23 @@ public:
     void store(std::size_t cell, std::uint64_t word) { __atomic_store_n(words_.get() + cell, word, __ATOMIC_RELAXED); }
 
     // Room for `points` points writing `writes` cells in all (never fails:
-    // the array is whole); asks for huge pages once the points are worth
-    // them (copies on a torus are few: they are not counted).
+    // the array is whole). Once the points are worth them (copies on a
+    // torus are few: they are not counted), asks for huge pages, and has
+    // the pages made writable in one call: else each is read first (the
+    // darts' checks map the shared zero page) and faults again when written,
+    // and on a threaded run that second fault flushes every core's TLB.
     void reserve(std::size_t points, std::size_t) {
-        if (advised_ == 0 && words_ && huge_pages_worth(bytes_, points))
-            advised_ = advise_huge_pages(words_.get(), bytes_);
+        if (populated_ || !words_ || !huge_pages_worth(bytes_, points)) return;
+        advised_ = advise_huge_pages(words_.get(), bytes_);
+        populated_bytes_ = populate_pages(words_.get(), bytes_);
+        populated_ = true;
     }
     bool has_room_for(std::size_t, std::size_t) const { return true; }
-    // Bytes under the huge-page hint (0: none asked; tests).
+    // Bytes under the huge-page hint (0: none asked), bytes made writable
+    // ahead (0: none, or no support), and the words (tests).
     std::size_t advised_bytes() const { return advised_; }
+    std::size_t populated_bytes() const { return populated_bytes_; }
+    const std::uint64_t* words() const { return words_.get(); }
     void release() { words_.reset(); }
 
 private:
@@ -70,6 +78,8 @@ private:
     std::unique_ptr<std::uint64_t[], Free> words_;
     std::size_t bytes_ = 0;
     std::size_t advised_ = 0;
+    std::size_t populated_bytes_ = 0;
+    bool populated_ = false;
 };
 
 class SparseCells {

@@ -40,6 +40,8 @@ struct alignas(64) SpaceTimeDartStage::Band {
         std::uint32_t number;  // its point's index (merge())
     };
     std::vector<Accepted> accepted;  // by time once sorted
+    std::vector<Accepted> sorted;    // sort_by_time()'s scratch
+    std::vector<std::uint32_t> starts;
     std::size_t head = 0;            // merge()'s cursor
     struct Darting {
         SpaceTimeStream stream;  // past the count

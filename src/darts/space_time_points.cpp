@@ -12,8 +12,9 @@
 namespace pds {
 
 void SpaceTimeDartStage::sort_by_time(Band& band) {
-    std::vector<Band::Accepted> sorted(band.accepted.size());
-    std::vector<std::uint32_t> starts;
+    // Into the band's scratch, kept from epoch to epoch (fresh pages each
+    // epoch would cost a fault apiece), then swapped in.
+    band.sorted.resize(band.accepted.size());
     order_by_time(
         band.accepted.size(),
         [&](const auto& put) {
@@ -23,8 +24,8 @@ void SpaceTimeDartStage::sort_by_time(Band& band) {
         [&](const Band::Accepted& x, const Band::Accepted& y) {
             return x.t != y.t ? x.t < y.t : earlier(band.cands[x.k], band.cands[y.k]);
         },
-        sorted.data(), starts);
-    band.accepted.swap(sorted);
+        band.sorted.data(), band.starts);
+    band.accepted.swap(band.sorted);
 }
 
 void SpaceTimeDartStage::merge() {

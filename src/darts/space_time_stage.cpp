@@ -211,6 +211,8 @@ void SpaceTimeDartStage::draw(Band& band) {
     band.stack.reserve(1024);
     band.accepted.clear();
     band.accepted.reserve(m);
+    band.sorted.reserve(m);  // sort_by_time()'s scratch: resolve() allocates nothing
+    band.starts.reserve(m + 1);
 }
 
 void SpaceTimeDartStage::list_candidates(Band& band, std::uint32_t band_index, bool write) {

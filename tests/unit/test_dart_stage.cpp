@@ -12,8 +12,10 @@
 
 #if defined(__linux__)
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
+#include "core/page_hints.hpp"
 #include "darts/dart_stage.hpp"
 #include "sampler/sampler.hpp"
 #include "core/predicates.hpp"
@@ -147,14 +149,33 @@ START_TEST(huge_pages_follow_the_points) {
     // so a short run's points (1000: 4 MB on small pages) must not ask for
     // them; points enough to write every small page of the grid once on
     // average (34,000 and more) must, as a full run's reservation does.
+    // The pages are made writable ahead on the same terms (a short run's
+    // grid stays mostly not resident) and hold zeros after.
     pds::DartStage stage(pds::Box{0, 0, 1, 1}, nullptr, 3.4e-4);
+    const auto& cells = stage.grid().cells();
     stage.reserve(1000);
-    ck_assert_uint_eq(stage.grid().cells().advised_bytes(), 0);
+    ck_assert_uint_eq(cells.advised_bytes(), 0);
+    ck_assert_uint_eq(cells.populated_bytes(), 0);
     stage.reserve(30000);
-    ck_assert_uint_eq(stage.grid().cells().advised_bytes(), 0);
+    ck_assert_uint_eq(cells.advised_bytes(), 0);
+    ck_assert_uint_eq(cells.populated_bytes(), 0);
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     stage.reserve(1000000);
-    ck_assert_uint_gt(stage.grid().cells().advised_bytes(), std::size_t{128} << 20);
+    ck_assert_uint_gt(cells.advised_bytes(), std::size_t{128} << 20);
+#endif
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+    stage.reserve(1000000);
+    const std::size_t made = cells.populated_bytes();
+    std::vector<double> probe(1 << 16);
+    if (pds::populate_pages(probe.data(), probe.size() * sizeof(double)) > 0) {  // else a kernel before 5.14
+        ck_assert_uint_gt(made, std::size_t{128} << 20);
+        const std::size_t page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+        const std::uintptr_t start = (reinterpret_cast<std::uintptr_t>(cells.words()) + page - 1) & ~(page - 1);
+        std::vector<unsigned char> in(made / page);
+        ck_assert_int_eq(mincore(reinterpret_cast<void*>(start), made, in.data()), 0);
+        for (std::size_t k = 0; k < in.size(); k += 97) ck_assert_msg(in[k] & 1, "page %zu not resident", k);
+        for (std::size_t w = 0; w < made / 8; w += 4099) ck_assert_uint_eq(cells.words()[w], 0);
+    }
 #endif
     // The stage runs as before on either pages.
     pds::Rng rng(3);
