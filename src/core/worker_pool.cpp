@@ -18,8 +18,10 @@ constexpr unsigned kSpins = 2048;
 inline void relax() {
 #if defined(__x86_64__) || defined(__i386__)
     _mm_pause();
+#elif defined(__aarch64__) || defined(__arm__)
+    __asm__ __volatile__("yield");
 #else
-    std::this_thread::yield();
+    std::atomic_signal_fence(std::memory_order_seq_cst);  // a pause the compiler keeps
 #endif
 }
 
