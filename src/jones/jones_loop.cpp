@@ -311,9 +311,13 @@ void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
         const SampleOutcome drawn = sample_chunk(q, sel.chunk(), rng.next_double(), rng, accept, kMaxDraws, &p, retry);
         if (drawn == SampleOutcome::placed) {
             queue_.push_back(Candidate{chosen, v});
+            ++stats_.placed_draws;
             continue;
         }
         if (drawn == SampleOutcome::rejected) {
+            if (++stats_.refused_draws >= kRejectionsPerFailure && !region_draws_ && cells.cut() &&
+                stats_.refused_draws >= kRefusalsPerPlaced * stats_.placed_draws)
+                region_draws_ = true;
             // A refused draw ends a selection without counting against its
             // cell. So many in a row, with no point placed, means a free
             // region rounding cannot reach (a sliver along the outline): a

@@ -120,6 +120,12 @@ private:
     // far beyond what any healthy cell refuses (each keeps a draw with a
     // probability near 1/2 or more).
     static constexpr std::size_t kRejectionsPerFailure = 4096;
+    // Refused draws per point placed, in all, past which the cut cells turn
+    // to their trapezoids (with kRejectionsPerFailure refusals at least): a
+    // strip far thinner than R refuses thousands a point, but places points
+    // often enough that none of its runs of refusals reaches a failure; a
+    // healthy outline refuses far below one a point.
+    static constexpr std::size_t kRefusalsPerPlaced = 16;
     // A candidate is checked exactly only against the newer points within
     // this many radii in x and y (any half-side >= R holds the disk).
     static constexpr double kBoxReach = 1.5;

@@ -40,6 +40,9 @@ struct JonesStats {
     std::size_t stale_selections = 0;
     std::size_t stale_at_zero = 0;
     std::size_t region_draws = 0;  // candidates drawn from a cut cell's trapezoids
+    // Draws from the fan refused (outside the region) and placed, in all.
+    std::size_t refused_draws = 0;
+    std::size_t placed_draws = 0;
 };
 
 class JonesStage : public Stage {

@@ -201,6 +201,29 @@ START_TEST(frames_far_thinner_than_their_sides_are_long) {
 }
 END_TEST
 
+START_TEST(a_thin_strip_turns_to_trapezoids_early) {
+    // A unit square frame 10^-6 wide at R 0.01: nearly every fan draw in its
+    // cells lands outside it, yet points come often enough that no run of
+    // refusals reaches a failure. The refusals counted in all turn the cut
+    // cells to their trapezoids after a few thousand (it took about 2000 a
+    // point to the end before), and the run ends maximal.
+    const std::vector<std::vector<double>> rings{{1, 1, 2, 1, 2, 2, 1, 2},
+                                                 {1 + 1e-6, 1 + 1e-6, 1 + 1e-6, 2 - 1e-6, 2 - 1e-6, 2 - 1e-6, 2 - 1e-6, 1 + 1e-6}};
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        pds::Sampler s(0.01, seed);
+        s.set_polygon(std::make_shared<const Polygon>(rings_of(rings)));
+        std::size_t added = 0;
+        ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+        ck_assert_msg(s.verify().maximal, "seed %llu", static_cast<unsigned long long>(seed));
+        const pds::JonesStats& st = s.jones().stats();
+        ck_assert_msg(st.region_draws > 0 && st.refused_draws < 3 * 4096,
+                      "seed %llu: %zu refused, %zu placed by the fan, %zu from trapezoids",
+                      static_cast<unsigned long long>(seed), st.refused_draws, st.placed_draws, st.region_draws);
+        ck_assert_uint_gt(s.count(), 250);
+    }
+}
+END_TEST
+
 // The points within r of the outline's segments (as xy pairs, ring by ring).
 std::size_t near_outline(const std::vector<pds::Point>& points, const std::vector<std::vector<double>>& rings, double r) {
     std::size_t near = 0;
@@ -273,6 +296,7 @@ Suite* polygon_domain_suite() {
     tcase_add_test(t, a_ring_traced_twice_is_no_outline);
     tcase_add_test(t, edges_that_overlap_in_part_cancel_there);
     tcase_add_test(t, frames_far_thinner_than_their_sides_are_long);
+    tcase_add_test(t, a_thin_strip_turns_to_trapezoids_early);
     tcase_add_test(t, region_draws_keep_the_law);
     tcase_set_timeout(t, 60);
     suite_add_tcase(s, t);
