@@ -249,7 +249,8 @@ bool SpaceTimeDartStage::decide(std::size_t b0, std::size_t k0, std::vector<std:
     stack.clear();
     stack.push_back((std::uint64_t{b0} << 56) | k0);
     while (!stack.empty()) {
-        const std::size_t b = stack.back() >> 56, k = stack.back() & ((std::uint64_t{1} << 56) - 1);
+        const auto b = static_cast<std::size_t>(stack.back() >> 56);
+        const auto k = static_cast<std::size_t>(stack.back() & ((std::uint64_t{1} << 56) - 1));
         if (state(b, k).load(std::memory_order_acquire) != kUndecided) {
             stack.pop_back();
             continue;
