@@ -145,6 +145,7 @@ struct fz_state {
     /* 1.2 */
     int periodic;   /* pds_set_periodic(s, nonzero) is in force */
     double per[2];  /* the periods on the torus (x1-x0, y1-y0 rounded down to q) */
+    double per_scaled[2]; /* the same in units of 2^ilogb(largest |coordinate|): never inf */
     double q;       /* the torus's quantum 2^(e-50); 0 when not periodic */
     size_t target;  /* count mode: the n of pds_set_count; 0 otherwise */
     fz_progress prog;

@@ -306,7 +306,7 @@ void fz_reset(fz_state *st, pds_sampler *s, double radius)
     st->count = st->seen = 0;
     st->maximal = st->checked = 0;
     st->periodic = 0;
-    st->per[0] = st->per[1] = st->q = 0.0;
+    st->per[0] = st->per[1] = st->q = st->per_scaled[0] = st->per_scaled[1] = 0.0;
     st->target = 0;
     memset(&st->prog, 0, sizeof st->prog);
     st->c_radius = radius;

@@ -52,12 +52,14 @@ void fz_set_torus(fz_state *st)
     const double *d = st->dom;
     int e, a;
 
-    st->q = st->per[0] = st->per[1] = 0.0;
+    st->q = st->per[0] = st->per[1] = st->per_scaled[0] = st->per_scaled[1] = 0.0;
     if (!st->periodic || !scalable(d)) return; /* no point will exist */
     e = ilogb(max_abs4(d));
     st->q = ldexp(1.0, e - 50);
-    for (a = 0; a < 2; a++) /* back in the user's scale; inf near DBL_MAX (then lenient) */
-        st->per[a] = ldexp(grid_floor_difference(ldexp(d[a], -e), ldexp(d[a + 2], -e)), e);
+    for (a = 0; a < 2; a++) { /* back in the user's scale; inf near DBL_MAX (then lenient) */
+        st->per_scaled[a] = grid_floor_difference(ldexp(d[a], -e), ldexp(d[a + 2], -e));
+        st->per[a] = ldexp(st->per_scaled[a], e);
+    }
 }
 
 int fz_inside(const fz_state *st, double x, double y)
@@ -110,9 +112,10 @@ void fz_count_radius(fz_state *st)
         const int e = ilogb(max_abs4(d));
         /* The area is the torus's: its periods rounded down to the quantum;
          * the sides as given when one rounds to 0 (no point can exist). */
-        const int torus = st->periodic && st->per[0] > 0.0 && st->per[1] > 0.0;
-        const double w = torus ? ldexp(st->per[0], -e) : ldexp(d[2], -e) - ldexp(d[0], -e);
-        const double h = torus ? ldexp(st->per[1], -e) : ldexp(d[3], -e) - ldexp(d[1], -e);
+        /* (scaled: periods near 2 DBL_MAX overflow in the user's units) */
+        const int torus = st->periodic && st->per_scaled[0] > 0.0 && st->per_scaled[1] > 0.0;
+        const double w = torus ? st->per_scaled[0] : ldexp(d[2], -e) - ldexp(d[0], -e);
+        const double h = torus ? st->per_scaled[1] : ldexp(d[3], -e) - ldexp(d[1], -e);
         const double n = (double)st->target;
         const double area = shaped ? st->shape.frac * w * h : w * h;
         const double perimeter = shaped ? fz_shape_perimeter(&st->shape, e) : 2.0 * (w + h);
