@@ -470,8 +470,34 @@ static int edge_cancelled(const fz_shape *sh, double ax, double ay, double bx, d
     return same % 2 == 0;
 }
 
+/* Whether the point at t along the edge a -> b belongs to the closed domain,
+ * the closure of the even-odd inside: a point beside it, 1e-9 of the box to
+ * either hand (at t = 0, taken 1e-6 along the edge: a spike's tip), is
+ * inside and off every edge. Where collinear edges overlap in part, the part
+ * traced twice has the same side on both hands, and often inside on neither
+ * (a ring's side along a hole's side): such points are not the domain's. */
+static int touches_inside(const fz_shape *sh, double ax, double ay, double bx, double by, double t)
+{
+    const double ua = norm(ax, sh->box[0], sh->box[2]), va = norm(ay, sh->box[1], sh->box[3]);
+    const double ub = norm(bx, sh->box[0], sh->box[2]), vb = norm(by, sh->box[1], sh->box[3]);
+    const double len = hypot(ub - ua, vb - va), at = t > 1e-6 ? t : 1e-6;
+    const double hw = sh->box[2] * 0.5 - sh->box[0] * 0.5, hh = sh->box[3] * 0.5 - sh->box[1] * 0.5;
+    int side;
+    if (!(len > 0.0)) return 1; /* a repeated vertex: probed as before */
+    for (side = -1; side <= 1; side += 2) {
+        /* the unit normal in the box's units, back to the user's */
+        const double nu = -(vb - va) / len * side, nv = (ub - ua) / len * side;
+        const double x = ax * (1.0 - at) + bx * at + 2e-9 * hw * nu;
+        const double y = ay * (1.0 - at) + by * at + 2e-9 * hh * nv;
+        double margin;
+        if (locate(sh, x, y, 0.0, &margin) && margin > TOL) return 1;
+    }
+    return 0;
+}
+
 /* Probes of the closed domain: every vertex, points along every edge (but
- * those traced twice), and a grid of points well inside. fn returns 0 to stop. */
+ * those traced twice, and points of the edges outside the closed domain),
+ * and a grid of points well inside. fn returns 0 to stop. */
 void fz_shape_probes(const fz_shape *sh, void (*fn)(void *ctx, double x, double y), void *ctx)
 {
     size_t k, i, a, b;
@@ -482,10 +508,10 @@ void fz_shape_probes(const fz_shape *sh, void (*fn)(void *ctx, double x, double 
             const double ax = sh->xy[2 * i], ay = sh->xy[2 * i + 1];
             const double bx = sh->xy[2 * j], by = sh->xy[2 * j + 1];
             if (edge_cancelled(sh, ax, ay, bx, by)) continue;
-            fn(ctx, ax, ay);
+            if (touches_inside(sh, ax, ay, bx, by, 0.0)) fn(ctx, ax, ay);
             for (a = 1; a < 4; a++) {
-                const double t = (double)a / 4.0;
-                fn(ctx, ax * (1.0 - t) + bx * t, ay * (1.0 - t) + by * t);
+                const double t = (double)a / 4.0, x = ax * (1.0 - t) + bx * t, y = ay * (1.0 - t) + by * t;
+                if (touches_inside(sh, ax, ay, bx, by, t)) fn(ctx, x, y);
             }
         }
     }
