@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/expansion.hpp"
 #include "core/circumcentre.hpp"
+#include "verify/outline_filter.hpp"
 #include "verify/verify_outline.hpp"
 #include "mesh/mesh_invariants.hpp"
 #include "core/roundoff.hpp"
@@ -121,9 +123,11 @@ bool vertex_in_polygon(const Point& a, double ra, const Point& b, double rb, con
 }
 
 // Float filter for uncovered_vertex: 1 certainly uncovered, 0 certainly not,
-// -1 undecided.
+// -1 undecided. at, err (if given): the vertex and its error bound, err < 0
+// when it was too flat to bound.
 int uncovered_vertex_fast(const Point& a, double r, const Point& b, double rb_, const Point& c, double rc_,
-                          const Box& box) {
+                          const Box& box, Point* at = nullptr, double* err_out = nullptr) {
+    if (err_out) *err_out = -1.0;
     const Point rb{b.x - a.x, b.y - a.y}, rd{c.x - a.x, c.y - a.y};
     if (!(rb.x * rd.y - rb.y * rd.x > 0.0)) return -1;  // too flat to bound: decide exactly
     const RelativeCentre centre = relative_power_centre(rb, rd, (r - rb_) * (r + rb_), (r - rc_) * (r + rc_));
@@ -131,6 +135,10 @@ int uncovered_vertex_fast(const Point& a, double r, const Point& b, double rb_, 
     // The vertex's own bound, plus the rounding of moving it back to a's frame.
     const double err = centre.err + 8.0 * kUnitRoundoff * (std::fabs(a.x) + std::fabs(a.y) + std::fabs(vx) + std::fabs(vy));
     const double cx = a.x + vx, cy = a.y + vy;
+    if (at && err_out) {
+        *at = Point{cx, cy};
+        *err_out = err;
+    }
     const auto side = [&](double v, double lo, double hi) {
         if (v < lo - err || v > hi + err) return 0;  // certainly outside
         if (v > lo + err && v < hi - err) return 1;  // certainly inside
@@ -149,6 +157,8 @@ bool voronoi_vertices_covered(const Delaunay& dt, const Box& box, double r, cons
                               VerifyReport& rep) {
     const auto rad = [&](VertexIndex v) { return dt.weighted() ? dt.radius(v) : r; };
     const QuadEdgeMesh& m = dt.mesh();
+    std::optional<PolygonClearance> clearance;
+    if (polygon) clearance.emplace(*polygon);
     for (std::size_t rec = 0; rec < m.record_count(); ++rec) {
         if (!m.is_live(rec)) continue;
         for (std::uint32_t k = 0; k < 4; k += 2) {
@@ -161,9 +171,14 @@ bool voronoi_vertices_covered(const Delaunay& dt, const Box& box, double r, cons
             const Point& b = dt.point(m.org(f));
             const Point& c = dt.point(m.org(g));
             const double ra = rad(m.org(e)), rb = rad(m.org(f)), rc = rad(m.org(g));
-            int u = uncovered_vertex_fast(a, ra, b, rb, c, rc, box);
+            Point at{0.0, 0.0};
+            double err = -1.0;
+            int u = uncovered_vertex_fast(a, ra, b, rb, c, rc, box, &at, &err);
             if (u < 0) u = uncovered_vertex(a, ra, b, rb, c, rc, box) ? 1 : 0;
-            if (u == 1 && polygon && !vertex_in_polygon(a, ra, b, rb, c, rc, *polygon)) u = 0;
+            // Outside the polygon, most such vertices are certainly so in floating point.
+            if (u == 1 && polygon && ((err >= 0.0 && clearance->certainly_outside(at, err)) ||
+                                      !vertex_in_polygon(a, ra, b, rb, c, rc, *polygon)))
+                u = 0;
             if (u == 1) {
                 rep.failure = dt.weighted() ? "a power-diagram vertex inside the domain lies outside its disks"
                                             : "a Voronoi vertex inside the domain is farther than R from its sites";

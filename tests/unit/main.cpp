@@ -16,6 +16,7 @@ int main() {
     srunner_add_suite(runner, free_area_suite());
     srunner_add_suite(runner, power_cells_suite());
     srunner_add_suite(runner, verify_suite());
+    srunner_add_suite(runner, outline_filter_suite());
     srunner_add_suite(runner, verify_field_suite());
     srunner_add_suite(runner, dart_stage_suite());
     srunner_add_suite(runner, field_dart_stage_suite());

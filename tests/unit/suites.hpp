@@ -18,6 +18,7 @@ Suite* hash_map_suite();
 Suite* free_area_suite();
 Suite* power_cells_suite();
 Suite* verify_suite();
+Suite* outline_filter_suite();
 Suite* verify_field_suite();
 Suite* dart_stage_suite();
 Suite* field_dart_stage_suite();

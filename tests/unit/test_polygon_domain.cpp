@@ -16,6 +16,7 @@
 #include "law_compare.hpp"
 #include "domain/polygon.hpp"
 #include "sampler/sampler.hpp"
+#include "polygon_rings.hpp"
 #include "suites.hpp"
 
 namespace {
@@ -27,16 +28,6 @@ std::vector<double> square(double x0, double y0, double side, bool clockwise) {
     std::vector<double> ccw{x0, y0, x0 + side, y0, x0 + side, y0 + side, x0, y0 + side};
     if (!clockwise) return ccw;
     return {ccw[6], ccw[7], ccw[4], ccw[5], ccw[2], ccw[3], ccw[0], ccw[1]};
-}
-
-Polygon rings_of(const std::vector<std::vector<double>>& rings) {
-    std::vector<double> xy;
-    std::vector<std::size_t> ends;
-    for (const auto& r : rings) {
-        xy.insert(xy.end(), r.begin(), r.end());
-        ends.push_back(xy.size() / 2);
-    }
-    return Polygon(xy.data(), ends.data(), ends.size());
 }
 
 START_TEST(even_odd_area_in_any_orientation) {
