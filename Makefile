@@ -481,8 +481,9 @@ bench: $(B)/bench $(B)/bench-domains
 	$(B)/bench-domains
 
 # A polygonal domain's cost per point against its bounding rectangle
-# (bench/domains/domains.c): outlines of 10^3 and 10^5 vertices with a hole,
-# about 10^6 points each. DOMAINS_ARGS: [--repeats K] [--points N].
+# (bench/domains/domains.c): outlines of 10^3 and 10^5 vertices with a hole and a comb,
+# about 10^6 points each, and the verification of one run of each. DOMAINS_ARGS:
+# [--repeats K] [--points N].
 $(B)/bench-domains: bench/domains/domains.c include/poissondisk.h $(LIB_A)
 	$(CC) $(PDS_CFLAGS) -O2 $(CFLAGS) -o $@ bench/domains/domains.c $(LIB_A) -lstdc++ -lm
 
