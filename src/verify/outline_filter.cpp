@@ -48,7 +48,8 @@ bool OutlineFilter::certainly_within(double px, double py, double e) const {
 }
 
 bool PolygonClearance::certainly_outside(const Point& q, double e) {
-    const double w = e + 4.0 * kEps * (std::fabs(q.x) + std::fabs(q.y));
+    // Wide enough that q.x + w, rounded, still bounds q.x + e (and so on).
+    const double w = (e + 8.0 * kEps * (std::fabs(q.x) + std::fabs(q.y))) * (1.0 + 16.0 * kEps);
     const Box& b = polygon_.bounds();
     if (q.x + w < b.x0 || q.x - w > b.x1 || q.y + w < b.y0 || q.y - w > b.y1) return true;
     // The grid cells the error box meets, and one more each way (a point
