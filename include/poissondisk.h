@@ -247,7 +247,8 @@ PDS_API int pds_set_periodic(pds_sampler *s, int periodic) PDS_NOEXCEPT;
  * Method: the radius starts above R(n), the radius at which a maximal
  * pattern holds n points on average, n = 0.547 4A/(pi R^2) + 0.23 P/R for a
  * rectangle of area A and perimeter P (no P term on the torus), by a factor
- * 1.015 + 10/n (on the torus at most half the shorter period); each time
+ * 1.015 + 10/n (on the torus at most half the shorter period; never above
+ * DBL_MAX, which only a domain with sides near DBL_MAX reaches); each time
  * the pattern becomes maximal with m < n points, the radius is lowered (as
  * pds_refine) by the factor sqrt(m/n) kept between 0.99 and 0.999, and the
  * run goes on; it stops at the n-th point. Afterwards pds_radius() is the last radius: every pair is at least

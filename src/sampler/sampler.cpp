@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -86,10 +87,13 @@ void Sampler::set_count(std::size_t n) {
     // cheap steps for a few points). Not more: each step leaves a pattern a
     // little less dense than one made at the final radius, so many steps
     // would end at a smaller radius. On the torus, at most half the shorter
-    // period.
+    // period; anywhere, at most the largest double: in a domain whose sides
+    // come near it, the start overflows, and an infinite radius lowered by 1%
+    // stays infinite, so the steps would never end.
     if (n == 0) return;
     const double above = 1.015 + 10.0 / static_cast<double>(n);
-    frame_.set_radius(std::min(above * frame_.radius_for_count(static_cast<double>(n)), frame_.max_radius()));
+    const double start = above * frame_.radius_for_count(static_cast<double>(n));
+    frame_.set_radius(std::min({start, frame_.max_radius(), std::numeric_limits<double>::max()}));
 }
 
 void Sampler::set_threads(unsigned n) {

@@ -11,10 +11,12 @@
  * count is set; the radius given to pds_create is ignored; the same seed gives
  * the same points however the work is split. pds_set_count is allowed only
  * before the first point; n == 0 is PDS_EINVAL; a failed call changes nothing.
- * Checked on the unit square, on an off-centre rectangle and on the torus
- * (the torus cases wait for the periodic core).
+ * Checked on the unit square, on an off-centre rectangle and on the torus,
+ * and on rectangles whose sides come near DBL_MAX, where the start is capped
+ * at DBL_MAX.
  */
 #include <ctype.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -293,6 +295,53 @@ START_TEST(refine_refused)
 }
 END_TEST
 
+/* Domains whose sides come near DBL_MAX: there the start, R(n) times
+ * 1.015 + 10/n, is above the largest double for small n. It is capped at
+ * DBL_MAX, so the run ends (an infinite start lowered by 1% stays infinite)
+ * and pds_radius() stays finite. Checked in units 2^-1020 of the user's,
+ * where the distances do not overflow. */
+static const test_domain huge_places[] = {
+    {-DBL_MAX, -DBL_MAX, DBL_MAX, DBL_MAX},
+    {-DBL_MAX, -DBL_MAX / 2, DBL_MAX / 8, DBL_MAX / 2},
+};
+
+START_TEST(start_beyond_the_largest_double)
+{
+    const size_t ns[] = {1, 2, 3, 5, 10, 40};
+    const test_domain d = huge_places[_i];
+    const test_domain scaled = {ldexp(d.x0, -1020), ldexp(d.y0, -1020), ldexp(d.x1, -1020),
+                                ldexp(d.y1, -1020)};
+    size_t k, m, j;
+
+    for (k = 0; k < sizeof ns / sizeof ns[0]; k++) {
+        const size_t n = ns[k];
+        pds_sampler *s = sampler_new(1.0, 40 + (uint64_t)k);
+        char what[128];
+        double *xy, r;
+        int rc;
+
+        snprintf(what, sizeof what, "[%g,%g]x[%g,%g], n = %zu", d.x0, d.x1, d.y0, d.y1, n);
+        ck_assert_int_eq(pds_set_domain(s, d.x0, d.y0, d.x1, d.y1), 0);
+        ck_assert_int_eq(pds_set_count(s, n), 0);
+        r = pds_radius(s);
+        ck_assert_msg(r == DBL_MAX || n > 3, "%s: start radius %.17g, expected DBL_MAX", what, r);
+        rc = pds_run(s, 0, NULL);
+        ck_assert_msg(rc == PDS_DONE, "%s: pds_run returned %d (%s)", what, rc, pds_errmsg(s));
+        r = pds_radius(s);
+        ck_assert_msg(isfinite(r) && r > 0.0, "%s: pds_radius is %.17g", what, r);
+        xy = points_copy(s, &m);
+        ck_assert_msg(m == n, "%s: %zu points", what, m);
+        for (j = 0; j < 2 * m; j++) xy[j] = ldexp(xy[j], -1020);
+        assert_inside(xy, m, scaled, what);
+        assert_spacing(xy, m, ldexp(r, -1020), scaled, 0, 1, what);
+        if (r < DBL_MAX) /* lowered at least once */
+            assert_covered(xy, m, ldexp(r, -1020) / 0.99, scaled, 0, 200, 2000, n, what);
+        free(xy);
+        pds_destroy(s);
+    }
+}
+END_TEST
+
 START_TEST(bad_counts)
 {
     pds_sampler *a = sampler_new(0.05, 11), *b = sampler_new(0.05, 11);
@@ -343,6 +392,8 @@ Suite *count_suite(void)
     tcase_add_loop_test(tc, exactly_n_points, 0, (int)(N_PLACES * N_COUNTS));
     tcase_add_loop_test(tc, radius_of_create_ignored, 0, (int)N_PLACES);
     tcase_add_loop_test(tc, setter_order_free, 0, (int)N_PLACES);
+    tcase_add_loop_test(tc, start_beyond_the_largest_double, 0,
+                        (int)(sizeof huge_places / sizeof huge_places[0]));
     tc = new_tcase(s, "split");
     tcase_add_loop_test(tc, same_points_however_split, 0, (int)N_PLACES);
     tcase_add_test(tc, large_split);

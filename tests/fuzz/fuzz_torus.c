@@ -122,6 +122,7 @@ void fz_count_radius(fz_state *st)
         const double a = 0.547 * 4.0 * area / PI, b = st->periodic ? 0.0 : 0.23 * perimeter;
         double want = ldexp((b + sqrt(b * b + 4.0 * a * n)) / (2.0 * n) * (1.015 + 10.0 / n), e);
         if (st->periodic && want > half_shorter(d)) want = half_shorter(d);
+        if (want > DBL_MAX) want = DBL_MAX; /* sides near DBL_MAX: the start is capped */
         /* (want is 0 only on a torus so thin that its area underflows: PDS_ERANGE) */
         FZ_CHECK(isfinite(got) && fabs(got - want) <= 1e-9 * want,
                  "count mode (n %zu%s): pds_radius is %.17g, the documented start %.17g "
