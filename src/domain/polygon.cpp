@@ -119,6 +119,11 @@ Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rin
         }
     }
     if (!any_side || !(area_ > 0.0)) throw DomainError("the outline encloses nothing by the even-odd rule");
+    if (const double finer = index_->finer_cells_for_location(); finer > 0.0) {
+        locator_ = std::make_unique<PolygonIndex>(*rings_, finer);
+        for (std::size_t i = 0; i < rings_->vertices(); ++i)
+            if (index_->cancelled(i)) locator_->mark_cancelled(i);
+    }
     for (std::size_t r = 0; r < index_->rows(); ++r)
         for (std::size_t c = 0; c < index_->columns(); ++c)
             if (index_->cell_place(c, r) != PolygonIndex::kOutside) candidate_cells_.push_back(r * index_->columns() + c);

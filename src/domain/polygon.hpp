@@ -32,8 +32,8 @@ public:
     Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rings);
 
     const Box& bounds() const { return rings_->bounds(); }
-    bool contains(const Point& p) const { return index_->contains(p); }
-    PolygonIndex::Place locate(const Point& p) const { return index_->locate(p); }
+    bool contains(const Point& p) const { return locator().contains(p); }
+    PolygonIndex::Place locate(const Point& p) const { return locator().locate(p); }
     // The closed domain contains the point (X/W, Y/W), W > 0, exactly: a
     // Voronoi vertex, or where a Voronoi edge leaves the bounding box
     // (polygon_exact.cpp). Allocates; for the rare exact decisions.
@@ -65,11 +65,16 @@ public:
 
     const PolygonRings& rings() const { return *rings_; }
     const PolygonIndex& index() const { return *index_; }
+    // The index that locates points: a finer one when index() is crowded
+    // (PolygonIndex::finer_cells_for_location). Locating is exact, so the
+    // answers are the same; only index() decides anything else.
+    const PolygonIndex& locator() const { return locator_ ? *locator_ : *index_; }
 
 private:
     // Owned through pointers: the index refers to the rings, and a Polygon moves.
     std::unique_ptr<PolygonRings> rings_;
     std::unique_ptr<PolygonIndex> index_;
+    std::unique_ptr<PolygonIndex> locator_;  // null: index_ locates
     std::vector<std::size_t> candidate_cells_;
     std::vector<std::uint8_t> inside_left_;  // per edge
     double area_ = 0.0;

@@ -17,6 +17,12 @@ double max_x(const Point& a, const Point& b) { return std::max(a.x, b.x); }
 
 // About sixteen cells per edge, at least 1024 and at most 2^22.
 constexpr double kCellsPerEdge = 16.0;
+// An index crowded for locating points: at least this share of its cells
+// cut, and this many edges in a row on average; a finer one has this many
+// times the cells.
+constexpr double kCrowdedCutShare = 0.5;
+constexpr double kCrowdedRowEdges = 32.0;
+constexpr double kFinerForLocation = 64.0;
 constexpr double kMinCells = 1024.0;
 constexpr double kMaxCells = 4194304.0;
 // A cell stays wider than this share of the largest coordinate, so that the
@@ -47,9 +53,25 @@ bool on_segment(const Point& p, const Point& a, const Point& b) {
            orient2d(a, b, p) == 0;
 }
 
-PolygonIndex::PolygonIndex(const PolygonRings& rings) : rings_(rings), box_(rings.bounds()) {
+double PolygonIndex::cells_for_edges(const PolygonRings& rings) {
+    return std::min(kMaxCells, std::max(kMinCells, kCellsPerEdge * static_cast<double>(rings.vertices())));
+}
+
+double PolygonIndex::finer_cells_for_location() const {
+    // Cut cells: a point there casts a short ray to the nearest clean cell,
+    // or the row's ray when none is near. Crowded rows make that costly.
+    std::size_t cut = 0;
+    for (const std::int8_t place : cell_) cut += place == kOnOutline;
+    const double cells = static_cast<double>(cell_.size());
+    const double cut_share = static_cast<double>(cut) / cells;
+    const double row_edges = static_cast<double>(by_right_.size()) / static_cast<double>(rows_);
+    if (cut_share < kCrowdedCutShare || row_edges < kCrowdedRowEdges) return 0.0;
+    const double finer = std::min(kMaxCells, kFinerForLocation * cells);
+    return finer >= 4.0 * cells ? finer : 0.0;
+}
+
+PolygonIndex::PolygonIndex(const PolygonRings& rings, double cells) : rings_(rings), box_(rings.bounds()) {
     const double w = box_.width(), h = box_.height();
-    const double cells = std::min(kMaxCells, std::max(kMinCells, kCellsPerEdge * static_cast<double>(rings.vertices())));
     const double smallest = kMinCellShare * box_.largest_magnitude();
     // Square cells where the box allows; a box far taller than wide (or
     // wider than tall) gets one column (row) and at most `cells` rows (columns).
@@ -219,6 +241,7 @@ void PolygonIndex::edges_in_rows(double y_lo, double y_hi, std::vector<std::uint
 void PolygonIndex::settle_clean_cells() {
     for (std::size_t r = 0; r < rows_; ++r) {
         Place run = kOnOutline;  // the place of the clean run the last cell belonged to
+        std::size_t settled_left = cols_;  // the last settled cell of the row, cols_ for none
         for (std::size_t c = 0; c < cols_; ++c) {
             std::int8_t& cell = cell_[r * cols_ + c];
             if (cell == kOnOutline) {
@@ -227,11 +250,15 @@ void PolygonIndex::settle_clean_cells() {
             }
             if (run == kOnOutline) {
                 // Adjacent clean cells share their place: no edge separates them.
+                // A new run is found from the last settled cell to its left,
+                // through the cut cells between, or by the row's ray.
                 const Point centre{box_.x0 + (static_cast<double>(c) + 0.5) / col_scale_,
                                    box_.y0 + (static_cast<double>(r) + 0.5) / row_scale_};
-                if (column_of(centre.x) == c && row_of(centre.y) == r) run = cast_ray(centre, r);
+                if (column_of(centre.x) == c && row_of(centre.y) == r)
+                    run = settled_left < c ? cast_toward(centre, r, c, kLeft, c - settled_left) : cast_ray(centre, r);
             }
             cell = static_cast<std::int8_t>(run);  // kOnOutline when no point of it was found
+            if (run != kOnOutline) settled_left = c;
         }
     }
 }
@@ -283,6 +310,12 @@ PolygonIndex::Place PolygonIndex::cast_short_ray(const Point& p, std::size_t row
         }
     }
     if (best < 0) return cast_ray(p, row);  // no clean cell near: the whole row
+    return cast_toward(p, row, col, best, best_steps);
+}
+
+PolygonIndex::Place PolygonIndex::cast_toward(const Point& p, std::size_t row, std::size_t col, int best,
+                                              std::size_t best_steps) const {
+    const std::ptrdiff_t dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
     constexpr std::size_t kMaxEdges = 128;
     std::uint32_t edges[kMaxEdges];
     std::size_t n = 0;

@@ -13,7 +13,13 @@
 //     their right end and once by their left end, so a ray cast to either
 //     side reads only the edges it can cross, and takes the shorter side;
 //   - each cell that no edge meets ("clean") holds the answer for all its
-//     points, found once by a ray cast from a point inside it.
+//     points, found once: from the settled clean cell to its left in the
+//     row, through the edges of the cut cells between, or by the row's ray
+//     when there is none.
+// An outline whose edges are long against their spacing (a comb's teeth)
+// cuts nearly every cell of a grid sized by its edge count; a second, finer
+// index then locates points (Polygon::locator), while this one keeps every
+// other answer the sampler reads, so the points do not depend on it.
 // The cells an edge meets are marked from its height band and its x range
 // there, each widened by a slack of 2^-20 of a cell, far more than rounding
 // can move them: a cell marked without need only costs a ray cast, one
@@ -39,8 +45,18 @@ public:
     // Where a point lies.
     enum Place : int { kOutside = -1, kOnOutline = 0, kInside = 1 };
 
-    // Keeps a reference to rings: they must outlive the index.
-    explicit PolygonIndex(const PolygonRings& rings);
+    // Keeps a reference to rings: they must outlive the index. About
+    // `cells` cells (cells_for_edges by default).
+    explicit PolygonIndex(const PolygonRings& rings) : PolygonIndex(rings, cells_for_edges(rings)) {}
+    PolygonIndex(const PolygonRings& rings, double cells);
+    // About sixteen cells per edge, at least 1024 and at most 2^22.
+    static double cells_for_edges(const PolygonRings& rings);
+    // The cells of an index that only locates points, for an outline whose
+    // edges are long against their spacing (a comb's teeth): where this one
+    // leaves nearly every cell cut and its rows crowded, a ray reads dozens
+    // of edges, and a grid 64 times finer (at most 2^22 cells) leaves clean
+    // cells between them. 0 when this index serves well enough.
+    double finer_cells_for_location() const;
 
     Place locate(const Point& p) const;
     // The closed domain: inside or on the outline.
@@ -89,6 +105,11 @@ private:
     // The same, only as far as the nearest clean cell along p's row or
     // column (p in column col): usually a few cells' edges, not the row's.
     Place cast_short_ray(const Point& p, std::size_t row, std::size_t col) const;
+    // The same toward the settled clean cell `steps` cells away in direction
+    // dir (kRight, kLeft, kUp, kDown), or by cast_ray when the cells between
+    // hold too many edges.
+    Place cast_toward(const Point& p, std::size_t row, std::size_t col, int dir, std::size_t steps) const;
+    enum Direction : int { kRight = 0, kLeft = 1, kUp = 2, kDown = 3 };
     void mark_edge_cells(std::size_t edge);
     // Calls visit(k) for each grid cell k the edge marks.
     template <class Visit>

@@ -80,9 +80,10 @@ std::vector<std::int64_t> star(int n, double inner, double outer, bool reversed,
 
 // Compares the index with the brute force at random half-integer points of
 // the box [-m, m]^2 and at the vertices and edge midpoints (about 1000 a ring).
-void check_against_brute_force(const LatticeOutline& outline, std::int64_t m, int probes) {
+// `cells`: the index's size, 0 for the default (cells_for_edges).
+void check_against_brute_force(const LatticeOutline& outline, std::int64_t m, int probes, double cells = 0.0) {
     const PolygonRings rings = outline.build();
-    const PolygonIndex index(rings);
+    const PolygonIndex index(rings, cells > 0.0 ? cells : PolygonIndex::cells_for_edges(rings));
     pds::Rng rng(17);
     int seen[3] = {0, 0, 0};
     auto compare = [&](std::int64_t x2, std::int64_t y2) {
@@ -207,20 +208,19 @@ START_TEST(outline_of_many_vertices) {
 }
 END_TEST
 
-START_TEST(clean_cells_hold_their_points_place) {
-    LatticeOutline o;
-    o.rings.push_back(star(12, 400, 1000, false));
-    o.rings.push_back(star(5, 50, 150, true));
-    const PolygonRings rings = o.build();
-    const PolygonIndex index(rings);
+// More than a third of the index's cells are clean, and every half-integer
+// point of [-m, m]^2 (a lattice of the given step) in a clean cell has the
+// cell's place; returns how many points were checked.
+std::size_t check_clean_cells(const LatticeOutline& o, const PolygonRings& rings, const PolygonIndex& index,
+                              std::int64_t m, std::int64_t step) {
     std::size_t clean = 0;
     for (std::size_t r = 0; r < index.rows(); ++r)
         for (std::size_t c = 0; c < index.columns(); ++c) clean += index.cell_place(c, r) != PolygonIndex::kOnOutline;
-    ck_assert_uint_gt(clean, index.rows() * index.columns() / 3);
-    // Every half-integer point that falls in a clean cell has the cell's place.
+    ck_assert_msg(clean > index.rows() * index.columns() / 3, "%zu clean cells of %zu x %zu", clean, index.columns(),
+                  index.rows());
     std::size_t checked = 0;
-    for (std::int64_t y2 = -2000; y2 <= 2000; y2 += 7)
-        for (std::int64_t x2 = -2000; x2 <= 2000; x2 += 7) {
+    for (std::int64_t y2 = -2 * m; y2 <= 2 * m; y2 += step)
+        for (std::int64_t x2 = -2 * m; x2 <= 2 * m; x2 += step) {
             const Point p = o.place(x2, y2);
             if (!rings.bounds().contains(p)) continue;
             const PolygonIndex::Place place = index.cell_place(index.column_of(p.x), index.row_of(p.y));
@@ -228,7 +228,50 @@ START_TEST(clean_cells_hold_their_points_place) {
             ck_assert_msg(o.brute_place(x2, y2) == place, "(%g, %g) in a clean cell of place %d", p.x, p.y, place);
             ++checked;
         }
-    ck_assert_uint_gt(checked, 20000);
+    return checked;
+}
+
+// A comb on [-m, m]^2: a base, and `teeth` teeth of the given width, their
+// gaps the rest of each period.
+std::vector<std::int64_t> comb(int teeth, std::int64_t m, std::int64_t width) {
+    const std::int64_t period = 2 * m / teeth, base = -m + m / 10;
+    std::vector<std::int64_t> r = {-m, -m, m, -m, m, base};
+    for (int i = teeth - 1; i >= 0; --i) {
+        const std::int64_t left = -m + i * period, right = left + width;
+        r.insert(r.end(), {right, base, right, m, left, m});
+        if (i > 0) r.insert(r.end(), {left, base});
+    }
+    return r;
+}
+
+START_TEST(clean_cells_hold_their_points_place) {
+    LatticeOutline o;
+    o.rings.push_back(star(12, 400, 1000, false));
+    o.rings.push_back(star(5, 50, 150, true));
+    const PolygonRings rings = o.build();
+    const PolygonIndex index(rings);
+    ck_assert_uint_gt(check_clean_cells(o, rings, index, 1000, 7), 20000);
+    // Not crowded: no finer index for locating points.
+    ck_assert(index.finer_cells_for_location() == 0.0);
+}
+END_TEST
+
+START_TEST(a_comb_is_located_by_a_finer_index) {
+    // 64 teeth, 1/64 of the width apart, each 0.3 of that: every cell of the
+    // default index holds a tooth, and a row's ray meets 128 edges.
+    LatticeOutline o;
+    o.rings.push_back(comb(64, 6400, 60));
+    const PolygonRings rings = o.build();
+    const PolygonIndex index(rings);
+    const double finer = index.finer_cells_for_location();
+    ck_assert_msg(finer >= 64.0 * static_cast<double>(index.rows() * index.columns()),
+                  "finer index of %g cells, the default has %zu x %zu", finer, index.columns(), index.rows());
+    const PolygonIndex locator(rings, finer);
+    // Its clean cells, settled from their left neighbours through the teeth.
+    ck_assert_uint_gt(check_clean_cells(o, rings, locator, 6400, 37), 20000);
+    // And points anywhere, on the teeth's edges and corners included.
+    check_against_brute_force(o, 6400, test_light() ? 2000 : 20000, finer);
+    check_against_brute_force(o, 6400, test_light() ? 500 : 2000);
 }
 END_TEST
 
@@ -286,6 +329,7 @@ Suite* polygon_suite() {
     tcase_add_test(t, far_from_the_origin_and_tiny);
     tcase_add_test(t, outline_of_many_vertices);
     tcase_add_test(t, clean_cells_hold_their_points_place);
+    tcase_add_test(t, a_comb_is_located_by_a_finer_index);
     tcase_add_test(t, grid_cells_not_outside_count_as_cell_by_cell);
     suite_add_tcase(s, t);
     return s;

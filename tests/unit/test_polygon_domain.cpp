@@ -30,6 +30,50 @@ std::vector<double> square(double x0, double y0, double side, bool clockwise) {
     return {ccw[6], ccw[7], ccw[4], ccw[5], ccw[2], ccw[3], ccw[0], ccw[1]};
 }
 
+// The bench's comb: a base 0.1 tall and `teeth` teeth 0.9 long, 0.3 of
+// their period wide.
+std::vector<double> comb(int teeth) {
+    const double step = 1.0 / teeth, width = 0.3 / teeth;
+    std::vector<double> xy{0, 0, 1, 0, 1, 0.1};
+    for (int i = teeth - 1; i >= 0; --i) {
+        const double left = i * step, right = left + width;
+        xy.insert(xy.end(), {right, 0.1, right, 1.0, left, 1.0});
+        if (i > 0) xy.insert(xy.end(), {left, 0.1});
+    }
+    return xy;
+}
+
+START_TEST(a_comb_locates_with_a_finer_index_as_with_its_own) {
+    // A triangle traced twice in the base: its edges count in the parity
+    // only, which the finer index must know too.
+    const std::vector<double> twice{0.5, 0.02, 0.6, 0.03, 0.55, 0.08, 0.5, 0.02, 0.6, 0.03, 0.55, 0.08};
+    const Polygon p = rings_of({comb(64), twice});
+    ck_assert_msg(&p.locator() != &p.index(), "no finer index for a comb of 64 teeth");
+    const pds::PolygonRings& rings = p.rings();
+    auto same = [&](const Point& q) {
+        const int got = p.locate(q), want = p.index().locate(q);
+        ck_assert_msg(got == want, "(%.17g, %.17g): located %d, the index says %d", q.x, q.y, got, want);
+    };
+    pds::Rng rng(5);
+    const int probes = test_light() ? 5000 : 50000;
+    for (int i = 0; i < probes; ++i) same(Point{-0.01 + 1.02 * rng.next_double(), -0.01 + 1.02 * rng.next_double()});
+    for (std::size_t e = 0; e < rings.vertices(); ++e) {
+        const Point a = rings.edge_start(e), b = rings.edge_end(e);
+        same(a);
+        same(Point{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)});
+        same(Point{a.x + 0.25 * (b.x - a.x), a.y + 0.25 * (b.y - a.y)});
+    }
+    ck_assert(p.contains(Point{0.55, 0.03}) && p.locate(Point{0.5, 0.02}) == pds::PolygonIndex::kInside);
+    // A pattern in it, verified.
+    pds::Sampler s(0.01, 3);
+    s.set_polygon(std::make_shared<const Polygon>(rings_of({comb(64), twice})));
+    std::size_t added = 0;
+    ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+    const pds::VerifyReport rep = s.verify();
+    ck_assert_msg(rep.maximal, "the comb: %s", rep.failure.c_str());
+}
+END_TEST
+
 START_TEST(even_odd_area_in_any_orientation) {
     for (int mask = 0; mask < 8; ++mask) {
         // A 4x4 square, a 2x2 hole in it, a 1x1 island in the hole.
@@ -280,6 +324,7 @@ Suite* polygon_domain_suite() {
     Suite* s = suite_create("polygon_domain");
     TCase* t = tcase_create("domain");
     tcase_add_test(t, even_odd_area_in_any_orientation);
+    tcase_add_test(t, a_comb_locates_with_a_finer_index_as_with_its_own);
     tcase_add_test(t, refuses_an_outline_with_nothing_inside);
     tcase_add_test(t, uniform_point_inside_and_spread_by_area);
     tcase_add_test(t, count_bound_holds_a_packing);
