@@ -22,7 +22,7 @@ constexpr double kCellsPerEdge = 16.0;
 // times the cells.
 constexpr double kCrowdedCutShare = 0.5;
 constexpr double kCrowdedRowEdges = 32.0;
-constexpr double kFinerForLocation = 64.0;
+constexpr double kFinerForLocation = 16.0;
 constexpr double kMinCells = 1024.0;
 constexpr double kMaxCells = 4194304.0;
 // A cell stays wider than this share of the largest coordinate, so that the

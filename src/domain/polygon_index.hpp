@@ -54,7 +54,7 @@ public:
     // The cells of an index that only locates points, for an outline whose
     // edges are long against their spacing (a comb's teeth): where this one
     // leaves nearly every cell cut and its rows crowded, a ray reads dozens
-    // of edges, and a grid 64 times finer (at most 2^22 cells) leaves clean
+    // of edges, and a grid 16 times finer (at most 2^22 cells) leaves clean
     // cells between them. 0 when this index serves well enough.
     double finer_cells_for_location() const;
 

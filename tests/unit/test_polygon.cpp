@@ -264,7 +264,7 @@ START_TEST(a_comb_is_located_by_a_finer_index) {
     const PolygonRings rings = o.build();
     const PolygonIndex index(rings);
     const double finer = index.finer_cells_for_location();
-    ck_assert_msg(finer >= 64.0 * static_cast<double>(index.rows() * index.columns()),
+    ck_assert_msg(finer >= 16.0 * static_cast<double>(index.rows() * index.columns()),
                   "finer index of %g cells, the default has %zu x %zu", finer, index.columns(), index.rows());
     const PolygonIndex locator(rings, finer);
     // Its clean cells, settled from their left neighbours through the teeth.
