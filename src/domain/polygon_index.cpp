@@ -17,14 +17,7 @@ double max_x(const Point& a, const Point& b) { return std::max(a.x, b.x); }
 
 // About sixteen cells per edge, at least 1024 and at most 2^22.
 constexpr double kCellsPerEdge = 16.0;
-// An index crowded for locating points: at least this share of its cells
-// cut, and this many edges in a row on average; a finer one has this many
-// times the cells.
-constexpr double kCrowdedCutShare = 0.5;
-constexpr double kCrowdedRowEdges = 32.0;
-constexpr double kFinerForLocation = 16.0;
 constexpr double kMinCells = 1024.0;
-constexpr double kMaxCells = 4194304.0;
 // A cell stays wider than this share of the largest coordinate, so that the
 // marking's slack dwarfs the rounding of an interpolation.
 constexpr double kMinCellShare = 0x1p-40;
@@ -55,19 +48,6 @@ bool on_segment(const Point& p, const Point& a, const Point& b) {
 
 double PolygonIndex::cells_for_edges(const PolygonRings& rings) {
     return std::min(kMaxCells, std::max(kMinCells, kCellsPerEdge * static_cast<double>(rings.vertices())));
-}
-
-double PolygonIndex::finer_cells_for_location() const {
-    // Cut cells: a point there casts a short ray to the nearest clean cell,
-    // or the row's ray when none is near. Crowded rows make that costly.
-    std::size_t cut = 0;
-    for (const std::int8_t place : cell_) cut += place == kOnOutline;
-    const double cells = static_cast<double>(cell_.size());
-    const double cut_share = static_cast<double>(cut) / cells;
-    const double row_edges = static_cast<double>(by_right_.size()) / static_cast<double>(rows_);
-    if (cut_share < kCrowdedCutShare || row_edges < kCrowdedRowEdges) return 0.0;
-    const double finer = std::min(kMaxCells, kFinerForLocation * cells);
-    return finer >= 4.0 * cells ? finer : 0.0;
 }
 
 PolygonIndex::PolygonIndex(const PolygonRings& rings, double cells) : rings_(rings), box_(rings.bounds()) {
@@ -261,137 +241,6 @@ void PolygonIndex::settle_clean_cells() {
             if (run != kOnOutline) settled_left = c;
         }
     }
-}
-
-PolygonIndex::Place PolygonIndex::locate(const Point& p) const {
-    if (!box_.contains(p)) return kOutside;
-    const std::size_t r = row_of(p.y), c = column_of(p.x);
-    const Place clean = cell_place(c, r);
-    return clean != kOnOutline ? clean : cast_short_ray(p, r, c);
-}
-
-namespace {
-
-// The four directions a short ray may take, as rotations that turn it to +x
-// (exact: they only swap and negate coordinates, and keep orientations).
-Point turned(const Point& p, int dir) {
-    switch (dir) {
-        case 1: return Point{-p.x, -p.y};  // left
-        case 2: return Point{p.y, -p.x};   // up
-        case 3: return Point{-p.y, p.x};   // down
-        default: return p;                 // right
-    }
-}
-
-}  // namespace
-
-PolygonIndex::Place PolygonIndex::cast_short_ray(const Point& p, std::size_t row, std::size_t col) const {
-    // Along the row or column, toward the nearest clean cell (right, left,
-    // up, down; at most kReach cells): its place, flipped by each crossing
-    // of the segment from p to a point q inside it. The edges that can
-    // cross are those of the marked cells in between, each counted once.
-    // The crossing test is the ray cast's, on the points turned so the ray
-    // runs along +x.
-    constexpr std::size_t kReach = 32;
-    const std::ptrdiff_t dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
-    int best = -1;
-    std::size_t best_steps = kReach + 1;
-    for (int d = 0; d < 4; ++d) {
-        std::ptrdiff_t c = static_cast<std::ptrdiff_t>(col), r = static_cast<std::ptrdiff_t>(row);
-        for (std::size_t steps = 1; steps < best_steps; ++steps) {
-            c += dc[d];
-            r += dr[d];
-            if (c < 0 || r < 0 || c >= static_cast<std::ptrdiff_t>(cols_) || r >= static_cast<std::ptrdiff_t>(rows_)) break;
-            if (cell_place(static_cast<std::size_t>(c), static_cast<std::size_t>(r)) != kOnOutline) {
-                best = d;
-                best_steps = steps;
-                break;
-            }
-        }
-    }
-    if (best < 0) return cast_ray(p, row);  // no clean cell near: the whole row
-    return cast_toward(p, row, col, best, best_steps);
-}
-
-PolygonIndex::Place PolygonIndex::cast_toward(const Point& p, std::size_t row, std::size_t col, int best,
-                                              std::size_t best_steps) const {
-    const std::ptrdiff_t dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
-    constexpr std::size_t kMaxEdges = 128;
-    std::uint32_t edges[kMaxEdges];
-    std::size_t n = 0;
-    std::size_t c = col, r = row;
-    for (std::size_t steps = 0; steps < best_steps; ++steps) {
-        const std::size_t cell = r * cols_ + c;
-        for (std::uint32_t at = cell_begin_[cell]; at < cell_begin_[cell + 1]; ++at) {
-            if (n == kMaxEdges) return cast_ray(p, row);  // a crowded neighbourhood: the whole row
-            edges[n++] = cell_edges_[at];
-        }
-        c = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + dc[best]);
-        r = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(r) + dr[best]);
-    }
-    std::sort(edges, edges + n);
-    n = static_cast<std::size_t>(std::unique(edges, edges + n) - edges);
-    // q: p moved along the ray to the clean cell's middle line.
-    Point q = p;
-    if (best < 2) q.x = box_.x0 + (static_cast<double>(c) + 0.5) / col_scale_;
-    else q.y = box_.y0 + (static_cast<double>(r) + 0.5) / row_scale_;
-    if (column_of(q.x) != c || row_of(q.y) != r) return cast_ray(p, row);
-    const Point tp = turned(p, best), tq = turned(q, best);
-    bool odd = cell_place(c, r) == kInside;
-    for (std::size_t i = 0; i < n; ++i) {
-        const Point a = turned(rings_.edge_start(edges[i]), best), b = turned(rings_.edge_end(edges[i]), best);
-        if ((a.y > tp.y) == (b.y > tp.y)) {
-            if (on_segment(tp, a, b) && !cancelled(edges[i])) return kOnOutline;
-            continue;
-        }
-        const Point& lo = a.y > tp.y ? b : a;
-        const Point& hi = a.y > tp.y ? a : b;
-        const int side = orient2d(lo, hi, tp);
-        if (side == 0) {
-            if (!cancelled(edges[i])) return kOnOutline;
-            continue;  // its copy is skipped alike: the parity stands
-        }
-        // The edge crosses the ray beyond p; before q unless q lies left of it.
-        if (side == 1 && orient2d(lo, hi, tq) == -1) odd = !odd;
-    }
-    return odd ? kInside : kOutside;
-}
-
-PolygonIndex::Place PolygonIndex::cast_ray(const Point& p, std::size_t row) const {
-    const std::uint32_t* right = by_right_.data() + row_begin_[row];
-    const std::uint32_t* left = by_left_.data() + row_begin_[row];
-    const std::size_t n = row_begin_[row + 1] - row_begin_[row];
-    // Edges that reach p's x or beyond, on each side (the lists are sorted).
-    const std::size_t n_right = static_cast<std::size_t>(
-        std::partition_point(right, right + n, [&](std::uint32_t e) {
-            return max_x(rings_.edge_start(e), rings_.edge_end(e)) >= p.x;
-        }) - right);
-    const std::size_t n_left = static_cast<std::size_t>(
-        std::partition_point(left, left + n, [&](std::uint32_t e) {
-            return min_x(rings_.edge_start(e), rings_.edge_end(e)) <= p.x;
-        }) - left);
-    // Either ray gives the parity; an edge through p is among both lists.
-    const bool to_right = n_right <= n_left;
-    const std::uint32_t* edges = to_right ? right : left;
-    const std::size_t count = to_right ? n_right : n_left;
-    const int crossing_side = to_right ? 1 : -1;
-    bool odd = false;
-    for (std::size_t k = 0; k < count; ++k) {
-        const Point a = rings_.edge_start(edges[k]), b = rings_.edge_end(edges[k]);
-        if ((a.y > p.y) == (b.y > p.y)) {
-            if (on_segment(p, a, b) && !cancelled(edges[k])) return kOnOutline;  // horizontal, or touching at an end
-            continue;
-        }
-        const Point& lo = a.y > p.y ? b : a;
-        const Point& hi = a.y > p.y ? a : b;
-        const int side = orient2d(lo, hi, p);
-        if (side == 0) {  // straddles p's height and passes through p
-            if (!cancelled(edges[k])) return kOnOutline;
-            continue;
-        }
-        if (side == crossing_side) odd = !odd;
-    }
-    return odd ? kInside : kOutside;
 }
 
 }  // namespace pds

@@ -49,13 +49,18 @@ public:
     // `cells` cells (cells_for_edges by default).
     explicit PolygonIndex(const PolygonRings& rings) : PolygonIndex(rings, cells_for_edges(rings)) {}
     PolygonIndex(const PolygonRings& rings, double cells);
-    // About sixteen cells per edge, at least 1024 and at most 2^22.
+    // About sixteen cells per edge, at least 1024 and at most kMaxCells.
     static double cells_for_edges(const PolygonRings& rings);
-    // The cells of an index that only locates points, for an outline whose
-    // edges are long against their spacing (a comb's teeth): where this one
-    // leaves nearly every cell cut and its rows crowded, a ray reads dozens
-    // of edges, and a grid 16 times finer (at most 2^22 cells) leaves clean
-    // cells between them. 0 when this index serves well enough.
+    static constexpr double kMaxCells = 4194304.0;  // 2^22
+    // How many edges locate() reads on average for a point uniform in the
+    // box: the lists of the cut cells its short ray passes, or half its
+    // row's when no clean cell is near (polygon_locate.cpp).
+    double expected_edges_read() const;
+    // The cells of an index that only locates points, when this one makes
+    // that costly: an outline whose edges are long against their spacing
+    // (a comb's teeth, a ring of spikes) cuts nearly every cell near them,
+    // and a short ray crosses many. 16 times the cells (at most kMaxCells)
+    // when more than 2 edges are read on average; 0 when this index serves.
     double finer_cells_for_location() const;
 
     Place locate(const Point& p) const;
@@ -105,6 +110,9 @@ private:
     // The same, only as far as the nearest clean cell along p's row or
     // column (p in column col): usually a few cells' edges, not the row's.
     Place cast_short_ray(const Point& p, std::size_t row, std::size_t col) const;
+    // The nearest clean cell along the row or the column of (col, row),
+    // within a short ray's reach: its direction and distance in cells.
+    bool nearest_clean(std::size_t row, std::size_t col, int& dir, std::size_t& steps) const;
     // The same toward the settled clean cell `steps` cells away in direction
     // dir (kRight, kLeft, kUp, kDown), or by cast_ray when the cells between
     // hold too many edges.

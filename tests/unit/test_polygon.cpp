@@ -251,8 +251,8 @@ START_TEST(clean_cells_hold_their_points_place) {
     const PolygonRings rings = o.build();
     const PolygonIndex index(rings);
     ck_assert_uint_gt(check_clean_cells(o, rings, index, 1000, 7), 20000);
-    // Not crowded: no finer index for locating points.
-    ck_assert(index.finer_cells_for_location() == 0.0);
+    // Cheap to locate in: no finer index.
+    ck_assert_msg(index.finer_cells_for_location() == 0.0, "edges read %g", index.expected_edges_read());
 }
 END_TEST
 
@@ -267,11 +267,31 @@ START_TEST(a_comb_is_located_by_a_finer_index) {
     ck_assert_msg(finer >= 16.0 * static_cast<double>(index.rows() * index.columns()),
                   "finer index of %g cells, the default has %zu x %zu", finer, index.columns(), index.rows());
     const PolygonIndex locator(rings, finer);
+    // Locating reads far fewer edges there.
+    ck_assert_msg(locator.expected_edges_read() < 0.25 * index.expected_edges_read(),
+                  "edges read: %g with the finer index, %g without", locator.expected_edges_read(),
+                  index.expected_edges_read());
     // Its clean cells, settled from their left neighbours through the teeth.
     ck_assert_uint_gt(check_clean_cells(o, rings, locator, 6400, 37), 20000);
     // And points anywhere, on the teeth's edges and corners included.
     check_against_brute_force(o, 6400, test_light() ? 2000 : 20000, finer);
     check_against_brute_force(o, 6400, test_light() ? 500 : 2000);
+}
+END_TEST
+
+START_TEST(a_ring_of_spikes_is_located_by_a_finer_index) {
+    // 500 spikes between radii 0.84 and 1: near the rim every cell of the
+    // default index is cut by a few of them.
+    LatticeOutline o;
+    o.rings.push_back(star(500, 8400, 10000, false));
+    o.rings.push_back(star(7, 600, 2000, true));
+    const PolygonRings rings = o.build();
+    const PolygonIndex index(rings);
+    const double finer = index.finer_cells_for_location();
+    ck_assert_msg(finer > 0.0, "no finer index; edges read %g", index.expected_edges_read());
+    const PolygonIndex locator(rings, finer);
+    ck_assert_uint_gt(check_clean_cells(o, rings, locator, 10000, 53), 20000);
+    check_against_brute_force(o, 10000, test_light() ? 2000 : 20000, finer);
 }
 END_TEST
 
@@ -330,6 +350,7 @@ Suite* polygon_suite() {
     tcase_add_test(t, outline_of_many_vertices);
     tcase_add_test(t, clean_cells_hold_their_points_place);
     tcase_add_test(t, a_comb_is_located_by_a_finer_index);
+    tcase_add_test(t, a_ring_of_spikes_is_located_by_a_finer_index);
     tcase_add_test(t, grid_cells_not_outside_count_as_cell_by_cell);
     suite_add_tcase(s, t);
     return s;
