@@ -29,18 +29,6 @@ constexpr double kSlackFloor = 0x1p-44;
 
 }  // namespace
 
-std::size_t PolygonIndex::column_of(double x) const {
-    const double c = std::floor((x - box_.x0) * col_scale_);
-    if (!(c > 0.0)) return 0;
-    return c >= static_cast<double>(cols_) ? cols_ - 1 : static_cast<std::size_t>(c);
-}
-
-std::size_t PolygonIndex::row_of(double y) const {
-    const double r = std::floor((y - box_.y0) * row_scale_);
-    if (!(r > 0.0)) return 0;
-    return r >= static_cast<double>(rows_) ? rows_ - 1 : static_cast<std::size_t>(r);
-}
-
 bool on_segment(const Point& p, const Point& a, const Point& b) {
     return p.x >= min_x(a, b) && p.x <= max_x(a, b) && p.y >= std::min(a.y, b.y) && p.y <= std::max(a.y, b.y) &&
            orient2d(a, b, p) == 0;

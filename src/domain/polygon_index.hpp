@@ -28,6 +28,7 @@
 #ifndef PDS_POLYGON_INDEX_HPP
 #define PDS_POLYGON_INDEX_HPP
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -70,8 +71,16 @@ public:
     // The grid (tests, and the dart grids that skip clean outside cells).
     std::size_t columns() const { return cols_; }
     std::size_t rows() const { return rows_; }
-    std::size_t column_of(double x) const;
-    std::size_t row_of(double y) const;
+    std::size_t column_of(double x) const {
+        const double c = std::floor((x - box_.x0) * col_scale_);
+        if (!(c > 0.0)) return 0;
+        return c >= static_cast<double>(cols_) ? cols_ - 1 : static_cast<std::size_t>(c);
+    }
+    std::size_t row_of(double y) const {
+        const double r = std::floor((y - box_.y0) * row_scale_);
+        if (!(r > 0.0)) return 0;
+        return r >= static_cast<double>(rows_) ? rows_ - 1 : static_cast<std::size_t>(r);
+    }
     // Whether every grid cell box b overlaps is clean with place `place`.
     bool all_cells(const Box& b, Place place) const;
     // The same for the cells in columns c0..c1 and rows r0..r1 (inclusive).
