@@ -63,6 +63,17 @@ run countdom --count 500 --domain -2 1 3 2.5 --seed 9
 expect "--count 500 --domain -2 1 3 2.5: exit 0 and exactly 500 lines (got $rc)" \
     eval '[ "$rc" -eq 0 ] && [ "$(lines "$tmp/countdom.out")" -eq 500 ]'
 expect "--count 500 --domain: all points inside" inside "$tmp/countdom.out" -2 1 3 2.5
+# Sides near DBL_MAX: the start radius would overflow; it is capped at the
+# largest double, so a small count ends (an infinite radius lowered by 1%
+# stays infinite) and the reported radius is finite. timeout: a hang fails.
+timeout 120 "$cli" --count 3 --domain -1.7976931348623157e308 -1.7976931348623157e308 \
+    1.7976931348623157e308 1.7976931348623157e308 --stats > "$tmp/counthuge.out" 2> "$tmp/counthuge.err"
+rc=$?
+hr=$(stats_radius "$tmp/counthuge.err")
+expect "--count 3 on [-DBL_MAX, DBL_MAX]^2: exit 0 and exactly 3 lines (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && [ "$(lines "$tmp/counthuge.out")" -eq 3 ]'
+expect "--count 3 on [-DBL_MAX, DBL_MAX]^2: a finite radius reported ('$hr')" \
+    awk -v r="$hr" 'BEGIN { exit !(r != "" && r + 0 > 0 && r + 0 <= 1.7976931348623157e308) }'
 
 # ---- --periodic: a flat torus ---------------------------------------------------------
 # Every pair at least R apart also across the wrap, the points in the half-open
