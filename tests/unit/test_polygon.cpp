@@ -279,6 +279,50 @@ START_TEST(a_comb_is_located_by_a_finer_index) {
 }
 END_TEST
 
+// A zig-zag band on [-m, m]^2 with `teeth` random teeth: its lower side
+// runs left to right between two heights, its upper side back at a random
+// thickness above; then turned by quarter turns (exact on the lattice).
+std::vector<std::int64_t> zigzag(pds::Rng& rng, int teeth, std::int64_t m, int quarter_turns) {
+    const auto draw = [&](std::int64_t lo, std::int64_t hi) {
+        return lo + static_cast<std::int64_t>(rng.next_double() * static_cast<double>(hi - lo));
+    };
+    const std::int64_t low = draw(-m, -m / 2), high = draw(m / 2, m - m / 8), thick = draw(m / 200 + 1, m / 20);
+    std::vector<std::int64_t> xs;
+    for (int i = 0; i <= 2 * teeth; ++i) xs.push_back(-m + (2 * m * i) / (2 * teeth));
+    std::vector<std::int64_t> r;
+    for (std::size_t i = 0; i < xs.size(); ++i) r.insert(r.end(), {xs[i], i % 2 ? high : low});
+    for (std::size_t i = xs.size(); i-- > 0;) r.insert(r.end(), {xs[i], (i % 2 ? high : low) + thick});
+    for (int t = 0; t < quarter_turns; ++t)
+        for (std::size_t k = 0; k < r.size(); k += 2) {
+            const std::int64_t x = r[k], y = r[k + 1];
+            r[k] = -y;
+            r[k + 1] = x;
+        }
+    return r;
+}
+
+START_TEST(random_zigzags_are_located_alike_by_both_indexes) {
+    // Thin bands of many teeth, some with a hole or a ring traced twice
+    // nowhere near, in four orientations: each must be crowded enough for
+    // a finer index, and both indexes must agree with the brute force.
+    pds::Rng rng(41);
+    const int shapes = test_light() ? 4 : 16;
+    for (int k = 0; k < shapes; ++k) {
+        LatticeOutline o;
+        o.rings.push_back(zigzag(rng, 20 + static_cast<int>(rng.next_double() * 100.0), 5000, k % 4));
+        if (k % 3 == 1) o.rings.push_back(star(6, 40, 90, k % 2 == 0, 0, 4000));  // an island
+        const PolygonRings rings = o.build();
+        const PolygonIndex index(rings);
+        const double finer = index.finer_cells_for_location();
+        ck_assert_msg(finer > 0.0, "shape %d: no finer index; edges read %g", k, index.expected_edges_read());
+        const PolygonIndex locator(rings, finer);
+        ck_assert_msg(locator.expected_edges_read() < index.expected_edges_read(), "shape %d: edges read %g, %g", k,
+                      locator.expected_edges_read(), index.expected_edges_read());
+        check_against_brute_force(o, 5000, test_light() ? 300 : 3000, finer);
+    }
+}
+END_TEST
+
 START_TEST(a_ring_of_spikes_is_located_by_a_finer_index) {
     // 500 spikes between radii 0.84 and 1: near the rim every cell of the
     // default index is cut by a few of them.
@@ -351,6 +395,7 @@ Suite* polygon_suite() {
     tcase_add_test(t, clean_cells_hold_their_points_place);
     tcase_add_test(t, a_comb_is_located_by_a_finer_index);
     tcase_add_test(t, a_ring_of_spikes_is_located_by_a_finer_index);
+    tcase_add_test(t, random_zigzags_are_located_alike_by_both_indexes);
     tcase_add_test(t, grid_cells_not_outside_count_as_cell_by_cell);
     suite_add_tcase(s, t);
     return s;
