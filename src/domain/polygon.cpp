@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 #include "core/predicates.hpp"
@@ -35,7 +36,9 @@ int edge_side(const PolygonRings& rings, const PolygonIndex& index, std::size_t 
     const double scale =
         std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y), length});
     const double largest = std::max(0x1p-20 * length, 0x1p-48 * scale);
-    for (double offset = 0x1p-48 * scale;; offset *= 16.0) {
+    // From the least positive double at least: 2^-48 of a subnormal scale
+    // rounds to 0, which growing by 16 would never leave.
+    for (double offset = std::max(0x1p-48 * scale, std::numeric_limits<double>::denorm_min());; offset *= 16.0) {
         const bool last = offset >= largest;
         if (last) offset = largest;
         const double f = offset / length;

@@ -194,6 +194,24 @@ START_TEST(mask_from_near_the_least_normal_to_3e296)
 }
 END_TEST
 
+/* An edge whose ends are 0 and a subnormal number (1e-310 beside 1): its
+ * side is probed at offsets growing from 2^-48 of its coordinates, which
+ * rounds to 0 there, and the probing never ended. Now pds_set_polygon
+ * returns, and the first point is refused as the rectangle's is (a nonzero
+ * coordinate below 2^-900 times the largest: PDS_ERANGE). */
+START_TEST(polygon_with_an_edge_of_subnormal_length)
+{
+    const double xy[] = {0.0, 0.0, 0.0, 1e-310, 1.0, 1.0, 1.0, 0.0};
+    const size_t ends[1] = {4};
+    pds_sampler *s = sampler_new(0.1, 1);
+
+    ck_assert_msg(pds_set_polygon(s, xy, ends, 1) == 0, "%s", pds_errmsg(s));
+    ck_assert_int_eq(pds_run(s, 0, NULL), PDS_ERANGE);
+    ck_assert_uint_eq(pds_count(s), 0);
+    pds_destroy(s);
+}
+END_TEST
+
 /* Pixels 2^-38 of their coordinates wide and a million times taller (a
  * mask over a thin strip at 1e15, R some 8000 pixels wide): every outline
  * edge keeps its side, and the run ends maximal. The sides used to be
@@ -324,6 +342,7 @@ Suite *domain_raster_suite(void)
     tcase_add_test(tc, mask_at_any_power_of_two);
     tcase_add_test(tc, mask_from_a_quarter_to_the_largest_double);
     tcase_add_test(tc, mask_from_near_the_least_normal_to_3e296);
+    tcase_add_test(tc, polygon_with_an_edge_of_subnormal_length);
     tcase_add_test(tc, mask_of_pixels_far_taller_than_wide);
     tcase_add_test(tc, shapes_of_a_few_ulps_judged_as_their_rectangles);
     tc = new_tcase(s, "radius map");
