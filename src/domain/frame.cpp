@@ -72,8 +72,10 @@ void Frame::set_domain(const Box& user_domain) {
     // A polygon's vertices: scaled exactly unless one would underflow, or
     // too small to scale (precision_limit() refuses both).
     const double m = max_magnitude(user_domain);
+    // At scale 2^0 the user's polygon is the scaled one: shared, not built again.
     if (user_polygon_ && m >= kMinMagnitude && smallest_vertex_ >= m * kMinMagnitude)
-        polygon_ = std::make_shared<const Polygon>(user_polygon_->scaled(scale_exp_ + user_exp_));
+        polygon_ = scale_exp_ + user_exp_ == 0 ? user_polygon_
+                                                : std::make_shared<const Polygon>(user_polygon_->scaled(scale_exp_ + user_exp_));
     set_radius(user_radius_);
 }
 
