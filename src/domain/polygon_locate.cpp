@@ -39,6 +39,12 @@ Point turned(const Point& p, int dir) {
     }
 }
 
+// Moves cell (c, r) one step in direction dir.
+void step(std::size_t& c, std::size_t& r, int dir) {
+    c = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + kStepColumn[dir]);
+    r = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(r) + kStepRow[dir]);
+}
+
 }  // namespace
 
 PolygonIndex::Place PolygonIndex::locate(const Point& p) const {
@@ -82,11 +88,9 @@ double PolygonIndex::expected_edges_read() const {
                 continue;
             }
             std::size_t cc = c, rr = r;
-            for (std::size_t k = 0; k < steps; ++k) {
+            for (std::size_t k = 0; k < steps; ++k, step(cc, rr, dir)) {
                 const std::size_t cell = rr * cols_ + cc;
                 total += static_cast<double>(cell_begin_[cell + 1] - cell_begin_[cell]);
-                cc = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cc) + kStepColumn[dir]);
-                rr = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(rr) + kStepRow[dir]);
             }
         }
     return total / static_cast<double>(rows_ * cols_);
@@ -112,36 +116,32 @@ PolygonIndex::Place PolygonIndex::cast_short_ray(const Point& p, std::size_t row
     return cast_toward(p, row, col, dir, steps);
 }
 
-PolygonIndex::Place PolygonIndex::cast_toward(const Point& p, std::size_t row, std::size_t col, int best,
-                                              std::size_t best_steps) const {
-    const std::ptrdiff_t* dc = kStepColumn;
-    const std::ptrdiff_t* dr = kStepRow;
+PolygonIndex::Place PolygonIndex::cast_toward(const Point& p, std::size_t row, std::size_t col, int dir,
+                                              std::size_t steps) const {
     constexpr std::size_t kMaxEdges = 128;
     std::uint32_t edges[kMaxEdges];
     std::size_t n = 0;
     std::size_t c = col, r = row;
-    for (std::size_t steps = 0; steps < best_steps; ++steps) {
+    for (std::size_t k = 0; k < steps; ++k, step(c, r, dir)) {
         const std::size_t cell = r * cols_ + c;
         for (std::uint32_t at = cell_begin_[cell]; at < cell_begin_[cell + 1]; ++at) {
             if (n == kMaxEdges) return cast_ray(p, row);  // a crowded neighbourhood: the whole row
             edges[n++] = cell_edges_[at];
         }
-        c = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + dc[best]);
-        r = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(r) + dr[best]);
     }
     std::sort(edges, edges + n);
     n = static_cast<std::size_t>(std::unique(edges, edges + n) - edges);
     // q: p moved along the ray to the clean cell's middle line.
     Point q = p;
-    if (best < 2)
+    if (dir == kRight || dir == kLeft)
         q.x = box_.x0 + (static_cast<double>(c) + 0.5) / col_scale_;
     else
         q.y = box_.y0 + (static_cast<double>(r) + 0.5) / row_scale_;
     if (column_of(q.x) != c || row_of(q.y) != r) return cast_ray(p, row);
-    const Point tp = turned(p, best), tq = turned(q, best);
+    const Point tp = turned(p, dir), tq = turned(q, dir);
     bool odd = cell_place(c, r) == kInside;
     for (std::size_t i = 0; i < n; ++i) {
-        const Point a = turned(rings_.edge_start(edges[i]), best), b = turned(rings_.edge_end(edges[i]), best);
+        const Point a = turned(rings_.edge_start(edges[i]), dir), b = turned(rings_.edge_end(edges[i]), dir);
         if ((a.y > tp.y) == (b.y > tp.y)) {
             if (on_segment(tp, a, b) && !cancelled(edges[i])) return kOnOutline;
             continue;

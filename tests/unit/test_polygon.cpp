@@ -256,27 +256,38 @@ START_TEST(clean_cells_hold_their_points_place) {
 }
 END_TEST
 
+// An outline crowded enough that its default index gets a finer one for
+// locating, with more than 0 and at least `at_least` times its cells.
+struct CrowdedOutline {
+    PolygonRings rings;
+    PolygonIndex index;
+    double finer;
+    PolygonIndex locator;
+
+    CrowdedOutline(const LatticeOutline& o, double at_least, const char* what)
+        : rings(o.build()), index(rings), finer(index.finer_cells_for_location()), locator(rings, finer) {
+        const double cells = static_cast<double>(index.rows() * index.columns());
+        ck_assert_msg(finer > 0.0 && finer >= at_least * cells,
+                      "%s: finer index of %g cells, the default has %zu x %zu; edges read %g", what, finer,
+                      index.columns(), index.rows(), index.expected_edges_read());
+    }
+};
+
 START_TEST(a_comb_is_located_by_a_finer_index) {
     // 64 teeth, 1/64 of the width apart, each 0.3 of that: every cell of the
     // default index holds a tooth, and a row's ray meets 128 edges.
     LatticeOutline o;
     o.rings.push_back(comb(64, 6400, 60));
-    const PolygonRings rings = o.build();
-    const PolygonIndex index(rings);
-    const double finer = index.finer_cells_for_location();
-    ck_assert_msg(finer >= 16.0 * static_cast<double>(index.rows() * index.columns()),
-                  "finer index of %g cells, the default has %zu x %zu", finer, index.columns(), index.rows());
-    const PolygonIndex locator(rings, finer);
+    const CrowdedOutline c(o, 16.0, "comb");
     // Locating reads far fewer edges there.
-    ck_assert_msg(locator.expected_edges_read() < 0.25 * index.expected_edges_read(),
-                  "edges read: %g with the finer index, %g without", locator.expected_edges_read(),
-                  index.expected_edges_read());
+    ck_assert_msg(c.locator.expected_edges_read() < 0.25 * c.index.expected_edges_read(),
+                  "edges read: %g with the finer index, %g without", c.locator.expected_edges_read(),
+                  c.index.expected_edges_read());
     // Its clean cells, settled from their left neighbours through the teeth.
-    ck_assert_uint_gt(check_clean_cells(o, rings, locator, 6400,
-                                        test_light() ? 149 : 37),
+    ck_assert_uint_gt(check_clean_cells(o, c.rings, c.locator, 6400, test_light() ? 149 : 37),
                       test_light() ? 1000 : 20000);
     // And points anywhere, on the teeth's edges and corners included.
-    check_against_brute_force(o, 6400, test_light() ? 2000 : 20000, finer);
+    check_against_brute_force(o, 6400, test_light() ? 2000 : 20000, c.finer);
     check_against_brute_force(o, 6400, test_light() ? 500 : 2000);
 }
 END_TEST
@@ -313,14 +324,11 @@ START_TEST(random_zigzags_are_located_alike_by_both_indexes) {
         LatticeOutline o;
         o.rings.push_back(zigzag(rng, 20 + static_cast<int>(rng.next_double() * 100.0), 5000, k % 4));
         if (k % 3 == 1) o.rings.push_back(star(6, 40, 90, k % 2 == 0, 0, 4000));  // an island
-        const PolygonRings rings = o.build();
-        const PolygonIndex index(rings);
-        const double finer = index.finer_cells_for_location();
-        ck_assert_msg(finer > 0.0, "shape %d: no finer index; edges read %g", k, index.expected_edges_read());
-        const PolygonIndex locator(rings, finer);
-        ck_assert_msg(locator.expected_edges_read() < index.expected_edges_read(), "shape %d: edges read %g, %g", k,
-                      locator.expected_edges_read(), index.expected_edges_read());
-        check_against_brute_force(o, 5000, 3000, finer);  // a thin band: enough probes to land inside
+        const std::string what = "zig-zag " + std::to_string(k);
+        const CrowdedOutline c(o, 0.0, what.c_str());
+        ck_assert_msg(c.locator.expected_edges_read() < c.index.expected_edges_read(), "%s: edges read %g, %g",
+                      what.c_str(), c.locator.expected_edges_read(), c.index.expected_edges_read());
+        check_against_brute_force(o, 5000, 3000, c.finer);  // a thin band: enough probes to land inside
     }
 }
 END_TEST
@@ -331,15 +339,10 @@ START_TEST(a_ring_of_spikes_is_located_by_a_finer_index) {
     LatticeOutline o;
     o.rings.push_back(star(500, 8400, 10000, false));
     o.rings.push_back(star(7, 600, 2000, true));
-    const PolygonRings rings = o.build();
-    const PolygonIndex index(rings);
-    const double finer = index.finer_cells_for_location();
-    ck_assert_msg(finer > 0.0, "no finer index; edges read %g", index.expected_edges_read());
-    const PolygonIndex locator(rings, finer);
-    ck_assert_uint_gt(check_clean_cells(o, rings, locator, 10000,
-                                        test_light() ? 211 : 53),
+    const CrowdedOutline c(o, 0.0, "spikes");
+    ck_assert_uint_gt(check_clean_cells(o, c.rings, c.locator, 10000, test_light() ? 211 : 53),
                       test_light() ? 1000 : 20000);
-    check_against_brute_force(o, 10000, test_light() ? 2000 : 20000, finer);
+    check_against_brute_force(o, 10000, test_light() ? 2000 : 20000, c.finer);
 }
 END_TEST
 
