@@ -123,15 +123,28 @@ static int by_key(const void *a, const void *b)
     return (ka > kb) - (ka < kb);
 }
 
+/* The exponent of the domain's largest |coordinate| (0 for none finite and nonzero). */
+static int domain_exponent(const double d[4])
+{
+    double m = 0.0;
+    int k;
+    for (k = 0; k < 4; k++)
+        if (isfinite(d[k]) && fabs(d[k]) > m) m = fabs(d[k]);
+    return m > 0.0 ? ilogb(m) : 0;
+}
+
 void fz_check_pattern(const fz_state *st)
 {
     const size_t n = st->seen;
-    const double r = st->radius;
+    /* In units of 2^ilogb(largest |coordinate|), exactly: there differences
+     * and periods near 2 DBL_MAX do not overflow (inf - inf was NaN). */
+    const int ex = domain_exponent(st->dom);
+    const double r = ldexp(st->radius, -ex);
     /* Sweep along the long side: few points lie in a window R wide across it. */
-    const int ax = (st->dom[2] - st->dom[0]) >= (st->dom[3] - st->dom[1]) ? 0 : 1;
-    const double lo = st->dom[ax];
-    const double p_along = st->periodic ? st->per[ax] : 0.0;
-    const double p_across = st->periodic ? st->per[1 - ax] : 0.0;
+    const int ax = (st->dom[2] * 0.5 - st->dom[0] * 0.5) >= (st->dom[3] * 0.5 - st->dom[1] * 0.5) ? 0 : 1;
+    const double lo = ldexp(st->dom[ax], -ex);
+    const double p_along = st->periodic ? st->per_scaled[ax] : 0.0;
+    const double p_across = st->periodic ? st->per_scaled[1 - ax] : 0.0;
     swept *p;
     size_t i, j, m = n;
 
@@ -141,8 +154,8 @@ void fz_check_pattern(const fz_state *st)
     p = malloc(2 * n * sizeof *p);
     FZ_CHECK(p != NULL, "harness out of memory (%zu points)", n);
     for (i = 0; i < n; i++) {
-        const double x = st->pts[2 * i], y = st->pts[2 * i + 1];
-        FZ_CHECK(fz_inside(st, x, y), "point %zu outside the domain", i);
+        const double x = ldexp(st->pts[2 * i], -ex), y = ldexp(st->pts[2 * i + 1], -ex);
+        FZ_CHECK(fz_inside(st, st->pts[2 * i], st->pts[2 * i + 1]), "point %zu outside the domain", i);
         p[i].key = ax == 0 ? x : y;
         p[i].across = ax == 0 ? y : x;
         p[i].id = i;
@@ -164,7 +177,7 @@ void fz_check_pattern(const fz_state *st)
             /* A field: the earlier point's disk (r bounds every radius). */
             {
                 const size_t e = p[i].id < p[j].id ? p[i].id : p[j].id;
-                const double re = fz_radius_of(st, e);
+                const double re = ldexp(fz_radius_of(st, e), -ex);
                 double ue = u, ve = v;
                 if (re != r) {
                     ue = (p[j].key - p[i].key) / re;
@@ -175,7 +188,7 @@ void fz_check_pattern(const fz_state *st)
                          "%zu; R = %.17g, %zu points)", p[i].id, st->pts[2 * p[i].id],
                          st->pts[2 * p[i].id + 1], p[j].id, st->pts[2 * p[j].id],
                          st->pts[2 * p[j].id + 1], sqrt(ue * ue + ve * ve),
-                         st->periodic ? " on the torus" : "", re, e, r, n);
+                         st->periodic ? " on the torus" : "", fz_radius_of(st, e), e, st->radius, n);
             }
         }
     }
