@@ -3,11 +3,9 @@
 // argument checked, one exception guard, a message naming what is wrong.
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "capi_handle.hpp"
-#include "domain/polygon.hpp"
 
 using namespace pds_capi;  // NOLINT: the shared helpers of every entry point
 
@@ -28,15 +26,6 @@ int refuse_periodic(pds_sampler* s, const char* what) {
     return 0;
 }
 
-// The power of two a polygon's coordinates are read at (Polygon's
-// reading_exponent), once its ring ends are known to be readable.
-int polygon_exponent(const double* xy, const size_t* ring_ends, size_t nrings) {
-    for (size_t k = 1; k < nrings; ++k)
-        if (ring_ends[k] < ring_ends[k - 1]) return 0;  // refused as read (polygon_rings.cpp)
-    if (ring_ends[nrings - 1] > pds::PolygonRings::kMaxVertices) return 0;
-    return pds::reading_exponent(xy, 2 * ring_ends[nrings - 1]);
-}
-
 }  // namespace
 
 extern "C" {
@@ -54,14 +43,7 @@ PDS_API int pds_set_polygon(pds_sampler* s, const double* xy, const size_t* ring
         return fail(s, PDS_EINVAL, "pds_set_polygon: %s is NULL with %zu rings", xy ? "ring_ends" : "xy", nrings);
     if (const int rc = refuse_periodic(s, "pds_set_polygon")) return rc;
     return guarded(s, "pds_set_polygon", [&] {
-        const int e = polygon_exponent(xy, ring_ends, nrings);
-        if (e == 0) {
-            s->core->set_polygon(std::make_shared<const pds::Polygon>(xy, ring_ends, nrings));
-        } else {
-            std::vector<double> scaled(xy, xy + 2 * ring_ends[nrings - 1]);
-            for (double& c : scaled) c = std::ldexp(c, -e);
-            s->core->set_polygon(std::make_shared<const pds::Polygon>(scaled.data(), ring_ends, nrings), e);
-        }
+        s->core->set_polygon(xy, ring_ends, nrings);
         return 0;
     });
 }

@@ -93,6 +93,19 @@ void Frame::set_polygon(std::shared_ptr<const Polygon> user_polygon, int user_ex
                    std::ldexp(b.y1, user_exp_)});
 }
 
+int Frame::polygon_reading_exponent(const double* c, std::size_t n) {
+    double hi = 0.0, lo = HUGE_VAL;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double a = std::fabs(c[i]);
+        if (!std::isfinite(a) || a == 0.0) continue;
+        hi = std::max(hi, a);
+        lo = std::min(lo, a);
+    }
+    // set_domain's scale, and its test for building the internal polygon.
+    if (hi >= kMinMagnitude && lo >= hi * kMinMagnitude) return std::ilogb(hi);
+    return reading_exponent(c, n);
+}
+
 void Frame::set_periodic(bool periodic) {
     if (periodic) torus_.emplace();
     else torus_.reset();

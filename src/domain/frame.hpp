@@ -90,6 +90,9 @@ public:
     // A polygonal domain (internal frame), or nullptr: the rectangle.
     const Polygon* polygon() const { return polygon_.get(); }
     const std::shared_ptr<const Polygon>& shared_polygon() const { return polygon_; }
+    // Whether that polygon is the one set_polygon was given (read at the
+    // internal scale), not a scaled copy beside it.
+    bool shares_polygon() const { return polygon_ != nullptr && polygon_ == user_polygon_; }
     // The domain's area and perimeter (internal frame).
     double area() const { return polygon_ ? polygon_->area() : domain_.area(); }
     double perimeter() const { return polygon_ ? polygon_->perimeter() : domain_.perimeter(); }
@@ -102,6 +105,13 @@ public:
     // becomes user_domain(). (A polygon whose coordinates would overflow or
     // underflow the predicates comes scaled: capi_domains.cpp.)
     void set_polygon(std::shared_ptr<const Polygon> user_polygon, int user_exp = 0);
+    // The power of two e at which a polygon with these n coordinates (x, y,
+    // ...) is best read (as coordinates / 2^e): the internal frame's, when
+    // they all scale to it exactly, so that set_polygon takes the polygon as
+    // built (one build, one copy in memory); else reading_exponent's, and
+    // precision_limit() refuses such coordinates. Throws DomainError as
+    // reading_exponent does.
+    static int polygon_reading_exponent(const double* c, std::size_t n);
     void set_radius(double user_radius);
     void set_periodic(bool periodic);
     // Asked for, whether or not the domain allows it (precision_limit()).

@@ -59,6 +59,11 @@ public:
     // A polygonal domain: polygon times 2^exponent in user units (nullptr:
     // back to the rectangle).
     void set_polygon(std::shared_ptr<const Polygon> polygon, int exponent = 0);
+    // The same from the user's rings (Polygon's constructor), read at the
+    // internal frame's scale when they scale to it exactly, so the frame
+    // keeps the one polygon built (Frame::polygon_reading_exponent).
+    // Throws DomainError as the constructor does.
+    void set_polygon(const double* xy, const std::size_t* ring_ends, std::size_t rings);
     // A w x h mask spread over the rectangle, row 0 along y0 (mask_outline.hpp);
     // w or h 0: back to the rectangle. Throws DomainError when no pixel is inside.
     void set_mask(std::size_t w, std::size_t h, const std::uint8_t* inside);

@@ -18,7 +18,9 @@ namespace pds {
 namespace {
 
 // A mask's outline over box, and the power of two its coordinates are read
-// at (reading_exponent): pixel lines scale exactly with the box.
+// at: the box's reading_exponent, then the internal frame's when the
+// outline scales to it exactly (Frame::polygon_reading_exponent). Pixel
+// lines scale exactly with the box.
 struct MaskPolygon {
     std::shared_ptr<const Polygon> polygon;
     int exponent;
@@ -28,9 +30,13 @@ MaskPolygon mask_polygon(std::size_t w, std::size_t h, const std::uint8_t* insid
     const double corners[4] = {box.x0, box.y0, box.x1, box.y1};
     const int k = reading_exponent(corners, 4);
     const Box read{std::ldexp(box.x0, -k), std::ldexp(box.y0, -k), std::ldexp(box.x1, -k), std::ldexp(box.y1, -k)};
-    const Outline o = mask_outline(w, h, inside, read);
+    Outline o = mask_outline(w, h, inside, read);
+    const int to_frame = Frame::polygon_reading_exponent(o.xy.data(), o.xy.size());
+    if (to_frame != 0)
+        for (double& c : o.xy) c = std::ldexp(c, -to_frame);
     try {
-        return MaskPolygon{std::make_shared<const Polygon>(o.xy.data(), o.ring_ends.data(), o.ring_ends.size()), k};
+        return MaskPolygon{std::make_shared<const Polygon>(o.xy.data(), o.ring_ends.data(), o.ring_ends.size()),
+                           k + to_frame};
     } catch (const DomainError& e) {
         // The pixel lines rounded together: the rectangle is too small for
         // the raster at its coordinates.
@@ -65,6 +71,22 @@ void Sampler::set_polygon(std::shared_ptr<const Polygon> polygon, int exponent) 
     mask_.clear();
     mask_w_ = mask_h_ = 0;
     use_shape(std::move(polygon), exponent);
+}
+
+void Sampler::set_polygon(const double* xy, const std::size_t* ring_ends, std::size_t rings) {
+    // The coordinates' count is known once the ring ends are readable; else
+    // the constructor says what is wrong with them.
+    bool readable =
+        rings > 0 && xy != nullptr && ring_ends != nullptr && ring_ends[rings - 1] <= PolygonRings::kMaxVertices;
+    for (std::size_t k = 1; readable && k < rings; ++k) readable = ring_ends[k] >= ring_ends[k - 1];
+    const int e = readable ? Frame::polygon_reading_exponent(xy, 2 * ring_ends[rings - 1]) : 0;
+    if (e == 0) {
+        set_polygon(std::make_shared<const Polygon>(xy, ring_ends, rings));
+        return;
+    }
+    std::vector<double> read(xy, xy + 2 * ring_ends[rings - 1]);
+    for (double& c : read) c = std::ldexp(c, -e);
+    set_polygon(std::make_shared<const Polygon>(read.data(), ring_ends, rings), e);
 }
 
 void Sampler::set_mask(std::size_t w, std::size_t h, const std::uint8_t* inside) {

@@ -4,7 +4,9 @@
 // zero at the end, refine, and determinism.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <memory>
 #include <random>
 #include <utility>
 #include <vector>
@@ -285,6 +287,51 @@ START_TEST(limits_judged_at_first_use) {
 }
 END_TEST
 
+// A polygon, or a mask's outline, is read at the internal frame's scale when
+// its coordinates scale there exactly: the frame keeps it as built instead
+// of a second, scaled copy, and the points are those of the copy.
+START_TEST(polygons_are_read_at_the_internal_scale) {
+    using pds::Frame;
+    const double pixels[] = {0, 0, 640, 0, 640, 480, 100, 300};
+    ck_assert_int_eq(Frame::polygon_reading_exponent(pixels, 8), 9);
+    const double unit[] = {1.5, -1.25, 1, 0.5};
+    ck_assert_int_eq(Frame::polygon_reading_exponent(unit, 4), 0);
+    const double huge[] = {1e300, -3e299, 2e299, 1e299};
+    ck_assert_int_eq(Frame::polygon_reading_exponent(huge, 4), std::ilogb(1e300));
+    // A coordinate below 2^-900 of the largest does not scale there.
+    const double spread[] = {1e300, 1e-10, 2e299, 1e299};
+    ck_assert_int_eq(Frame::polygon_reading_exponent(spread, 4), pds::reading_exponent(spread, 4));
+    ck_assert_int_ne(Frame::polygon_reading_exponent(spread, 4), std::ilogb(1e300));
+
+    const std::size_t ends[] = {4};
+    pds::Sampler read(20.0, 5);
+    read.set_polygon(pixels, ends, 1);
+    ck_assert(read.frame().shares_polygon());
+    ck_assert_double_eq(read.frame().user_domain().x1, 640.0);
+    pds::Sampler copied(20.0, 5);
+    copied.set_polygon(std::make_shared<const pds::Polygon>(pixels, ends, 1));
+    ck_assert(!copied.frame().shares_polygon());
+    bool maximal = false;
+    read.add_points(0, &maximal);
+    ck_assert(maximal);
+    copied.add_points(0, &maximal);
+    ck_assert_uint_gt(read.count(), 100);
+    const std::vector<double> a = user_points(read), b = user_points(copied);
+    ck_assert_uint_eq(a.size(), b.size());
+    ck_assert_int_eq(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+
+    // A mask's outline over pixel coordinates, then spread over another rectangle.
+    const std::uint8_t inside[] = {1, 1, 0, 0, 1, 1, 0, 1, 1, 1, 1, 1};  // 4 x 3
+    pds::Sampler mask(20.0, 6);
+    mask.set_domain(pds::Box{0, 0, 640, 480});
+    mask.set_mask(4, 3, inside);
+    ck_assert(mask.frame().shares_polygon());
+    mask.set_domain(pds::Box{-3, -1, 3, 2});
+    ck_assert(mask.frame().shares_polygon());
+    ck_assert_double_eq(mask.frame().user_domain().x0, -3.0);
+}
+END_TEST
+
 Suite* sampler_suite() {
     Suite* s = suite_create("sampler");
     TCase* t = tcase_create("patterns");
@@ -301,6 +348,9 @@ Suite* sampler_suite() {
     t = tcase_create("limits");
     tcase_add_test(t, limits);
     tcase_add_test(t, limits_judged_at_first_use);
+    suite_add_tcase(s, t);
+    t = tcase_create("polygon scale");
+    tcase_add_test(t, polygons_are_read_at_the_internal_scale);
     suite_add_tcase(s, t);
     return s;
 }
