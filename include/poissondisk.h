@@ -426,8 +426,10 @@ PDS_API size_t pds_radii(const pds_sampler *s, size_t first, size_t count, doubl
  * Rings may run either way round, repeat their first vertex at the end,
  * hold collinear runs, and touch each other at vertices. Rings that cross
  * one another or themselves (a bow tie) are taken by the even-odd rule too:
- * every point stays exact and the pattern maximal, but within a cell of a
- * crossing the law (uniform over the free region) is not guaranteed. The copy is kept:
+ * their edges are split where they cross, at the crossing point rounded to
+ * doubles, so along crossing edges the domain may differ from the exact
+ * region by slivers about an ulp of the coordinates wide; everything else
+ * holds as for rings that do not cross. The copy is kept:
  * the arrays may be freed. The domain's bounding box replaces the rectangle
  * of pds_set_domain, and a radius map is spread over that box. A polygon
  * replaces an earlier polygon or mask; nrings == 0 (xy and ring_ends may be
@@ -435,6 +437,7 @@ PDS_API size_t pds_radii(const pds_sampler *s, size_t first, size_t count, doubl
  * Returns 0, PDS_EINVAL (s NULL, xy or ring_ends NULL with nrings > 0, a
  * ring with fewer than 3 distinct vertices or all on one line, a
  * non-finite coordinate, decreasing ends, an outline that encloses nothing,
+ * rings that cross one another more than 4 times per vertex and 65536,
  * coordinates beyond 2^500 beside a nonzero one below about 2^-1522 of the
  * largest, which no one scale reads exactly,
  * periodic set; the message names the ring and vertex, counted from 0),

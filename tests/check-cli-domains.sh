@@ -109,6 +109,15 @@ expect "--polygon --stats: packing pi R^2 N / (4A) with the polygon's area A = $
         'BEGIN { want = 3.14159265358979 * 0.0004 * n / (4 * a); exit !(p != "" && (p - want) ^ 2 < 1e-11) }'
 expect "--polygon: the islet holds points" \
     eval 'awk "\$2 > 0.8 && \$2 < 0.9 && \$1 > 0.45 && \$1 < 0.55" "$tmp/poly.out" | grep -q .'
+# Rings that cross, themselves and each other: a bow tie across a diamond.
+printf '0 0\n1 1\n1 0\n0 0.3\n\n0.5 -0.125\n1.125 0.5\n0.5 1.125\n-0.125 0.5\n' > "$tmp/cross.txt"
+CROSS="polygon:$tmp/cross.txt"
+run cross --radius 0.02 --polygon "$tmp/cross.txt" --verify --stats
+expect "--polygon, rings that cross: exits 0, maximal and verified (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && grep -q " maximal verified " "$tmp/cross.err"'
+expect "--polygon, rings that cross: inside (even-odd), spaced, covered" \
+    eval 'dc inside "$tmp/cross.out" "$CROSS" && dc spacing "$tmp/cross.out" 0.02 - &&
+          dc covered "$tmp/cross.out" 0.02 "$CROSS" - 0.005'
 run geo --radius 0.02 --polygon "$tmp/shape.geojson"
 expect "--polygon GeoJSON: the same points as the same rings in text" \
     eval '[ "$rc" -eq 0 ] && cmp -s "$tmp/poly.out" "$tmp/geo.out"'

@@ -38,8 +38,8 @@ export interface SamplerOptions {
   bounds?: [number, number, number, number] | ArrayLike<number>;
   /** Sample the rectangle as a flat torus: the pattern tiles the plane. */
   periodic?: boolean;
-  /** The domain is a polygon: rings (even-odd rule: holes and outer rings alike, either way round)
-   *  or GeoJSON; its bounding box becomes `bounds` (give no bounds). Not with periodic. */
+  /** The domain is a polygon: rings (even-odd rule: holes and outer rings alike, either way round,
+   *  rings that cross too) or GeoJSON; its bounding box becomes `bounds` (give no bounds). Not with periodic. */
   polygon?: ArrayLike<Ring> | Ring | GeoJSONArea;
   /** The domain is the union of a mask's inside pixels spread over `bounds`, top row along y1. */
   mask?: Mask;

@@ -89,12 +89,25 @@ std::vector<std::uint8_t> paired_copies(const PolygonRings& rings) {
 
 Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rings)
     : rings_(std::make_unique<PolygonRings>(xy, ring_ends, rings)), index_(std::make_unique<PolygonIndex>(*rings_)) {
-    // Edges that overlap in part are split where they meet (polygon_splits.hpp).
+    // Edges that cross are split where they cross, and edges that overlap in
+    // part where they meet (polygon_splits.hpp). Where three edges or more
+    // cross within rounding of one point, a rounded crossing can make
+    // another crossing, or land on a third edge: so again, until nothing is
+    // split (of 20,000 random clusters of 3 to 6 edges through one point
+    // within 1e-15, a third held after one round, and none needed more than
+    // 15; crossings still left after kSplitRounds stay as they are).
+    constexpr int kSplitRounds = 16;
     std::vector<double> split_xy;
     std::vector<std::size_t> split_ends;
-    if (split_at_vertices_on_edges(*rings_, *index_, split_xy, split_ends)) {
-        rings_ = std::make_unique<PolygonRings>(split_xy.data(), split_ends.data(), split_ends.size());
-        index_ = std::make_unique<PolygonIndex>(*rings_);
+    for (int round = 0; round < kSplitRounds; ++round) {
+        bool split = false;
+        for (const auto how : {split_at_crossings, split_at_vertices_on_edges}) {
+            if (!how(*rings_, *index_, split_xy, split_ends)) continue;
+            rings_ = std::make_unique<PolygonRings>(split_xy.data(), split_ends.data(), split_ends.size());
+            index_ = std::make_unique<PolygonIndex>(*rings_);
+            split = true;
+        }
+        if (!split) break;
     }
     perimeter_ = rings_->perimeter();
     // Each edge's side, probed: the region's boundary, oriented with the

@@ -3,10 +3,12 @@
 // of a domain (rectangle.hpp lists it): contains, bounds, area, perimeter, a
 // count bound, a uniform point, exact scaling.
 //
-// Each edge's inside side is found by locating two points just either side
-// of its middle; its area is the boundary integral of the edges so
-// oriented: the even-odd area, rings crossing one another or themselves
-// included (a bow tie is two triangles). An outline with nothing inside (a
+// Edges that cross are split where they cross first (polygon_splits.hpp),
+// so each edge has the inside on one side. That side is found by locating
+// two points just either side of its middle; the area is the boundary
+// integral of the edges so oriented: the even-odd area, rings crossing one
+// another or themselves included (a bow tie is two triangles). An outline
+// with nothing inside (a
 // ring traced twice, say) is refused; beside other rings, copies of one
 // segment cancel in pairs, and they and the edges of a ring whose sides the
 // probes cannot tell count in the parity only.

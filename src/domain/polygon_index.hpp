@@ -97,6 +97,17 @@ public:
         return static_cast<Place>(cell_[row * cols_ + col]);
     }
 
+    // Grid cell k's edges (k = row * columns() + column): every edge that
+    // meets the cell is among them.
+    struct EdgeList {
+        const std::uint32_t* first;
+        const std::uint32_t* last;
+        const std::uint32_t* begin() const { return first; }
+        const std::uint32_t* end() const { return last; }
+    };
+    EdgeList cell_edges(std::size_t k) const {
+        return EdgeList{cell_edges_.data() + cell_begin_[k], cell_edges_.data() + cell_begin_[k + 1]};
+    }
     // The edges that may meet box b (those of every grid cell it overlaps),
     // appended to out sorted and without repeats. Every edge that meets b
     // is among them.

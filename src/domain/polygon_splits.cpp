@@ -4,7 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
+#include <tuple>
+#include <utility>
 
+#include "core/predicates.hpp"
 
 namespace pds {
 
@@ -15,9 +19,17 @@ struct Split {
     Point p;
 };
 
+struct Segment {
+    Point a, b;
+};
+
+bool same(const Point& p, const Point& q) { return p.x == q.x && p.y == q.y; }
+
+Segment edge(const PolygonRings& rings, std::size_t i) { return Segment{rings.edge_start(i), rings.edge_end(i)}; }
+
 // Whether p lies on the segment from a to b, not at an end (exact).
 bool strictly_inside(const Point& p, const Point& a, const Point& b) {
-    if ((p.x == a.x && p.y == a.y) || (p.x == b.x && p.y == b.y)) return false;
+    if (same(p, a) || same(p, b)) return false;
     return on_segment(p, a, b);
 }
 
@@ -27,6 +39,74 @@ double along(const Point& p, const Point& a, const Point& b) {
     const double dx = b.x - a.x, dy = b.y - a.y;
     if (std::fabs(dx) >= std::fabs(dy)) return dx > 0 ? p.x : -p.x;
     return dy > 0 ? p.y : -p.y;
+}
+
+// The rings with each split point inserted into its edge, in order along it.
+void write_splits(const PolygonRings& rings, std::vector<Split>& splits, std::vector<double>& xy,
+                  std::vector<std::size_t>& ends) {
+    std::sort(splits.begin(), splits.end(), [&](const Split& s, const Split& t) {
+        if (s.edge != t.edge) return s.edge < t.edge;
+        const Point a = rings.edge_start(s.edge), b = rings.edge_end(s.edge);
+        return along(s.p, a, b) < along(t.p, a, b);
+    });
+    xy.clear();
+    ends.clear();
+    std::size_t next = 0;  // the first split not yet written
+    for (std::size_t k = 0; k < rings.rings(); ++k) {
+        for (std::size_t i = rings.ring_begin(k); i < rings.ring_begin(k + 1); ++i) {
+            xy.push_back(rings.points()[i].x);
+            xy.push_back(rings.points()[i].y);
+            for (; next < splits.size() && splits[next].edge == i; ++next) {
+                const Point& p = splits[next].p;
+                if (xy[xy.size() - 2] == p.x && xy[xy.size() - 1] == p.y) continue;  // the same point twice
+                xy.push_back(p.x);
+                xy.push_back(p.y);
+            }
+        }
+        ends.push_back(xy.size() / 2);
+    }
+}
+
+// Whether two segments cross: each passes strictly from one side of the
+// other to the other (exact).
+bool cross(const Segment& s, const Segment& t) {
+    const Point &a = s.a, &b = s.b, &c = t.a, &d = t.b;
+    if (std::max(a.x, b.x) < std::min(c.x, d.x) || std::max(c.x, d.x) < std::min(a.x, b.x) ||
+        std::max(a.y, b.y) < std::min(c.y, d.y) || std::max(c.y, d.y) < std::min(a.y, b.y))
+        return false;
+    return orient2d(a, b, c) * orient2d(a, b, d) < 0 && orient2d(c, d, a) * orient2d(c, d, b) < 0;
+}
+
+// The segment with its ends in lexicographic order.
+Segment ordered(Segment s) {
+    if (s.b.x < s.a.x || (s.b.x == s.a.x && s.b.y < s.a.y)) std::swap(s.a, s.b);
+    return s;
+}
+
+bool before(const Segment& s, const Segment& t) {
+    return std::tie(s.a.x, s.a.y, s.b.x, s.b.y) < std::tie(t.a.x, t.a.y, t.b.x, t.b.y);
+}
+
+// Where two crossing segments meet, rounded, and kept inside both their
+// boxes (rounding can leave them by an ulp). Computed from the segments in
+// one order whatever their edges' order or direction: copies of a segment
+// (a ring traced twice) are split at the same points, and still cancel.
+Point crossing_point(Segment s, Segment t) {
+    s = ordered(s);
+    t = ordered(t);
+    if (before(t, s)) std::swap(s, t);
+    const Point a = s.a, b = s.b, c = t.a, d = t.b;
+    const double ex = b.x - a.x, ey = b.y - a.y, fx = d.x - c.x, fy = d.y - c.y;
+    const double r = ((c.x - a.x) * fy - (c.y - a.y) * fx) / (ex * fy - ey * fx);
+    const double u = std::min(1.0, std::max(0.0, r));
+    Point p{a.x + u * ex, a.y + u * ey};
+    const double x_lo = std::max(std::min(a.x, b.x), std::min(c.x, d.x));
+    const double x_hi = std::min(std::max(a.x, b.x), std::max(c.x, d.x));
+    const double y_lo = std::max(std::min(a.y, b.y), std::min(c.y, d.y));
+    const double y_hi = std::min(std::max(a.y, b.y), std::max(c.y, d.y));
+    p.x = std::min(x_hi, std::max(x_lo, p.x));
+    p.y = std::min(y_hi, std::max(y_lo, p.y));
+    return p;
 }
 
 }  // namespace
@@ -43,27 +123,43 @@ bool split_at_vertices_on_edges(const PolygonRings& rings, const PolygonIndex& i
             if (strictly_inside(p, rings.edge_start(e), rings.edge_end(e))) splits.push_back(Split{e, p});
     }
     if (splits.empty()) return false;
-    std::sort(splits.begin(), splits.end(), [&](const Split& s, const Split& t) {
-        if (s.edge != t.edge) return s.edge < t.edge;
-        const Point a = rings.edge_start(s.edge), b = rings.edge_end(s.edge);
-        return along(s.p, a, b) < along(t.p, a, b);
-    });
-    xy.clear();
-    ends.clear();
-    std::size_t next = 0;  // the first split not yet written
-    for (std::size_t k = 0; k < rings.rings(); ++k) {
-        for (std::size_t i = rings.ring_begin(k); i < rings.ring_begin(k + 1); ++i) {
-            xy.push_back(rings.points()[i].x);
-            xy.push_back(rings.points()[i].y);
-            for (; next < splits.size() && splits[next].edge == i; ++next) {
-                const Point& p = splits[next].p;
-                if (xy[xy.size() - 2] == p.x && xy[xy.size() - 1] == p.y) continue;  // the same vertex twice
-                xy.push_back(p.x);
-                xy.push_back(p.y);
-            }
-        }
-        ends.push_back(xy.size() / 2);
+    write_splits(rings, splits, xy, ends);
+    return true;
+}
+
+bool split_at_crossings(const PolygonRings& rings, const PolygonIndex& index, std::vector<double>& xy,
+                        std::vector<std::size_t>& ends) {
+    // Two edges that cross meet in a cell that lists both (a pair may be
+    // found in several cells).
+    const std::size_t most = kMaxCrossingsPerVertex * rings.vertices() + kMaxCrossingsBeyond;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    const auto distinct = [&pairs] {
+        std::sort(pairs.begin(), pairs.end());
+        pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    };
+    for (std::size_t k = 0; k < index.columns() * index.rows(); ++k) {
+        const PolygonIndex::EdgeList list = index.cell_edges(k);
+        for (const std::uint32_t* e = list.begin(); e != list.end(); ++e)
+            for (const std::uint32_t* f = e + 1; f != list.end(); ++f)
+                if (cross(edge(rings, *e), edge(rings, *f)))
+                    pairs.emplace_back(std::min(*e, *f), std::max(*e, *f));
+        if (pairs.size() > 2 * most) distinct();
+        if (pairs.size() > most)
+            throw DomainError("the rings cross one another more than " + std::to_string(most) +
+                              " times (4 per vertex and 65536)");
     }
+    if (pairs.empty()) return false;
+    distinct();
+    std::vector<Split> splits;
+    for (const auto& [e, f] : pairs) {
+        const Segment s = edge(rings, e), t = edge(rings, f);
+        const Point p = crossing_point(s, t);
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;  // products beyond the doubles: left as given
+        if (!same(p, s.a) && !same(p, s.b)) splits.push_back(Split{e, p});
+        if (!same(p, t.a) && !same(p, t.b)) splits.push_back(Split{f, p});
+    }
+    if (splits.empty()) return false;
+    write_splits(rings, splits, xy, ends);
     return true;
 }
 

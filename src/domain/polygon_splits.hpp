@@ -1,5 +1,15 @@
-// polygon_splits.hpp - a polygon's edges split at the vertices that lie on
-// them.
+// polygon_splits.hpp - a polygon's edges split where other edges cross them
+// and at the vertices that lie on them.
+//
+// The even-odd rule makes the inside change sides along an edge where
+// another edge crosses it (a bow tie's two lobes, a ring across a hole).
+// The sampler measures and covers the region edge by edge, each edge with
+// the inside on one side, so edges that cross are split at their crossing
+// point: the same point, rounded, ends both pieces of each. Rounding moves
+// the pieces off the exact edges by an ulp or so at the crossing (the
+// region then differs from the exact one by slivers that thin), and can
+// make a new crossing where three edges meet at nearly one point, so
+// Polygon splits again until none is left (a few rounds at most).
 //
 // The even-odd rule cancels the parts of the outline traced an even number
 // of times. Copies of one whole segment are found by their ends
@@ -25,6 +35,18 @@ namespace pds {
 // nothing written, when no vertex lies inside an edge.
 bool split_at_vertices_on_edges(const PolygonRings& rings, const PolygonIndex& index, std::vector<double>& xy,
                                 std::vector<std::size_t>& ends);
+
+// The rings again, with each pair of edges that cross (each passing
+// strictly from one side of the other to the other) split at their
+// crossing point, rounded, inserted into both. False, and nothing written,
+// when no edges cross. Throws DomainError for rings that cross more than
+// kMaxCrossingsPerVertex times their vertex count plus kMaxCrossingsBeyond
+// (a scribble of n random vertices crosses itself about n^2 / 10 times:
+// splitting that would take time and memory far beyond the rings').
+constexpr std::size_t kMaxCrossingsPerVertex = 4;
+constexpr std::size_t kMaxCrossingsBeyond = 65536;
+bool split_at_crossings(const PolygonRings& rings, const PolygonIndex& index, std::vector<double>& xy,
+                        std::vector<std::size_t>& ends);
 
 }  // namespace pds
 

@@ -5,7 +5,8 @@
  * Contract (poissondisk.h, 1.4): a polygon with a NULL array, a ring of fewer
  * than 3 distinct vertices or all on one line, a coordinate not finite,
  * decreasing ring ends or an outline enclosing nothing is PDS_EINVAL, the
- * message naming the ring (and the vertex, counted from 0); a mask with a
+ * message naming the ring (and the vertex, counted from 0), and so are rings
+ * that cross one another more than 4 times per vertex and 65536 (1.7.5); a mask with a
  * NULL raster, a size that overflows or no pixel inside is PDS_EINVAL; a
  * polygon or a mask with pds_set_periodic is PDS_EINVAL, either way round;
  * both are PDS_ESTATE once points exist; nrings 0, w or h 0 go back. A failed call leaves the sampler as it was: it
@@ -90,6 +91,30 @@ START_TEST(polygon_refused)
     /* Still usable: a valid polygon is taken (the same L again). */
     ck_assert_int_eq(pds_set_polygon(a, UNIT_L.xy, UNIT_L.ends, UNIT_L.nrings), 0);
     assert_unchanged(a, b, p->name);
+    pds_destroy(a);
+    pds_destroy(b);
+}
+END_TEST
+
+/* A ring of 1500 random vertices crosses itself about 225,000 times: more
+ * than the 4 per vertex and 65536 the library splits. */
+START_TEST(polygon_crossing_itself_too_often_refused)
+{
+    enum { n = 1500 };
+    static double xy[2 * n];
+    const size_t ends[] = {n};
+    pds_sampler *a = in_unit_l(0.05, 7), *b = in_unit_l(0.05, 7);
+    uint64_t x = 12345;
+    size_t k;
+
+    for (k = 0; k < 2 * n; k++) {
+        x = x * 6364136223846793005u + 1442695040888963407u;
+        xy[k] = (double)(x >> 11) * 0x1p-53;
+    }
+    assert_failed(a, pds_set_polygon(a, xy, ends, 1), PDS_EINVAL, "a scribble of 1500 vertices");
+    assert_says(a, "cross one another more than 71536 times", "a scribble of 1500 vertices");
+    ck_assert_int_eq(pds_set_polygon(a, UNIT_L.xy, UNIT_L.ends, UNIT_L.nrings), 0);
+    assert_unchanged(a, b, "a scribble of 1500 vertices");
     pds_destroy(a);
     pds_destroy(b);
 }
@@ -213,6 +238,7 @@ Suite *domain_args_suite(void)
     Suite *s = suite_create("domain_args");
     TCase *tc = new_tcase(s, "refused");
     tcase_add_loop_test(tc, polygon_refused, 0, (int)N_BAD_POLYGONS);
+    tcase_add_test(tc, polygon_crossing_itself_too_often_refused);
     tcase_add_test(tc, polygon_null_arguments);
     tcase_add_test(tc, mask_refused);
     tcase_add_test(tc, periodic_refused_either_way);

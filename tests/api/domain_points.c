@@ -9,7 +9,9 @@
  * region_covered, independently of the library), and pds_verify says so; the same points however the calls split or a progress
  * callback cancels them; count mode gives exactly n points; refine keeps the
  * points and ends maximal at the new radius (domain_runs.c; domain_fixed.c
- * runs the same with fixed points); the L scaled by a power of two from
+ * runs the same with fixed points); rings that cross one another or
+ * themselves (the even-odd rule along edges crossed by others); the L
+ * scaled by a power of two from
  * 2^-890 to 2^1000 gives the same points scaled, exactly.
  */
 #include <math.h>
@@ -100,6 +102,41 @@ START_TEST(maximal_in_each_shape)
         assert_rel_close(pds_free_area(s), shapes[_i].area, 1e-12, what);
         run_to_end(s);
         assert_domain_pattern(s, &g, NULL, 0, what);
+        pds_destroy(s);
+    }
+}
+END_TEST
+
+/* Rings that cross: along an edge that another edge crosses, the inside
+ * changes sides. A square crossed by a diamond (the crossings exact doubles)
+ * and a bow tie whose edges cross at (3/13, 3/13), which no double is. */
+static const double square_diamond_xy[] = {
+    0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0,
+    0.5, -0.125, 1.125, 0.5, 0.5, 1.125, -0.125, 0.5,
+};
+static const size_t square_diamond_ends[] = {4, 8};
+static const double bow_tie_xy[] = {0.0, 0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.3};
+static const size_t bow_tie_ends[] = {4};
+
+static const struct shape crossing_shapes[] = {
+    /* the square's four corners beyond the diamond and the diamond's four tips */
+    {"a square crossed by a diamond", {square_diamond_xy, square_diamond_ends, 2}, 0.28125 + 0.0625},
+    /* two triangles: 0.3 * (3/13) / 2 and 1 * (10/13) / 2 */
+    {"a bow tie crossing at (3/13, 3/13)", {bow_tie_xy, bow_tie_ends, 1}, 5.45 / 13.0},
+};
+
+START_TEST(maximal_where_rings_cross)
+{
+    const struct shape *c = &crossing_shapes[_i];
+    uint64_t seed;
+
+    for (seed = 1; seed <= pick(4, 1); seed++) {
+        pds_sampler *s = in_polygon(&c->g, 0.02, seed);
+        char what[128];
+        snprintf(what, sizeof what, "%s, R 0.02, seed %llu", c->name, (unsigned long long)seed);
+        assert_rel_close(pds_free_area(s), c->area, 1e-12, what);
+        run_to_end(s);
+        assert_domain_pattern(s, &c->g, NULL, 0, what);
         pds_destroy(s);
     }
 }
@@ -255,6 +292,7 @@ Suite *domain_points_suite(void)
     Suite *s = suite_create("domain_points");
     TCase *tc = new_tcase(s, "polygons");
     tcase_add_loop_test(tc, maximal_in_each_shape, 0, (int)N_SHAPES);
+    tcase_add_loop_test(tc, maximal_where_rings_cross, 0, 2);
     tcase_add_loop_test(tc, maximal_in_the_l_scaled_and_moved, 0, 2);
     tcase_add_test(tc, maximal_in_a_frame_far_thinner_than_r);
     tcase_add_test(tc, same_points_at_any_power_of_two);

@@ -8,14 +8,24 @@
 
 #include "domain/polygon.hpp"
 
-inline pds::Polygon rings_of(const std::vector<std::vector<double>>& rings) {
+// The rings as pds_set_polygon takes them: x y interleaved, and ring ends.
+struct FlatRings {
     std::vector<double> xy;
     std::vector<std::size_t> ends;
+};
+
+inline FlatRings flat_rings(const std::vector<std::vector<double>>& rings) {
+    FlatRings flat;
     for (const auto& r : rings) {
-        xy.insert(xy.end(), r.begin(), r.end());
-        ends.push_back(xy.size() / 2);
+        flat.xy.insert(flat.xy.end(), r.begin(), r.end());
+        flat.ends.push_back(flat.xy.size() / 2);
     }
-    return pds::Polygon(xy.data(), ends.data(), ends.size());
+    return flat;
+}
+
+inline pds::Polygon rings_of(const std::vector<std::vector<double>>& rings) {
+    const FlatRings flat = flat_rings(rings);
+    return pds::Polygon(flat.xy.data(), flat.ends.data(), flat.ends.size());
 }
 
 #endif

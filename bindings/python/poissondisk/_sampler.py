@@ -43,8 +43,8 @@ class Sampler:
             GeometryCollection, as a mapping or through __geo_interface__
             (shapely, geopandas). The region is what the rings enclose by
             the even-odd rule (holes and outer rings alike, either way
-            round), outline included; its bounding box is `bounds` then
-            (give no bounds). Copied.
+            round, rings that cross too), outline included; its bounding
+            box is `bounds` then (give no bounds). Copied.
         mask: an image domain (library 1.4): a 2-D array of booleans (or
             0/1), shape (h, w), in the image convention: row 0 is the TOP
             row, along y1, column 0 along x0 (as numpy shows an image; note
