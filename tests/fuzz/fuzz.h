@@ -94,10 +94,8 @@ typedef struct {
     double rect[4];      /* the rectangle of pds_set_domain */
     double box[4];       /* the domain's bounding box */
     double frac;         /* the even-odd area over the box's */
-    int area_known;      /* no two edges cross: the library's area is the even-odd one */
+    int area_known;      /* the library's area is the even-odd one (no spike tip) */
     size_t v_lo, v_hi;   /* a mask: bounds on the outline's vertex count */
-    int crossing;        /* two edges cross: pds_run may end "maximal" early (found/NOTES),
-                          * so no point is asked for unless PDS_FUZZ_STRICT is set */
     int antenna;         /* a ring turns straight back along its last edge: pds_run
                           * never returns (found/NOTES), so no point is asked for
                           * unless PDS_FUZZ_STRICT is set */
@@ -105,6 +103,10 @@ typedef struct {
                           * maximal run may fail pds_verify near the outline
                           * (found/NOTES, mask_fine_pixels_verify), so no point is
                           * asked for unless PDS_FUZZ_STRICT is set */
+    int sliver;          /* two edges nearly on one line along a stretch, not the same
+                          * segment: a maximal run may fail pds_verify next to them
+                          * (found/NOTES, polygon_near_coincident_edges), so no point
+                          * is asked for unless PDS_FUZZ_STRICT is set */
 } fz_shape;
 
 typedef struct {

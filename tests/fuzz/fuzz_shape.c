@@ -89,9 +89,8 @@ static double orient(double ax, double ay, double bx, double by, double cx, doub
     return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
 }
 
-/* The even-odd area over the box's area, and whether two edges cross
- * properly (then the library's area is only an estimate). */
-static double slab_area(const fz_shape *sh, int *crossing)
+/* The even-odd area over the box's area. */
+static double slab_area(const fz_shape *sh)
 {
     const size_t nv = sh->nv;
     edge *ed = malloc((nv + 1) * sizeof *ed);
@@ -103,7 +102,6 @@ static double slab_area(const fz_shape *sh, int *crossing)
     xs = malloc((2 * m + m * m + 1) * sizeof *xs);
     ys = malloc((m + 1) * sizeof *ys);
     FZ_CHECK(xs != NULL && ys != NULL, "harness out of memory");
-    *crossing = 0;
     for (i = 0; i < m; i++) {
         xs[nx++] = ed[i].ax;
         xs[nx++] = ed[i].bx;
@@ -117,10 +115,8 @@ static double slab_area(const fz_shape *sh, int *crossing)
                 const double o3 = orient(q->ax, q->ay, q->bx, q->by, p->ax, p->ay);
                 const double o4 = orient(q->ax, q->ay, q->bx, q->by, p->bx, p->by);
                 if (((o1 > 1e-14 && o2 < -1e-14) || (o1 < -1e-14 && o2 > 1e-14)) &&
-                    ((o3 > 1e-14 && o4 < -1e-14) || (o3 < -1e-14 && o4 > 1e-14))) {
-                    *crossing = 1;
+                    ((o3 > 1e-14 && o4 < -1e-14) || (o3 < -1e-14 && o4 > 1e-14)))
                     xs[nx++] = q->ax + (q->bx - q->ax) * (o1 / (o1 - o2));
-                }
             }
     qsort(xs, nx, sizeof *xs, by_double);
     for (i = 0; i + 1 < nx; i++) {
@@ -168,7 +164,6 @@ static int has_spike_tip(const fz_shape *sh)
 static void measure(fz_shape *sh)
 {
     size_t i;
-    int crossing;
     sh->box[0] = sh->box[2] = sh->xy[0];
     sh->box[1] = sh->box[3] = sh->xy[1];
     for (i = 0; i < sh->nv; i++) {
@@ -185,15 +180,43 @@ static void measure(fz_shape *sh)
         sh->u[2 * i] = norm(sh->xy[2 * i], sh->box[0], sh->box[2]);
         sh->u[2 * i + 1] = norm(sh->xy[2 * i + 1], sh->box[1], sh->box[3]);
     }
-    sh->frac = slab_area(sh, &crossing);
-    sh->crossing = crossing;
-    sh->area_known = !crossing && !has_spike_tip(sh) && sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3];
+    sh->frac = slab_area(sh);
+    sh->area_known = !has_spike_tip(sh) && sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3];
+}
+
+/* Whether two edges lie within 1e-12 of the box of each other's line along
+ * a stretch longer than 1e-9 of it without being the same segment: the
+ * region between them is a sliver below any radius (found/NOTES). */
+static int has_near_coincident_edges(const fz_shape *sh)
+{
+    edge *ed = malloc((sh->nv + 1) * sizeof *ed);
+    size_t m, i, j;
+    int found = 0;
+
+    FZ_CHECK(ed != NULL, "harness out of memory");
+    m = edges_of(sh, ed);
+    for (i = 0; i < m && !found; i++)
+        for (j = i + 1; j < m && !found; j++) {
+            const edge *p = &ed[i], *q = &ed[j];
+            const double lp = hypot(p->bx - p->ax, p->by - p->ay), lq = hypot(q->bx - q->ax, q->by - q->ay);
+            const double dx = (p->bx - p->ax) / lp, dy = (p->by - p->ay) / lp;
+            const double t0 = (q->ax - p->ax) * dx + (q->ay - p->ay) * dy;
+            const double t1 = (q->bx - p->ax) * dx + (q->by - p->ay) * dy;
+            const double overlap = fmin(lp, fmax(t0, t1)) - fmax(0.0, fmin(t0, t1));
+            if (p->ax == q->ax && p->ay == q->ay && p->bx == q->bx && p->by == q->by) continue;
+            found = overlap > 1e-9 &&
+                    fabs(orient(p->ax, p->ay, p->bx, p->by, q->ax, q->ay)) <= 1e-12 * lp &&
+                    fabs(orient(p->ax, p->ay, p->bx, p->by, q->bx, q->by)) <= 1e-12 * lp &&
+                    fabs(orient(q->ax, q->ay, q->bx, q->by, p->ax, p->ay)) <= 1e-12 * lq &&
+                    fabs(orient(q->ax, q->ay, q->bx, q->by, p->bx, p->by)) <= 1e-12 * lq;
+        }
+    free(ed);
+    return found;
 }
 
 /* Copies of the rings (cleaned as the header allows: consecutive repeats and a
  * closing repeat dropped). Returns what the contract says: 1 accepted, 0
- * refused (PDS_EINVAL), -1 either (near the edge of the rules, or rings that
- * cross while PDS_FUZZ_STRICT is not set: found/NOTES). */
+ * refused (PDS_EINVAL), -1 either (near the edge of the rules: found/NOTES). */
 int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t nrings)
 {
     size_t k, v, start = 0, total = 0, out = 0;
@@ -284,6 +307,10 @@ int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t 
     /* The library's area of a ring with a nearly zero-width spike is not the
      * even-odd area (found/NOTES, polygon_near_spike_area). */
     if (sh->antenna) sh->area_known = 0;
+    /* Nor is it beside two edges that nearly coincide (found/NOTES,
+     * polygon_near_coincident_edges). */
+    sh->sliver = has_near_coincident_edges(sh);
+    if (sh->sliver) sh->area_known = 0;
     { /* Every |coordinate| below 2^-500: the library's predicates underflow and call
        * a star "on one line" (found/NOTES, polygon_tiny_collinear). Beyond 2^500
        * the library reads the rings a power of two away, unless a nonzero
