@@ -27,10 +27,22 @@ bool same(const Point& p, const Point& q) { return p.x == q.x && p.y == q.y; }
 
 Segment edge(const PolygonRings& rings, std::size_t i) { return Segment{rings.edge_start(i), rings.edge_end(i)}; }
 
-// Whether p lies on the segment from a to b, not at an end (exact).
-bool strictly_inside(const Point& p, const Point& a, const Point& b) {
+// kNearEdge of the largest |coordinate|.
+double near_edge_reach(const PolygonRings& rings) {
+    const Box& box = rings.bounds();
+    return kNearEdge * std::max({std::fabs(box.x0), std::fabs(box.y0), std::fabs(box.x1), std::fabs(box.y1)});
+}
+
+// Whether p lies on the segment from a to b, not at an end: exactly, or
+// within `reach` of it and farther than that from both ends.
+bool on_edge(const Point& p, const Point& a, const Point& b, double reach) {
     if (same(p, a) || same(p, b)) return false;
-    return on_segment(p, a, b);
+    if (on_segment(p, a, b)) return true;
+    const double dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
+    if (!(length > 2.0 * reach)) return false;
+    const double along_edge = ((p.x - a.x) * dx + (p.y - a.y) * dy) / length;
+    const double off_edge = std::fabs((p.x - a.x) * dy - (p.y - a.y) * dx) / length;
+    return off_edge <= reach && along_edge > reach && along_edge < length - reach;
 }
 
 // Position along the edge from a to b of a point on it: its coordinate along
@@ -113,14 +125,15 @@ Point crossing_point(Segment s, Segment t) {
 
 bool split_at_vertices_on_edges(const PolygonRings& rings, const PolygonIndex& index, std::vector<double>& xy,
                                 std::vector<std::size_t>& ends) {
+    const double reach = near_edge_reach(rings);
     std::vector<Split> splits;
     std::vector<std::uint32_t> near;
     for (std::size_t v = 0; v < rings.vertices(); ++v) {
         const Point p = rings.points()[v];
         near.clear();
-        index.edges_near(Box{p.x, p.y, p.x, p.y}, near);  // every edge through p is among them
+        index.edges_near(Box{p.x - reach, p.y - reach, p.x + reach, p.y + reach}, near);  // every edge within reach
         for (const std::uint32_t e : near)
-            if (strictly_inside(p, rings.edge_start(e), rings.edge_end(e))) splits.push_back(Split{e, p});
+            if (on_edge(p, rings.edge_start(e), rings.edge_end(e), reach)) splits.push_back(Split{e, p});
     }
     if (splits.empty()) return false;
     write_splits(rings, splits, xy, ends);
@@ -150,10 +163,22 @@ bool split_at_crossings(const PolygonRings& rings, const PolygonIndex& index, st
     }
     if (pairs.empty()) return false;
     distinct();
+    const double reach = near_edge_reach(rings);
     std::vector<Split> splits;
     for (const auto& [e, f] : pairs) {
         const Segment s = edge(rings, e), t = edge(rings, f);
-        const Point p = crossing_point(s, t);
+        Point p = crossing_point(s, t);
+        // A crossing within reach of an end is that end, which then lies
+        // within reach of the other edge, as split_at_vertices_on_edges
+        // takes it: no edge shorter than the reach is made.
+        double nearest = reach;
+        for (const Point& q : {s.a, s.b, t.a, t.b}) {
+            const double d = std::hypot(p.x - q.x, p.y - q.y);
+            if (d < nearest || (d == nearest && d <= reach && std::tie(q.x, q.y) < std::tie(p.x, p.y))) {
+                nearest = d;
+                p = q;
+            }
+        }
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;  // products beyond the doubles: left as given
         if (!same(p, s.a) && !same(p, s.b)) splits.push_back(Split{e, p});
         if (!same(p, t.a) && !same(p, t.b)) splits.push_back(Split{f, p});

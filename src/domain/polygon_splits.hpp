@@ -30,9 +30,14 @@
 namespace pds {
 
 // The rings again, with every vertex that lies strictly inside an edge
-// (exactly) inserted into that edge, in order along it: xy (x y
-// interleaved) and ring ends as pds_set_polygon takes them. False, and
-// nothing written, when no vertex lies inside an edge.
+// inserted into that edge, in order along it: xy (x y interleaved) and ring
+// ends as pds_set_polygon takes them. A vertex within kNearEdge of the
+// largest |coordinate| of an edge's line counts as on it (when farther than
+// that from its ends): the sides of two edges that run that close together
+// cannot be told apart by the probes (polygon.cpp), so the stretch they
+// share becomes copies of one segment, which cancel. False, and nothing
+// written, when no vertex lies inside an edge.
+constexpr double kNearEdge = 0x1p-48;
 bool split_at_vertices_on_edges(const PolygonRings& rings, const PolygonIndex& index, std::vector<double>& xy,
                                 std::vector<std::size_t>& ends);
 

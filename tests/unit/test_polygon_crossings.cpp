@@ -196,6 +196,31 @@ START_TEST(clusters_of_crossings_are_split_in_rounds) {
 }
 END_TEST
 
+// Two kites whose edges from (-4, 2.625...) and (-3, 1.625...) run 2e-16
+// apart (found by fuzzing): the second's end lies within rounding of the
+// first, and a crossing rounds to within rounding of the first's end. Both
+// are taken as on the edge, so the stretch the edges share cancels; probes
+// could not tell those edges' sides, and the area was 21.35 for 24.85.
+const Rings kKites = {
+    {0.5, 2.625, 7.6540424946709575e-18, 2.75, -4, 2.6250000000000004, -7.3478807948841188e-16, -1.375},
+    {5, 1.625, 1.0000000000000002, 5.625, -3, 1.6250000000000004, 0.99999999999999922, -2.375}};
+
+START_TEST(edges_within_rounding_of_each_other_cancel) {
+    pds::Rng rng(14);
+    check_outline(kKites, "two kites", rng);
+    const FlatRings flat = flat_rings(kKites);
+    for (std::uint64_t seed = 1; seed <= (test_light() ? 1u : 4u); ++seed) {
+        pds::Sampler s(0.1, seed);
+        s.set_polygon(flat.xy.data(), flat.ends.data(), flat.ends.size());
+        bool maximal = false;
+        s.add_points(0, &maximal);
+        const pds::VerifyReport rep = s.verify();
+        ck_assert_msg(maximal && rep.valid && rep.maximal, "seed %llu: %s", static_cast<unsigned long long>(seed),
+                      rep.failure.c_str());
+    }
+}
+END_TEST
+
 // About n^2 / 10 crossings: beyond 4 per vertex and 65536 the rings are
 // refused, before their splits are made.
 START_TEST(rings_that_cross_too_often_are_refused) {
@@ -242,6 +267,7 @@ Suite* polygon_crossings_suite() {
     tcase_add_test(t, crossing_edges_are_split_where_they_cross);
     tcase_add_test(t, clusters_of_crossings_are_split_in_rounds);
     tcase_add_test(t, rings_that_cross_too_often_are_refused);
+    tcase_add_test(t, edges_within_rounding_of_each_other_cancel);
     tcase_add_test(t, patterns_where_rings_cross_are_maximal);
     suite_add_tcase(s, t);
     return s;
