@@ -95,6 +95,9 @@ typedef struct {
     double box[4];       /* the domain's bounding box */
     double frac;         /* the even-odd area over the box's */
     int area_known;      /* the library's area is the even-odd one (no spike tip) */
+    size_t crossings;    /* pairs of edges that cross: the library splits them at the
+                          * crossing points rounded, which moves its area by up to
+                          * about an ulp of the coordinates times the edges' lengths */
     size_t v_lo, v_hi;   /* a mask: bounds on the outline's vertex count */
     int antenna;         /* a ring turns straight back along its last edge: pds_run
                           * never returns (found/NOTES), so no point is asked for
