@@ -171,12 +171,16 @@ bool split_at_crossings(const PolygonRings& rings, const PolygonIndex& index, st
         // A crossing within reach of an end is that end, which then lies
         // within reach of the other edge, as split_at_vertices_on_edges
         // takes it: no edge shorter than the reach is made.
+        // (The nearest end, the least one of equals: copies snap alike.)
+        const Point crossing = p;
         double nearest = reach;
+        bool snapped = false;
         for (const Point& q : {s.a, s.b, t.a, t.b}) {
-            const double d = std::hypot(p.x - q.x, p.y - q.y);
-            if (d < nearest || (d == nearest && d <= reach && std::tie(q.x, q.y) < std::tie(p.x, p.y))) {
+            const double d = std::hypot(crossing.x - q.x, crossing.y - q.y);
+            if (d < nearest || (d == nearest && (!snapped || std::tie(q.x, q.y) < std::tie(p.x, p.y)))) {
                 nearest = d;
                 p = q;
+                snapped = true;
             }
         }
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;  // products beyond the doubles: left as given
