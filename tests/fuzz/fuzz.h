@@ -106,10 +106,6 @@ typedef struct {
                           * maximal run may fail pds_verify near the outline
                           * (found/NOTES, mask_fine_pixels_verify), so no point is
                           * asked for unless PDS_FUZZ_STRICT is set */
-    int sliver;          /* two edges nearly on one line along a stretch, not the same
-                          * segment: a maximal run may fail pds_verify next to them
-                          * (found/NOTES, polygon_near_coincident_edges), so no point
-                          * is asked for unless PDS_FUZZ_STRICT is set */
 } fz_shape;
 
 typedef struct {

@@ -62,8 +62,8 @@ static int work_allowed(const fz_state *st)
     const double n = fz_count_bound(st);
     double lo, hi;
     if (st->s == NULL || st->budget == 0) return WORK_NONE;
-    /* found/NOTES: polygon_antenna_hang, mask_fine_pixels_verify, polygon_near_coincident_edges */
-    if ((st->shape.antenna || st->shape.fine || st->shape.sliver) && !fz_strict()) return WORK_NONE;
+    /* found/NOTES: polygon_antenna_hang, mask_fine_pixels_verify */
+    if ((st->shape.antenna || st->shape.fine) && !fz_strict()) return WORK_NONE;
     fz_lib_bound(st, &lo, &hi);
     /* Count mode ends at n points; the dart stage's grid still follows the bound. */
     if (st->target != 0 && (double)st->target <= FZ_TO_END_MAX &&

@@ -196,36 +196,6 @@ static void measure(fz_shape *sh)
     }
 }
 
-/* Whether two edges lie within 1e-12 of the box of each other's line along
- * a stretch longer than 1e-9 of it without being the same segment: the
- * region between them is a sliver below any radius (found/NOTES). */
-static int has_near_coincident_edges(const fz_shape *sh)
-{
-    edge *ed = malloc((sh->nv + 1) * sizeof *ed);
-    size_t m, i, j;
-    int found = 0;
-
-    FZ_CHECK(ed != NULL, "harness out of memory");
-    m = edges_of(sh, ed);
-    for (i = 0; i < m && !found; i++)
-        for (j = i + 1; j < m && !found; j++) {
-            const edge *p = &ed[i], *q = &ed[j];
-            const double lp = hypot(p->bx - p->ax, p->by - p->ay), lq = hypot(q->bx - q->ax, q->by - q->ay);
-            const double dx = (p->bx - p->ax) / lp, dy = (p->by - p->ay) / lp;
-            const double t0 = (q->ax - p->ax) * dx + (q->ay - p->ay) * dy;
-            const double t1 = (q->bx - p->ax) * dx + (q->by - p->ay) * dy;
-            const double overlap = fmin(lp, fmax(t0, t1)) - fmax(0.0, fmin(t0, t1));
-            if (p->ax == q->ax && p->ay == q->ay && p->bx == q->bx && p->by == q->by) continue;
-            found = overlap > 1e-9 &&
-                    fabs(orient(p->ax, p->ay, p->bx, p->by, q->ax, q->ay)) <= 1e-12 * lp &&
-                    fabs(orient(p->ax, p->ay, p->bx, p->by, q->bx, q->by)) <= 1e-12 * lp &&
-                    fabs(orient(q->ax, q->ay, q->bx, q->by, p->ax, p->ay)) <= 1e-12 * lq &&
-                    fabs(orient(q->ax, q->ay, q->bx, q->by, p->bx, p->by)) <= 1e-12 * lq;
-        }
-    free(ed);
-    return found;
-}
-
 /* Copies of the rings (cleaned as the header allows: consecutive repeats and a
  * closing repeat dropped). Returns what the contract says: 1 accepted, 0
  * refused (PDS_EINVAL), -1 either (near the edge of the rules: found/NOTES). */
@@ -319,10 +289,6 @@ int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t 
     /* The library's area of a ring with a nearly zero-width spike is not the
      * even-odd area (found/NOTES, polygon_near_spike_area). */
     if (sh->antenna) sh->area_known = 0;
-    /* Nor is it beside two edges that nearly coincide (found/NOTES,
-     * polygon_near_coincident_edges). */
-    sh->sliver = has_near_coincident_edges(sh);
-    if (sh->sliver) sh->area_known = 0;
     { /* Every |coordinate| below 2^-500: the library's predicates underflow and call
        * a star "on one line" (found/NOTES, polygon_tiny_collinear). Beyond 2^500
        * the library reads the rings a power of two away, unless a nonzero
