@@ -170,10 +170,14 @@ bool split_at_crossings(const PolygonRings& rings, const PolygonIndex& index, st
         Point p = crossing_point(s, t);
         // A crossing within reach of an end is that end, which then lies
         // within reach of the other edge, as split_at_vertices_on_edges
-        // takes it: no edge shorter than the reach is made.
-        // (The nearest end, the least one of equals: copies snap alike.)
+        // takes it: no edge shorter than the reach is made. (The nearest
+        // end, the least one of equals: copies snap alike. Not for edges
+        // that on_edge leaves alone: features below the reach are kept.)
         const Point crossing = p;
-        double nearest = reach;
+        const auto longer = [reach](const Segment& g) {
+            return std::hypot(g.b.x - g.a.x, g.b.y - g.a.y) > 2.0 * reach;
+        };
+        double nearest = longer(s) && longer(t) ? reach : -1.0;
         bool snapped = false;
         for (const Point& q : {s.a, s.b, t.a, t.b}) {
             const double d = std::hypot(crossing.x - q.x, crossing.y - q.y);
