@@ -94,8 +94,8 @@ Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rin
     // cross within rounding of one point, a rounded crossing can make
     // another crossing, or land on a third edge: so again, until nothing is
     // split (of 20,000 random clusters of 3 to 6 edges through one point
-    // within 1e-15, a third held after one round, and none needed more than
-    // 15; crossings still left after kSplitRounds stay as they are).
+    // within 1e-15, a third still crossed after one round, and none needed
+    // more than 15; crossings still left after kSplitRounds stay as they are).
     constexpr int kSplitRounds = 16;
     std::vector<double> split_xy;
     std::vector<std::size_t> split_ends;

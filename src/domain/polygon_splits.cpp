@@ -36,7 +36,9 @@ double near_edge_reach(const PolygonRings& rings) {
 // Whether p lies on the segment from a to b, not at an end: exactly, or
 // within `reach` of it and farther than that from both ends.
 bool on_edge(const Point& p, const Point& a, const Point& b, double reach) {
-    if (same(p, a) || same(p, b)) return false;
+    if (p.x < std::min(a.x, b.x) - reach || p.x > std::max(a.x, b.x) + reach || p.y < std::min(a.y, b.y) - reach ||
+        p.y > std::max(a.y, b.y) + reach || same(p, a) || same(p, b))
+        return false;
     if (on_segment(p, a, b)) return true;
     const double dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
     if (!(length > 2.0 * reach)) return false;
