@@ -429,9 +429,9 @@ PDS_API size_t pds_radii(const pds_sampler *s, size_t first, size_t count, doubl
  * their edges are split where they cross, at the crossing point rounded to
  * doubles, so along crossing edges the domain may differ from the exact
  * region by slivers about an ulp of the coordinates wide; everything else
- * holds as for rings that do not cross. Likewise a vertex within 2^-48 of
- * the largest |coordinate| of an edge is taken as on it (two edges that
- * close along a stretch share it, and cancel there). The copy is kept:
+ * holds as for rings that do not cross. Likewise a vertex closer to an edge
+ * than 2^-48 times the largest |coordinate| is taken as on it (two edges
+ * that close along a stretch share it, and cancel there). The copy is kept:
  * the arrays may be freed. The domain's bounding box replaces the rectangle
  * of pds_set_domain, and a radius map is spread over that box. A polygon
  * replaces an earlier polygon or mask; nrings == 0 (xy and ring_ends may be
