@@ -20,6 +20,12 @@ constexpr std::size_t kBytesPerPointBudget = 256;
 
 double max_magnitude(const Box& b) { return Rectangle(b).largest_magnitude(); }
 
+// Whether coordinates whose largest magnitude is `largest` and smallest
+// nonzero one `smallest` scale into the internal frame exactly.
+bool scales_exactly(double largest, double smallest) {
+    return largest >= kMinMagnitude && smallest >= largest * kMinMagnitude;
+}
+
 // Any radius at least the diagonal gives the same one-point pattern; capping
 // keeps R^2 finite.
 double effective_radius(const Rectangle& domain, double r) {
@@ -73,7 +79,7 @@ void Frame::set_domain(const Box& user_domain) {
     // too small to scale (precision_limit() refuses both).
     const double m = max_magnitude(user_domain);
     // At scale 2^0 the user's polygon is the scaled one: shared, not built again.
-    if (user_polygon_ && m >= kMinMagnitude && smallest_vertex_ >= m * kMinMagnitude)
+    if (user_polygon_ && scales_exactly(m, smallest_vertex_))
         polygon_ = scale_exp_ + user_exp_ == 0 ? user_polygon_
                                                 : std::make_shared<const Polygon>(user_polygon_->scaled(scale_exp_ + user_exp_));
     set_radius(user_radius_);
@@ -94,15 +100,9 @@ void Frame::set_polygon(std::shared_ptr<const Polygon> user_polygon, int user_ex
 }
 
 int Frame::polygon_reading_exponent(const double* c, std::size_t n) {
-    double hi = 0.0, lo = HUGE_VAL;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double a = std::fabs(c[i]);
-        if (!std::isfinite(a) || a == 0.0) continue;
-        hi = std::max(hi, a);
-        lo = std::min(lo, a);
-    }
-    // set_domain's scale, and its test for building the internal polygon.
-    if (hi >= kMinMagnitude && lo >= hi * kMinMagnitude) return std::ilogb(hi);
+    const auto [hi, lo] = magnitudes(c, n);
+    // set_domain's scale, when it builds the internal polygon.
+    if (scales_exactly(hi, lo)) return std::ilogb(hi);
     return reading_exponent(c, n);
 }
 

@@ -172,14 +172,19 @@ Point Polygon::uniform_point(Rng& rng) const {
     }
 }
 
-int reading_exponent(const double* c, std::size_t n) {
-    double hi = 0.0, lo = HUGE_VAL;
+Magnitudes magnitudes(const double* c, std::size_t n) {
+    Magnitudes m{0.0, HUGE_VAL};
     for (std::size_t i = 0; i < n; ++i) {
         const double a = std::fabs(c[i]);
         if (!std::isfinite(a) || a == 0.0) continue;
-        hi = std::max(hi, a);
-        lo = std::min(lo, a);
+        m.largest = std::max(m.largest, a);
+        m.smallest = std::min(m.smallest, a);
     }
+    return m;
+}
+
+int reading_exponent(const double* c, std::size_t n) {
+    const auto [hi, lo] = magnitudes(c, n);
     if (hi == 0.0 || (hi <= 0x1p500 && hi >= 0x1p-500)) return 0;
     // The exponent of the largest brings it near 1; a smaller one is enough
     // (the largest at most 2^500) and keeps the smallest a normal number,

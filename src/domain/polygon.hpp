@@ -83,6 +83,13 @@ private:
     double perimeter_ = 0.0;
 };
 
+// The largest and the smallest nonzero finite |c[i]| of c[0..n) (0 and
+// HUGE_VAL when there is none).
+struct Magnitudes {
+    double largest, smallest;
+};
+Magnitudes magnitudes(const double* c, std::size_t n);
+
 // The power of two e at which to read user coordinates c[0..n) (user =
 // read * 2^e), so that the predicates' products on them neither overflow nor
 // underflow: 0 when every nonzero finite |c| lies in 2^-500 .. 2^500;
