@@ -3,7 +3,7 @@
 // inside refused, a uniform point (inside, and spread by area), the count
 // bound against a packing, exact scaling, a ring traced twice (no part of
 // the outline) around and inside the region, frames far thinner than their
-// sides are long.
+// sides are long, the law of region and fan draws in cut cells.
 #include <check.h>
 
 #include <algorithm>
@@ -318,6 +318,60 @@ START_TEST(region_draws_keep_the_law) {
 }
 END_TEST
 
+START_TEST(cells_reaching_across_teeth_are_chosen_by_free_area) {
+    // The first point beside fixed points is uniform over the free area. Here
+    // the comb's site sees the teeth past the gaps: rays from it leave the
+    // comb and enter it again, so its cell's fan has clockwise triangles and
+    // its counterclockwise sum far exceeds its free area; the block's site
+    // has none. Drawn from the trapezoids, the comb's cell must still be
+    // chosen by its free area (an L has too few such cells to tell). The
+    // counts in the base, the teeth and the block are compared with the
+    // exact areas, for region and fan draws alike, and with each other.
+    const std::vector<std::vector<double>> rings{comb(8), {1.2, 0, 2.0, 0, 2.0, 1.0, 1.2, 1.0}};
+    const double r = 0.05, disk = M_PI * r * r;  // each fixed point's disk lies inside
+    // Free areas: the base (less the comb's disk), the teeth, the block (less its disk).
+    const double area[3] = {0.1 - disk, 8 * (0.3 / 8) * 0.9, 0.8 - disk};
+    const double total = area[0] + area[1] + area[2];
+    const int seeds = test_light() ? 600 : 4000;
+    int parts[2][3] = {{0, 0, 0}, {0, 0, 0}};
+    std::size_t region_draws[2] = {0, 0};
+    for (int by_region = 0; by_region < 2; ++by_region)
+        for (int seed = 1; seed <= seeds; ++seed) {
+            pds::Sampler s(r, static_cast<std::uint64_t>(seed + by_region * 1000003));
+            s.set_polygon(std::make_shared<const Polygon>(rings_of(rings)));
+            s.set_fixed({Point{0.5, 0.05}, Point{1.6, 0.5}}, {0.0, 0.0});
+            s.skip_dart_stage();
+            if (by_region) s.draw_cut_cells_by_region();
+            std::size_t added = 0;
+            s.run(1, &added);
+            ck_assert_uint_eq(added, 1);
+            double xy[2];
+            s.copy_points(0, 1, xy);
+            ++parts[by_region][xy[0] > 1.1 ? 2 : xy[1] > 0.1 ? 1 : 0];
+            region_draws[by_region] += s.jones().stats().region_draws;
+        }
+    ck_assert_uint_eq(region_draws[0], 0);
+    ck_assert_uint_ge(region_draws[1], static_cast<std::size_t>(seeds));  // a batch draws several
+    const char* how[2] = {"the fan", "the trapezoids"};
+    for (int k = 0; k < 2; ++k) {
+        // Pearson's chi-square against the exact shares, 2 degrees of
+        // freedom: 23 has probability 1e-5.
+        double chi2 = 0;
+        for (int part = 0; part < 3; ++part) {
+            const double expected = seeds * area[part] / total;
+            chi2 += (parts[k][part] - expected) * (parts[k][part] - expected) / expected;
+        }
+        ck_assert_msg(chi2 < 23, "by %s: base %d, teeth %d, block %d of %d; expected %.1f, %.1f, %.1f (chi2 %.1f)",
+                      how[k], parts[k][0], parts[k][1], parts[k][2], seeds, seeds * area[0] / total,
+                      seeds * area[1] / total, seeds * area[2] / total, chi2);
+    }
+    // The comb's share, trapezoids against fan (two-sample z).
+    const double a = (parts[1][0] + parts[1][1]) / double(seeds), b = (parts[0][0] + parts[0][1]) / double(seeds);
+    const double pooled = (a + b) / 2, z = (a - b) / std::sqrt(2 * pooled * (1 - pooled) / seeds);
+    ck_assert_msg(std::fabs(z) < 4.5, "the comb's share %.4f by the trapezoids, %.4f by the fan (z %.2f)", a, b, z);
+}
+END_TEST
+
 }  // namespace
 
 Suite* polygon_domain_suite() {
@@ -334,6 +388,7 @@ Suite* polygon_domain_suite() {
     tcase_add_test(t, frames_far_thinner_than_their_sides_are_long);
     tcase_add_test(t, a_thin_strip_turns_to_trapezoids_early);
     tcase_add_test(t, region_draws_keep_the_law);
+    tcase_add_test(t, cells_reaching_across_teeth_are_chosen_by_free_area);
     tcase_set_timeout(t, 60);
     suite_add_tcase(s, t);
     return s;
