@@ -118,6 +118,17 @@ expect "--polygon, rings that cross: exits 0, maximal and verified (got $rc)" \
 expect "--polygon, rings that cross: inside (even-odd), spaced, covered" \
     eval 'dc inside "$tmp/cross.out" "$CROSS" && dc spacing "$tmp/cross.out" 0.02 - &&
           dc covered "$tmp/cross.out" 0.02 "$CROSS" - 0.005'
+# Rings that meet at vertices a few ulps apart: a square with a hole in its
+# corner (the library merges them, so its domain differs from the exact one
+# by slivers some 1e-14 wide: no probes of the given outline).
+printf '%s\n' '-3.5 -3.5' '-2.5 -3.5' '-2.5 -2.5' '-3.5 -2.5' '' '-3.500000000000016 -3.500000000000007' \
+    '-3.5000000000000133 -2.9999999999999867' '-2.8999999999999946 -3.0000000000000133' \
+    '-2.9000000000000106 -3.499999999999983' > "$tmp/near.txt"
+run near --radius 0.02 --polygon "$tmp/near.txt" --verify --stats
+expect "--polygon, rings meeting within rounding: exits 0, maximal and verified (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && grep -q " maximal verified " "$tmp/near.err"'
+expect "--polygon, rings meeting within rounding: inside (even-odd), spaced" \
+    eval 'dc inside "$tmp/near.out" "polygon:$tmp/near.txt" && dc spacing "$tmp/near.out" 0.02 -'
 run geo --radius 0.02 --polygon "$tmp/shape.geojson"
 expect "--polygon GeoJSON: the same points as the same rings in text" \
     eval '[ "$rc" -eq 0 ] && cmp -s "$tmp/poly.out" "$tmp/geo.out"'

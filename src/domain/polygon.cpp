@@ -101,7 +101,7 @@ Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rin
     std::vector<std::size_t> split_ends;
     for (int round = 0; round < kSplitRounds; ++round) {
         bool split = false;
-        for (const auto how : {split_at_crossings, split_at_vertices_on_edges}) {
+        for (const auto how : {split_at_crossings, merge_or_split_at_vertices}) {
             if (!how(*rings_, *index_, split_xy, split_ends)) continue;
             rings_ = std::make_unique<PolygonRings>(split_xy.data(), split_ends.data(), split_ends.size());
             index_ = std::make_unique<PolygonIndex>(*rings_);

@@ -125,18 +125,99 @@ Point crossing_point(Segment s, Segment t) {
 
 }  // namespace
 
-bool split_at_vertices_on_edges(const PolygonRings& rings, const PolygonIndex& index, std::vector<double>& xy,
+namespace {
+
+// The rings with each group of vertices joined by `pairs` moved to its least
+// point (by x, then y), when each ring has one point in the group and it
+// spans no more than twice `reach`. False, and nothing written, when no
+// vertex moves or the moved rings are not rings (one flattened: below
+// resolution, kept as given).
+bool merge_groups(const PolygonRings& rings, const std::vector<std::uint32_t>& ring_of,
+                  std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, double reach, std::vector<double>& xy,
+                  std::vector<std::size_t>& ends) {
+    const std::vector<Point>& points = rings.points();
+    std::vector<std::uint32_t> parent(rings.vertices());
+    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<std::uint32_t>(i);
+    const auto root = [&parent](std::uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    };
+    std::vector<std::uint32_t> grouped;
+    for (const auto& [v, w] : pairs) {
+        const std::uint32_t a = root(v), b = root(w);
+        if (a != b) parent[std::max(a, b)] = std::min(a, b);
+        grouped.push_back(v);
+        grouped.push_back(w);
+    }
+    std::sort(grouped.begin(), grouped.end(), [&](std::uint32_t i, std::uint32_t j) {
+        return std::make_tuple(root(i), ring_of[i], points[i].x, points[i].y) <
+               std::make_tuple(root(j), ring_of[j], points[j].x, points[j].y);
+    });
+    std::vector<Point> moved(points);
+    bool any = false;
+    for (std::size_t from = 0, to; from < grouped.size(); from = to) {
+        const std::uint32_t group = root(grouped[from]);
+        Point least = points[grouped[from]];
+        Box span{least.x, least.y, least.x, least.y};
+        bool one_point_per_ring = true;
+        for (to = from; to < grouped.size() && root(grouped[to]) == group; ++to) {
+            const Point& q = points[grouped[to]];
+            if (to > from && ring_of[grouped[to - 1]] == ring_of[grouped[to]] && !same(points[grouped[to - 1]], q))
+                one_point_per_ring = false;
+            if (q.x < least.x || (q.x == least.x && q.y < least.y)) least = q;
+            span = Box{std::min(span.x0, q.x), std::min(span.y0, q.y), std::max(span.x1, q.x), std::max(span.y1, q.y)};
+        }
+        if (!one_point_per_ring || span.x1 - span.x0 > 2 * reach || span.y1 - span.y0 > 2 * reach) continue;
+        for (std::size_t k = from; k < to; ++k) {
+            any = any || !same(moved[grouped[k]], least);
+            moved[grouped[k]] = least;
+        }
+    }
+    if (!any) return false;
+    std::vector<double> merged_xy;
+    std::vector<std::size_t> merged_ends;
+    merged_xy.reserve(2 * moved.size());
+    for (const Point& q : moved) merged_xy.insert(merged_xy.end(), {q.x, q.y});
+    for (std::size_t k = 0; k < rings.rings(); ++k) merged_ends.push_back(rings.ring_begin(k + 1));
+    try {
+        PolygonRings(merged_xy.data(), merged_ends.data(), merged_ends.size());
+    } catch (const DomainError&) {
+        return false;
+    }
+    xy.swap(merged_xy);
+    ends.swap(merged_ends);
+    return true;
+}
+
+}  // namespace
+
+bool merge_or_split_at_vertices(const PolygonRings& rings, const PolygonIndex& index, std::vector<double>& xy,
                                 std::vector<std::size_t>& ends) {
-    const double reach = near_edge_reach(rings);
+    // Vertices are merged within twice the near-edge reach: a vertex within
+    // that reach of an edge's line but also of its end (so not split into
+    // it) is merged with the end.
+    const double reach = near_edge_reach(rings), merging = 2.0 * reach;
+    std::vector<std::uint32_t> ring_of(rings.vertices());
+    for (std::size_t k = 0; k < rings.rings(); ++k)
+        for (std::size_t i = rings.ring_begin(k); i < rings.ring_begin(k + 1); ++i)
+            ring_of[i] = static_cast<std::uint32_t>(k);
     std::vector<Split> splits;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     std::vector<std::uint32_t> near;
     for (std::size_t v = 0; v < rings.vertices(); ++v) {
         const Point p = rings.points()[v];
         near.clear();
-        index.edges_near(Box{p.x - reach, p.y - reach, p.x + reach, p.y + reach}, near);  // every edge within reach
-        for (const std::uint32_t e : near)
-            if (on_edge(p, rings.edge_start(e), rings.edge_end(e), reach)) splits.push_back(Split{e, p});
+        // Every edge within the merging reach; a vertex that near starts one.
+        index.edges_near(Box{p.x - merging, p.y - merging, p.x + merging, p.y + merging}, near);
+        for (const std::uint32_t e : near) {
+            const Point a = rings.edge_start(e);
+            if (ring_of[e] != ring_of[v] && !same(a, p) && std::hypot(a.x - p.x, a.y - p.y) <= merging)
+                pairs.emplace_back(static_cast<std::uint32_t>(v), e);
+            if (on_edge(p, a, rings.edge_end(e), reach)) splits.push_back(Split{e, p});
+        }
     }
+    // Merged vertices are split into edges in the next round.
+    if (!pairs.empty() && merge_groups(rings, ring_of, pairs, merging, xy, ends)) return true;
     if (splits.empty()) return false;
     write_splits(rings, splits, xy, ends);
     return true;

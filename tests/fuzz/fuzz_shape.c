@@ -164,6 +164,32 @@ static int has_spike_tip(const fz_shape *sh)
     return 0;
 }
 
+/* Whether a vertex lies within `reach` of an edge of another ring, or of an
+ * edge of its own ring that does not end at it (the library then merges or
+ * splits there, moving the outline by about that much); *perimeter gets the
+ * edges' total length. */
+static int has_near_features(const fz_shape *sh, double reach, double *perimeter)
+{
+    size_t r, s = 0, v, t;
+    int near = 0;
+    *perimeter = 0.0;
+    for (r = 0; r < sh->nrings; s = sh->ends[r], r++)
+        for (t = s; t < sh->ends[r]; t++) {
+            const size_t u = t + 1 < sh->ends[r] ? t + 1 : s;
+            const double ax = sh->xy[2 * t], ay = sh->xy[2 * t + 1], dx = sh->xy[2 * u] - ax,
+                         dy = sh->xy[2 * u + 1] - ay, len2 = dx * dx + dy * dy;
+            *perimeter += sqrt(len2);
+            for (v = 0; v < sh->nv && !near; v++) {
+                if (v == t || v == u) continue;
+                const double px = sh->xy[2 * v] - ax, py = sh->xy[2 * v + 1] - ay;
+                double w = len2 > 0.0 ? (px * dx + py * dy) / len2 : 0.0;
+                w = w < 0.0 ? 0.0 : (w > 1.0 ? 1.0 : w);
+                if (hypot(px - w * dx, py - w * dy) <= reach) near = 1;
+            }
+        }
+    return near;
+}
+
 /* The box, the normalized copy and the measures, from xy and ends. */
 static void measure(fz_shape *sh)
 {
@@ -193,6 +219,16 @@ static void measure(fz_shape *sh)
             if (fabs(sh->xy[i]) > m) m = fabs(sh->xy[i]);
         const double size = fmin(sh->box[2] * 0.5 - sh->box[0] * 0.5, sh->box[3] * 0.5 - sh->box[1] * 0.5);
         if (!((double)sh->crossings * 0x1p-48 * (0.5 * m / size) <= 1e-10 * sh->frac)) sh->area_known = 0;
+    }
+    if (sh->area_known) { /* vertices merged (2^-43 of the largest |coordinate|) or taken
+                           * as on an edge (2^-44) move the area by the perimeter times
+                           * that at most: checked while that stays below 1e-10 of it */
+        double m = 0.0, perimeter;
+        for (i = 0; i < 2 * sh->nv; i++)
+            if (fabs(sh->xy[i]) > m) m = fabs(sh->xy[i]);
+        const double area = sh->frac * (sh->box[2] - sh->box[0]) * (sh->box[3] - sh->box[1]);
+        if (has_near_features(sh, 0x1p-42 * m, &perimeter) && !(perimeter * 0x1p-42 * m <= 1e-10 * area))
+            sh->area_known = 0;
     }
 }
 

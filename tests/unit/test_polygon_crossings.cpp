@@ -2,7 +2,8 @@
 // the polygon splits its edges where they cross (polygon_splits.hpp), so no
 // two of its edges cross, its area is the even-odd area of the rings given,
 // every point away from the edges lies where the given rings' parity says,
-// and a sampled pattern is maximal by the verifier.
+// and a sampled pattern is maximal by the verifier; rings that meet at
+// vertices within rounding of each other are merged there.
 #include <check.h>
 
 #include <algorithm>
@@ -231,6 +232,45 @@ START_TEST(edges_within_rounding_of_each_other_cancel) {
 }
 END_TEST
 
+// Rings that meet at vertices a few ulps apart: a unit square with, beside
+// its corner (0, 0) and moved by `offset`, a hole in that corner, a second
+// quadrilateral along its left side, or two triangles sharing its diagonal.
+// Each vertex near the square's is moved by up to `ulps` ulps of the
+// coordinates at random. Narrow slivers between the near edges were left
+// that no sampler's draw could reach, and the pattern failed the verifier.
+Rings near_shared_corners(int shape, double offset, int ulps, pds::Rng& rng) {
+    const double unit = std::nextafter(std::fabs(offset) + 2.0, HUGE_VAL) - (std::fabs(offset) + 2.0);
+    const auto o = [offset](double v) { return v + offset; };
+    const auto j = [&](double v) {
+        const double k = std::floor(rng.next_double() * (2 * ulps + 1)) - ulps;
+        return v + offset + k * unit;
+    };
+    const std::vector<double> square{o(0), o(0), o(1), o(0), o(1), o(1), o(0), o(1)};
+    if (shape == 0) return {square, {j(0), j(0), j(0), j(0.5), j(0.6), j(0.5), j(0.6), j(0)}};
+    if (shape == 1) return {square, {j(0), j(0), o(0.6), o(0), o(0.6), o(1.4), j(0), j(1)}};
+    return {{o(0), o(0), o(1), o(0), o(1), o(1)}, {j(0), j(0), j(1), j(1), j(0), j(1)},
+            {j(0), j(0), j(0), j(1), o(-1), o(0.5)}};
+}
+
+START_TEST(rings_meeting_within_rounding_at_vertices_merge) {
+    pds::Rng rng(15);
+    for (int shape = 0; shape < 3; ++shape)
+        for (const double offset : {0.0, -3.5, 1e6})
+            for (const int ulps : {4, 40, 400}) {
+                if (test_light() && ulps != 40) continue;
+                const Rings rings = near_shared_corners(shape, offset, ulps, rng);
+                // Merging moves a vertex by 2^-43 of the largest |coordinate| at
+                // most: the area moves by the perimeter times that at most.
+                const double largest = std::fabs(offset) + 1.4;
+                const pds::Polygon polygon = rings_of(rings);
+                const double area = slab_area(edges_of(rings)), slack = 8.0 * 0x1p-43 * largest;
+                ck_assert_msg(std::fabs(polygon.area() - area) <= slack, "shape %d at %g, %d ulps: area %.17g, even-odd %.17g",
+                              shape, offset, ulps, polygon.area(), area);
+                ck_assert_uint_gt(check_maximal_patterns(rings, 0.05), 100);
+            }
+}
+END_TEST
+
 // About n^2 / 10 crossings: beyond 4 per vertex and 65536 the rings are
 // refused, before their splits are made.
 START_TEST(rings_that_cross_too_often_are_refused) {
@@ -266,6 +306,7 @@ Suite* polygon_crossings_suite() {
     tcase_add_test(t, clusters_of_crossings_are_split_in_rounds);
     tcase_add_test(t, rings_that_cross_too_often_are_refused);
     tcase_add_test(t, edges_within_rounding_of_each_other_cancel);
+    tcase_add_test(t, rings_meeting_within_rounding_at_vertices_merge);
     tcase_add_test(t, patterns_where_rings_cross_are_maximal);
     suite_add_tcase(s, t);
     return s;
