@@ -49,7 +49,7 @@ extern "C" {
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
 #define PDS_VERSION_MINOR 7
-#define PDS_VERSION_PATCH 5
+#define PDS_VERSION_PATCH 6
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
 
@@ -430,8 +430,10 @@ PDS_API size_t pds_radii(const pds_sampler *s, size_t first, size_t count, doubl
  * doubles, so along crossing edges the domain may differ from the exact
  * region by slivers about an ulp of the coordinates wide; everything else
  * holds as for rings that do not cross. Likewise a vertex closer to an edge
- * than 2^-48 times the largest |coordinate| is taken as on it (two edges
- * that close along a stretch share it, and cancel there). The copy is kept:
+ * than 2^-44 times the largest |coordinate| is taken as on it (two edges
+ * that close along a stretch share it, and cancel there), and vertices of
+ * different rings closer than 2^-43 times it to each other are moved to one
+ * of them (two rings meeting at a corner a few ulps apart). The copy is kept:
  * the arrays may be freed. The domain's bounding box replaces the rectangle
  * of pds_set_domain, and a radius map is spread over that box. A polygon
  * replaces an earlier polygon or mask; nrings == 0 (xy and ring_ends may be
