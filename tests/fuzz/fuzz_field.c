@@ -112,7 +112,9 @@ int fz_field_fails_everywhere(const fz_state *st)
 /* Where (x, y) lies in the domain, in [0, 1] (0 when the side overflows). */
 static double unit(double c, double lo, double hi)
 {
-    const double t = (c - lo) / (hi - lo);
+    /* [-DBL_MAX, DBL_MAX] is wider than DBL_MAX: halved, it is not (exact
+     * there, far from subnormals) */
+    const double t = isinf(hi - lo) ? (0.5 * c - 0.5 * lo) / (0.5 * hi - 0.5 * lo) : (c - lo) / (hi - lo);
     return t >= 0.0 ? (t <= 1.0 ? t : 1.0) : 0.0; /* NaN -> 0 */
 }
 
