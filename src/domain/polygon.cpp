@@ -89,8 +89,9 @@ std::vector<std::uint8_t> paired_copies(const PolygonRings& rings) {
 
 Polygon::Polygon(const double* xy, const std::size_t* ring_ends, std::size_t rings)
     : rings_(std::make_unique<PolygonRings>(xy, ring_ends, rings)), index_(std::make_unique<PolygonIndex>(*rings_)) {
-    // Edges that cross are split where they cross, and edges that overlap in
-    // part where they meet (polygon_splits.hpp). Where three edges or more
+    // Edges that cross are split where they cross, edges that overlap in
+    // part where they meet, and vertices of different rings within rounding
+    // of each other merged (polygon_splits.hpp). Where three edges or more
     // cross within rounding of one point, a rounded crossing can make
     // another crossing, or land on a third edge: so again, until nothing is
     // split (of 20,000 random clusters of 3 to 6 edges through one point

@@ -123,18 +123,14 @@ Point crossing_point(Segment s, Segment t) {
     return p;
 }
 
-}  // namespace
-
-namespace {
-
 // The rings with each group of vertices joined by `pairs` moved to its least
 // point (by x, then y), when each ring has one point in the group and it
 // spans no more than twice `reach`. False, and nothing written, when no
 // vertex moves or the moved rings are not rings (one flattened: below
 // resolution, kept as given).
 bool merge_groups(const PolygonRings& rings, const std::vector<std::uint32_t>& ring_of,
-                  std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, double reach, std::vector<double>& xy,
-                  std::vector<std::size_t>& ends) {
+                  const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, double reach,
+                  std::vector<double>& xy, std::vector<std::size_t>& ends) {
     const std::vector<Point>& points = rings.points();
     std::vector<std::uint32_t> parent(rings.vertices());
     for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<std::uint32_t>(i);

@@ -23,9 +23,10 @@
 // Two rings may also meet at vertices a few ulps apart (a corner shared by
 // two rings, rounded differently in each). The edges from such a pair may
 // run as close as the vertices are for their whole length, and no vertex
-// lies inside another's edge, so they are merged first: one point for
-// both, the edges from it then copies or split where the other's vertices
-// lie. Merging moves a vertex by no more than twice the near-edge reach.
+// lies inside another's edge, so they are merged: one point for both, the
+// edges from it then copies, or split where the other's vertices lie (in
+// the next round). Merging moves a vertex by no more than twice the
+// near-edge reach.
 //
 // That reach, 2^-44 of the largest |coordinate|, is 16 times the probes'
 // first offset (polygon.cpp): slivers between edges that are left are wider
