@@ -194,6 +194,7 @@ static int has_near_features(const fz_shape *sh, double reach, double *perimeter
 static void measure(fz_shape *sh)
 {
     size_t i;
+    double m = 0.0; /* the largest |coordinate| */
     sh->box[0] = sh->box[2] = sh->xy[0];
     sh->box[1] = sh->box[3] = sh->xy[1];
     for (i = 0; i < sh->nv; i++) {
@@ -212,20 +213,18 @@ static void measure(fz_shape *sh)
     }
     sh->frac = slab_area(sh, &sh->crossings);
     sh->area_known = !has_spike_tip(sh) && sh->box[0] < sh->box[2] && sh->box[1] < sh->box[3];
-    if (sh->crossings > 0) { /* the library's rounded crossings move its area: checked while
-                              * that stays below 1e-10 of it */
-        double m = 0.0;
-        for (i = 0; i < 2 * sh->nv; i++)
-            if (fabs(sh->xy[i]) > m) m = fabs(sh->xy[i]);
+    for (i = 0; i < 2 * sh->nv; i++)
+        if (fabs(sh->xy[i]) > m) m = fabs(sh->xy[i]);
+    if (sh->crossings > 0) { /* the library's rounded crossings (snapped to an end within 2^-44
+                              * of the largest |coordinate|) move its area: checked while that
+                              * stays below 1e-10 of it */
         const double size = fmin(sh->box[2] * 0.5 - sh->box[0] * 0.5, sh->box[3] * 0.5 - sh->box[1] * 0.5);
-        if (!((double)sh->crossings * 0x1p-48 * (0.5 * m / size) <= 1e-10 * sh->frac)) sh->area_known = 0;
+        if (!((double)sh->crossings * 0x1p-44 * (0.5 * m / size) <= 1e-10 * sh->frac)) sh->area_known = 0;
     }
     if (sh->area_known) { /* vertices merged (2^-43 of the largest |coordinate|) or taken
                            * as on an edge (2^-44) move the area by the perimeter times
                            * that at most: checked while that stays below 1e-10 of it */
-        double m = 0.0, perimeter;
-        for (i = 0; i < 2 * sh->nv; i++)
-            if (fabs(sh->xy[i]) > m) m = fabs(sh->xy[i]);
+        double perimeter;
         const double area = sh->frac * (sh->box[2] - sh->box[0]) * (sh->box[3] - sh->box[1]);
         if (has_near_features(sh, 0x1p-42 * m, &perimeter) && !(perimeter * 0x1p-42 * m <= 1e-10 * area))
             sh->area_known = 0;
