@@ -243,14 +243,19 @@ if [ -f "$tmp/sigdfl" ]; then
 
     # Without a progress line the callback still listens for Ctrl-C. Nothing
     # shows when the handler is in place, so on Linux its bit in SigCgt is
-    # awaited (elsewhere a second). A SIGINT that came too early would end the
-    # program by the signal: status 130 too, but no message.
+    # awaited (elsewhere a second), once the process runs the program: just
+    # after the fork it is still this shell, whose 'exit 130' trap shows the
+    # same bit, and a SIGINT it swallows there never reaches the program. A
+    # SIGINT that came too early would end the program by the signal: status
+    # 130 too, but no message.
     "$tmp/sigdfl" "$cli" --radius 0.0003 > "$tmp/intq.out" 2> "$tmp/intq.err" &
     i_pid=$!
     if [ -r "/proc/$i_pid/status" ]; then
         i_polls=0
-        until sed -n 's/^SigCgt:[[:space:]]*//p' "/proc/$i_pid/status" 2> /dev/null \
-                  | grep -q '[2367abefABEF]$' || [ "$i_polls" -ge 1200 ]; do
+        i_exe=$(readlink -f "$cli")
+        until { [ "$(readlink "/proc/$i_pid/exe" 2> /dev/null)" = "$i_exe" ] &&
+                sed -n 's/^SigCgt:[[:space:]]*//p' "/proc/$i_pid/status" 2> /dev/null \
+                    | grep -q '[2367abefABEF]$'; } || [ "$i_polls" -ge 1200 ]; do
             sleep 0.05
             i_polls=$((i_polls + 1))
         done
