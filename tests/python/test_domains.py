@@ -64,6 +64,22 @@ class PolygonTest(TestCase):
                          "none in the hole")
         self.assertTrue(any(x > 1.5 and y < 0.5 for x, y in as_pairs(pts)), "the arms are filled")
 
+    def test_rings_meeting_at_corners_a_few_ulps_apart(self):
+        # A square with a hole in its corner, the hole's corners 5 to 18 ulps
+        # off the square's sides: merged, so the area is the square's less
+        # the hole's, and the pattern is maximal by the library's verifier.
+        square = [(-3.5, -3.5), (-2.5, -3.5), (-2.5, -2.5), (-3.5, -2.5)]
+        hole = [(-3.500000000000016, -3.500000000000007), (-3.5000000000000133, -2.9999999999999867),
+                (-2.8999999999999946, -3.0000000000000133), (-2.9000000000000106, -3.499999999999983)]
+        with Sampler(0.02, seed=1, domain=[square, hole]) as s:
+            self.assertAlmostEqual(s.free_area, 0.7, delta=1e-12)
+            self.assertIs(s.run(), True)
+            self.assertIs(s.verify(), True)
+            pts = as_pairs(s.points)
+        self.assertGreater(len(pts), 1000)
+        self.assertFalse(any(-3.5 + 1e-12 < x < -2.9 - 1e-12 and -3.5 + 1e-12 < y < -3.0 - 1e-12 for x, y in pts),
+                         "none in the hole")
+
     def test_the_same_points_however_the_run_is_split(self):
         whole = poissondisk.sample(R, seed=8, domain=[OUTER, HOLE])
         with Sampler(R, seed=8, domain=[OUTER, HOLE]) as s:

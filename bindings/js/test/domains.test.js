@@ -37,6 +37,21 @@ test('polygon with a hole: inside, R apart, maximal; bounds is its bounding box'
   s.dispose();
 });
 
+test('rings meeting at corners a few ulps apart: merged, the area is the square less the hole, maximal', async () => {
+  // The hole's corners lie 5 to 18 ulps off the square's sides.
+  const square = [[-3.5, -3.5], [-2.5, -3.5], [-2.5, -2.5], [-3.5, -2.5]];
+  const hole = [[-3.500000000000016, -3.500000000000007], [-3.5000000000000133, -2.9999999999999867],
+    [-2.8999999999999946, -3.0000000000000133], [-2.9000000000000106, -3.499999999999983]];
+  const s = await Sampler.create(0.02, { seed: 1, polygon: [square, hole] });
+  assert.ok(Math.abs(s.freeArea - 0.7) < 1e-12, `free area ${s.freeArea}, 0.7 expected`);
+  assert.equal(s.run(), true);
+  assert.equal(s.verify(), true);
+  const pts = pairs(s.points());
+  assert.ok(pts.length > 1000);
+  assert.ok(!pts.some(([x, y]) => x > -3.5 + 1e-12 && x < -2.9 - 1e-12 && y > -3.5 + 1e-12 && y < -3.0 - 1e-12), 'none in the hole');
+  s.dispose();
+});
+
 test('rings as pairs, as flat numbers, one ring alone, GeoJSON: the same points', async () => {
   const rings = [closed(OUTER), closed(HOLE)];
   const a = await poissonDisk(0.06, { seed: 6, polygon: rings });
