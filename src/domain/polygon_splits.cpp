@@ -145,18 +145,23 @@ bool merge_groups(const PolygonRings& rings, const std::vector<std::uint32_t>& r
         grouped.push_back(v);
         grouped.push_back(w);
     }
+    // Each vertex once (a pair is found from both ends), its group's root
+    // then its own parent, so the sort below reads groups without a search.
+    std::sort(grouped.begin(), grouped.end());
+    grouped.erase(std::unique(grouped.begin(), grouped.end()), grouped.end());
+    for (const std::uint32_t v : grouped) parent[v] = root(v);
     std::sort(grouped.begin(), grouped.end(), [&](std::uint32_t i, std::uint32_t j) {
-        return std::make_tuple(root(i), ring_of[i], points[i].x, points[i].y) <
-               std::make_tuple(root(j), ring_of[j], points[j].x, points[j].y);
+        return std::make_tuple(parent[i], ring_of[i], points[i].x, points[i].y) <
+               std::make_tuple(parent[j], ring_of[j], points[j].x, points[j].y);
     });
     std::vector<Point> moved(points);
     bool any = false;
     for (std::size_t from = 0, to; from < grouped.size(); from = to) {
-        const std::uint32_t group = root(grouped[from]);
+        const std::uint32_t group = parent[grouped[from]];
         Point least = points[grouped[from]];
         Box span{least.x, least.y, least.x, least.y};
         bool one_point_per_ring = true;
-        for (to = from; to < grouped.size() && root(grouped[to]) == group; ++to) {
+        for (to = from; to < grouped.size() && parent[grouped[to]] == group; ++to) {
             const Point& q = points[grouped[to]];
             if (to > from && ring_of[grouped[to - 1]] == ring_of[grouped[to]] && !same(points[grouped[to - 1]], q))
                 one_point_per_ring = false;
