@@ -237,6 +237,7 @@ void DartGrid<Cells>::keep_to(const Polygon& polygon) {
     if (torus_.on()) return;  // no polygon on the torus
     keep_ = &polygon.index();
     kept_cells_ = keep_->grid_cells_not_outside(box_.x0, side_x_, cols_, box_.y0, side_y_, rows_);
+    cells_.writes_only_in(kept_cells_);
 }
 
 template <class Cells>

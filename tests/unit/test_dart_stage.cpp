@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #if defined(__linux__)
@@ -20,6 +21,7 @@
 #include "sampler/sampler.hpp"
 #include "core/predicates.hpp"
 #include "verify/spatial_hash.hpp"
+#include "polygon_rings.hpp"
 #include "suites.hpp"
 
 namespace {
@@ -186,6 +188,52 @@ START_TEST(huge_pages_follow_the_points) {
 }
 END_TEST
 
+START_TEST(huge_pages_only_where_a_polygon_fills_its_grid) {
+    // A ring 0.01 wide inside the unit square keeps about 6% of the cells of
+    // the grid over its box (141 MB at R = 3.4e-4): even a reservation that
+    // would make the rectangle's grid resident (huge pages, every page made
+    // writable) must leave its pages to be made resident as points land, or
+    // the ring's run holds the whole box's grid. A square polygon filling
+    // its box keeps them, as the rectangle does. The ring's points still land
+    // in the ring, spaced.
+    constexpr int kSides = 256;
+    std::vector<double> outer, inner;
+    for (int k = 0; k < kSides; ++k) {
+        const double a = 2.0 * M_PI * k / kSides;
+        outer.insert(outer.end(), {0.5 + 0.5 * std::cos(a), 0.5 + 0.5 * std::sin(a)});
+        inner.insert(inner.end(), {0.5 + 0.49 * std::cos(a), 0.5 + 0.49 * std::sin(a)});
+    }
+    const double r = 3.4e-4;
+    auto ring = std::make_shared<const pds::Polygon>(rings_of({outer, inner}));
+    pds::DartStage thin(pds::Box{0, 0, 1, 1}, ring, r);
+    pds::DartStage plain(pds::Box{0, 0, 1, 1}, nullptr, r);
+    ck_assert_uint_lt(thin.grid().cell_count(), plain.grid().cell_count() / 10);
+    thin.reserve(1000000);
+    ck_assert_uint_eq(thin.grid().cells().advised_bytes(), 0);
+    ck_assert_uint_eq(thin.grid().cells().populated_bytes(), 0);
+    pds::Rng rng(5);
+    std::vector<pds::Point> pts;
+    for (int k = 0; k < 2000; ++k) {
+        const pds::Point* p = thin.next(rng);
+        ck_assert(p != nullptr);
+        ck_assert(ring->contains(*p));
+        pts.push_back(*p);
+        thin.add_next();
+    }
+    double least = 2.0;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            least = std::min(least, std::hypot(pts[i].x - pts[j].x, pts[i].y - pts[j].y));
+    ck_assert_double_ge(least, r);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    auto square = std::make_shared<const pds::Polygon>(rings_of({{0, 0, 1, 0, 1, 1, 0, 1}}));
+    pds::DartStage full(pds::Box{0, 0, 1, 1}, square, r);
+    full.reserve(1000000);
+    ck_assert_uint_gt(full.grid().cells().advised_bytes(), std::size_t{128} << 20);
+#endif
+}
+END_TEST
+
 START_TEST(sparse_grid_decides_as_the_dense_one) {
     // The filter and the exact predicate decide every dart exactly, so a
     // grid keeping only its taken cells (a hash table) gives the points of
@@ -272,6 +320,7 @@ Suite* dart_stage_suite() {
     tcase_add_test(t, dart_points_keep_their_distance);
     tcase_add_test(t, handover_order_follows_the_curve_on_a_square);
     tcase_add_test(t, huge_pages_follow_the_points);
+    tcase_add_test(t, huge_pages_only_where_a_polygon_fills_its_grid);
     tcase_add_test(t, sparse_grid_decides_as_the_dense_one);
     tcase_add_test(t, bounded_run_on_a_thin_torus_throws_darts);
     suite_add_tcase(s, t);
