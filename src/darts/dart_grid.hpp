@@ -40,6 +40,7 @@
 #include "darts/dart_constants.hpp"
 #include "darts/grid_arithmetic.hpp"
 #include "darts/grid_storage.hpp"
+#include "darts/polygon_raster.hpp"
 
 namespace pds {
 
@@ -73,7 +74,9 @@ public:
     // Darts from now on only where the polygon's grid does not say outside:
     // uniform over that union of its cells, which holds the polygon (a dart
     // drawn in an outside cell is drawn again, at the cost of one lookup in
-    // a small array). The polygon must outlive the grid.
+    // a small array). A polygon that fills little of the box (raster_suits)
+    // has its darts drawn among the grid cells it may meet instead
+    // (polygon_raster.hpp), each cell alike. The polygon must outlive the grid.
     void keep_to(const Polygon& polygon);
     // Whether d is at least R from every point; points[k] is point k.
     bool is_free(const Dart& d, const std::vector<Point>& points, const std::vector<double>&) const;
@@ -127,7 +130,8 @@ private:
     std::size_t cols_ = 0, rows_ = 0;  // real cells; the padded row has cols_ + 2 kPad
     std::size_t stride_ = 0;
     const PolygonIndex* keep_ = nullptr;  // keep_to's polygon grid, or none
-    std::size_t kept_cells_ = 0;          // grid cells that meet its cells not outside
+    PolygonRaster raster_;                // or, for a polygon filling little of the box, its cells
+    std::size_t kept_cells_ = 0;          // grid cells darts are drawn in
     Cells cells_;
     mutable std::size_t exact_checks_ = 0;
 };
@@ -209,7 +213,13 @@ void DartGrid<Cells>::throw_darts(Dart* batch, std::size_t n, Rng& rng) const {
     const double w = static_cast<double>(cols_) * side_x_, h = static_cast<double>(rows_) * side_y_;
     for (std::size_t k = 0; k < n; ++k) {
         Dart& d = batch[k];
-        if (keep_) {
+        if (raster_.cells() > 0) {
+            const double cells = static_cast<double>(raster_.cells());
+            std::size_t col, row;
+            raster_.cell(std::min(raster_.cells() - 1, static_cast<std::size_t>(rng.next_double() * cells)), &col, &row);
+            d.p.x = box_.x0 + (static_cast<double>(col) + rng.next_double()) * side_x_;
+            d.p.y = box_.y0 + (static_cast<double>(row) + rng.next_double()) * side_y_;
+        } else if (keep_) {
             do {
                 d.p.x = box_.x0 + rng.next_double() * w;
                 d.p.y = box_.y0 + rng.next_double() * h;
@@ -237,6 +247,13 @@ void DartGrid<Cells>::keep_to(const Polygon& polygon) {
     if (torus_.on()) return;  // no polygon on the torus
     keep_ = &polygon.index();
     kept_cells_ = keep_->grid_cells_not_outside(box_.x0, side_x_, cols_, box_.y0, side_y_, rows_);
+    if (raster_suits(polygon, box_)) {
+        // A raster no larger than a few words per cell of the polygon's area.
+        const double cap = 1048576.0 + 4.0 * polygon.area() / (side_x_ * side_y_);
+        const auto max_bands = cap < 0x1p62 ? static_cast<std::size_t>(cap) : std::size_t{1} << 62;
+        if (raster_.build(polygon, box_.x0, side_x_, cols_, box_.y0, side_y_, rows_, max_bands))
+            kept_cells_ = raster_.cells();
+    }
     cells_.writes_only_in(kept_cells_);
 }
 

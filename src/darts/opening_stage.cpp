@@ -1,7 +1,11 @@
 // opening_stage.cpp - which opening stage a run gets (see opening_stage.hpp).
 #include "darts/opening_stage.hpp"
 
+#include <cmath>
+
+#include "darts/dart_constants.hpp"
 #include "darts/dart_stage.hpp"
+#include "darts/polygon_raster.hpp"
 #include "darts/space_time_stage.hpp"
 #include "domain/frame.hpp"
 #include "radius/point_radii.hpp"
@@ -12,6 +16,14 @@ namespace pds {
 namespace {
 
 enum class Opening { none, space_time, dense, sparse, field };
+
+constexpr double kSparseFrom = 128.0;
+
+// The cells of a dart grid of radius r over the box (dart_grid.hpp's side).
+double grid_cells(const Box& box, double r) {
+    const double side = darts::kCellShrink * r / std::sqrt(2.0);
+    return std::ceil(box.width() / side) * std::ceil(box.height() / side);
+}
 
 Opening opening_for(const Frame& frame, double count_bound, const RadiusField* field, bool space_time) {
     const bool fits = count_bound <= static_cast<double>(Frame::max_points());
@@ -33,7 +45,14 @@ Opening opening_for(const Frame& frame, double count_bound, const RadiusField* f
     // Asked for, in a rectangle: the space-time process (its darts tied to
     // space, so threads share its work). On the torus and in a polygon, the
     // dart grid that handles their copies and outlines.
+    // A polygon that fills little of its box draws its darts among the grid
+    // cells it meets (polygon_raster.hpp); its grid keeps only its taken
+    // cells once the whole grid would have over kSparseFrom cells for each
+    // point the polygon can hold (islands far apart: more than memory).
     if (!fits) return Opening::sparse;
+    if (frame.polygon() && raster_suits(*frame.polygon(), frame.domain().bounds()) &&
+        grid_cells(frame.domain().bounds(), frame.r()) > kSparseFrom * count_bound)
+        return Opening::sparse;
     return space_time && !frame.torus().on() && !frame.polygon() ? Opening::space_time : Opening::dense;
 }
 

@@ -190,6 +190,26 @@ START_TEST(maximal_where_rings_meet_within_rounding)
 }
 END_TEST
 
+/* Two unit squares 1000 apart fill 2e-6 of their box: at R 0.01 a grid over
+ * the whole box would hold 2e10 cells (160 GB) for some 14,000 points. The
+ * run is maximal and verified, with memory and time for the squares alone. */
+static const double far_islands_xy[] = {0, 0, 1, 0, 1, 1, 0, 1, 1000, 1000, 1001, 1000, 1001, 1001, 1000, 1001};
+static const size_t far_islands_ends[] = {4, 8};
+
+START_TEST(maximal_on_islands_far_apart)
+{
+    const region g = {far_islands_xy, far_islands_ends, 2};
+    pds_sampler *s = in_polygon(&g, 0.01, 7);
+    size_t n;
+
+    assert_rel_close(pds_free_area(s), 2.0, 1e-12, "two unit squares 1000 apart");
+    n = run_to_end(s);
+    ck_assert_msg(n > 10000, "two unit squares 1000 apart, R 0.01: %zu points", n);
+    assert_domain_pattern(s, &g, NULL, 0, "two unit squares 1000 apart, R 0.01");
+    pds_destroy(s);
+}
+END_TEST
+
 /* The unit L at 1e-6 scale, and moved 1e5 away from the origin. */
 START_TEST(maximal_in_the_l_scaled_and_moved)
 {
@@ -342,6 +362,7 @@ Suite *domain_points_suite(void)
     tcase_add_loop_test(tc, maximal_in_each_shape, 0, (int)N_SHAPES);
     tcase_add_loop_test(tc, maximal_where_rings_cross, 0, 2);
     tcase_add_test(tc, maximal_where_rings_meet_within_rounding);
+    tcase_add_test(tc, maximal_on_islands_far_apart);
     tcase_add_loop_test(tc, maximal_in_the_l_scaled_and_moved, 0, 2);
     tcase_add_test(tc, maximal_in_a_frame_far_thinner_than_r);
     tcase_add_test(tc, same_points_at_any_power_of_two);

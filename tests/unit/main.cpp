@@ -36,6 +36,7 @@ int main() {
     srunner_add_suite(runner, polygon_suite());
     srunner_add_suite(runner, polygon_domain_suite());
     srunner_add_suite(runner, polygon_crossings_suite());
+    srunner_add_suite(runner, polygon_raster_suite());
     srunner_add_suite(runner, outline_clip_suite());
     srunner_add_suite(runner, fixed_points_suite());
     srunner_run_all(runner, CK_NORMAL);

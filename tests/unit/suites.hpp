@@ -38,6 +38,7 @@ Suite* progress_suite();
 Suite* polygon_suite();
 Suite* polygon_domain_suite();
 Suite* polygon_crossings_suite();
+Suite* polygon_raster_suite();
 Suite* outline_clip_suite();
 Suite* fixed_points_suite();
 
