@@ -118,7 +118,7 @@ CLI_SRC := tools/poissondisk.c tools/cli_args.c tools/cli_options.c tools/cli_pr
            tools/cli_field.c tools/pgm.c tools/cli_domain.c \
            tools/shape_files.c tools/shape_text.c tools/geojson.c tools/json_check.c \
            tools/cli_sample.c tools/cli_outputs.c tools/cli_output_args.c tools/cli_spectrum.c \
-           tools/out_formats.c tools/pattern_svg.c tools/pattern_png.c tools/pattern_domain.c tools/pattern_stats.c tools/pattern_layers.c \
+           tools/out_formats.c tools/pattern_svg.c tools/pattern_png.c tools/pattern_domain.c tools/pattern_stats.c tools/pattern_layers.c tools/pattern_kdtree.c \
            tools/png.c tools/points_in.c tools/spectrum.c tools/spectrum_out.c \
            tools/spectrum_plot.c
 $(CLI): $(CLI_SRC) $(wildcard tools/*.h) include/poissondisk.h $(LIB_A)
@@ -290,15 +290,16 @@ check-pkgconfig: all
 	sh tests/check-pkgconfig.sh
 
 # check-tools: the program's file readers that need no library (tools/shape_files.h: the
-# polygon and fixed-point files), tested on their own from the top of the repository (the
+# polygon and fixed-point files) and its --stats line's nearest neighbours, tested on their own from the top of the repository (the
 # data is in tests/tools/data/), then under Valgrind when it is installed (CK_FORK=no;
 # PDS_TEST_LIGHT=1: 10^5 vertices instead of 10^6) unless TOOLS_VALGRIND=no (check-quick).
-TOOLS_TEST_SRC := tests/tools/shape_files_test.c tests/tools/shape_files_bad.c \
-                  tools/shape_files.c tools/shape_text.c tools/geojson.c tools/json_check.c
+TOOLS_TEST_SRC := tests/tools/shape_files_test.c tests/tools/shape_files_bad.c tests/tools/pattern_stats_test.c \
+                  tools/shape_files.c tools/shape_text.c tools/geojson.c tools/json_check.c \
+                  tools/pattern_stats.c tools/pattern_layers.c tools/pattern_kdtree.c
 TOOLS_TEST_BIN := $(B)/tests/shape_files
 TOOLS_VALGRIND ?= yes
 $(TOOLS_TEST_BIN): $(TOOLS_TEST_SRC) $(wildcard tests/tools/*.h) tools/shape_files.h \
-                   tools/shape_files_internal.h
+                   tools/shape_files_internal.h tools/pattern_stats.h tools/pattern_kdtree.h
 	@mkdir -p $(@D)
 	$(CC) $(PDS_TEST_CFLAGS) $(CFLAGS) -Itools -o $@ $(TOOLS_TEST_SRC) $(CHECK_LIBS) -lm
 

@@ -129,6 +129,16 @@ expect "--polygon, rings meeting within rounding: exits 0, maximal and verified 
     eval '[ "$rc" -eq 0 ] && grep -q " maximal verified " "$tmp/near.err"'
 expect "--polygon, rings meeting within rounding: inside (even-odd), spaced" \
     eval 'dc inside "$tmp/near.out" "polygon:$tmp/near.txt" && dc spacing "$tmp/near.out" 0.02 -'
+# Two unit squares 1000 apart: a grid over their whole box would not fit in
+# memory at this radius; the run holds what the squares need.
+printf '0 0\n1 0\n1 1\n0 1\n\n1000 1000\n1001 1000\n1001 1001\n1000 1001\n' > "$tmp/far.txt"
+run far --radius 0.005 --polygon "$tmp/far.txt" --verify --stats
+expect "--polygon, two squares 1000 apart: exits 0, maximal and verified (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && grep -q " maximal verified " "$tmp/far.err"'
+expect "--polygon, two squares 1000 apart: inside, spaced, in both squares" \
+    eval 'dc inside "$tmp/far.out" "polygon:$tmp/far.txt" && dc spacing "$tmp/far.out" 0.005 - &&
+          [ "$(awk "\$1 > 500" "$tmp/far.out" | wc -l)" -gt 20000 ] &&
+          [ "$(awk "\$1 < 500" "$tmp/far.out" | wc -l)" -gt 20000 ]'
 run geo --radius 0.02 --polygon "$tmp/shape.geojson"
 expect "--polygon GeoJSON: the same points as the same rings in text" \
     eval '[ "$rc" -eq 0 ] && cmp -s "$tmp/poly.out" "$tmp/geo.out"'

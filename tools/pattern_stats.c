@@ -3,6 +3,7 @@
  * (see pattern_stats.h).
  */
 #include "pattern_stats.h"
+#include "pattern_kdtree.h"
 #include "pattern_layers.h"
 
 #include <math.h>
@@ -169,6 +170,17 @@ static int grid_build(struct grid *g_out, const double *xy, size_t n, const doub
     return 0;
 }
 
+/* Whether some cell holds over 64 points: the points crowd into a small part
+   of the box (islands far apart), and the rings would read them all. */
+static int crowded(const struct grid *g)
+{
+    size_t c, ncells = (size_t)g->nx * (size_t)g->ny;
+    for (c = 0; c < ncells; c++)
+        if (g->start[c + 1] - g->start[c] > 64)
+            return 1;
+    return 0;
+}
+
 int pattern_nn_stats(const double *xy, size_t n, const double box[4], int periodic, double r,
                      double *min_dist, double *mean_nn)
 {
@@ -181,13 +193,27 @@ int pattern_nn_stats(const double *xy, size_t n, const double box[4], int period
         return 1;
     if (grid_build(&g, xy, n, box, periodic, r) != 0)
         return -1;
-    for (k = 0; k < n; k++) {
-        double d = nearest(&g, k, NULL, 1.0);
-        sum += d;
-        least = d < least ? d : least;
+    if (!periodic && crowded(&g)) {
+        struct pattern_kdtree t;
+        free(g.start);
+        free(g.order);
+        if (pattern_kdtree_build(&t, xy, n) != 0)
+            return -1;
+        for (k = 0; k < n; k++) {
+            double d = sqrt(pattern_kdtree_nearest2(&t, k));
+            sum += d;
+            least = d < least ? d : least;
+        }
+        pattern_kdtree_free(&t);
+    } else {
+        for (k = 0; k < n; k++) {
+            double d = nearest(&g, k, NULL, 1.0);
+            sum += d;
+            least = d < least ? d : least;
+        }
+        free(g.start);
+        free(g.order);
     }
-    free(g.start);
-    free(g.order);
     *min_dist = least;
     *mean_nn = sum / (double)n;
     return 0;

@@ -25,6 +25,13 @@ double grid_cells(const Box& box, double r) {
     return std::ceil(box.width() / side) * std::ceil(box.height() / side);
 }
 
+// A polygon that fills little of its box, whose grid of radius r over the
+// box would have over kSparseFrom cells for each point it can hold.
+bool spread_thin(const Frame& frame, double r, double count_bound) {
+    return frame.polygon() && raster_suits(*frame.polygon(), frame.domain().bounds()) &&
+           grid_cells(frame.domain().bounds(), r) > kSparseFrom * count_bound;
+}
+
 Opening opening_for(const Frame& frame, double count_bound, const RadiusField* field, bool space_time) {
     const bool fits = count_bound <= static_cast<double>(Frame::max_points());
     if (field) {
@@ -33,8 +40,13 @@ Opening opening_for(const Frame& frame, double count_bound, const RadiusField* f
         // torus the loop runs alone: the copies of a point would go into
         // every layer's padding, and the torus's mesh widens its margin as
         // the points come (jones_stage.hpp).
+        // So does a polygon whose layers' grids, spanning its box, would
+        // have over kSparseFrom cells for each point it can hold (islands
+        // far apart): the loop's memory follows the points.
         const bool few_layers = field->rmax() <= LayeredGrid::kMaxRatio * field->rmin();
-        return fits && few_layers && !frame.torus().on() ? Opening::field : Opening::none;
+        const double rmin = frame.r() * (field->rmin() / field->rmax());
+        return fits && few_layers && !frame.torus().on() && !spread_thin(frame, rmin, count_bound) ? Opening::field
+                                                                                                   : Opening::none;
     }
     // One radius: a dense grid while a maximal pattern fits the index (its
     // address space then stays within a few words a point). Beyond, only
@@ -49,10 +61,7 @@ Opening opening_for(const Frame& frame, double count_bound, const RadiusField* f
     // cells it meets (polygon_raster.hpp); its grid keeps only its taken
     // cells once the whole grid would have over kSparseFrom cells for each
     // point the polygon can hold (islands far apart: more than memory).
-    if (!fits) return Opening::sparse;
-    if (frame.polygon() && raster_suits(*frame.polygon(), frame.domain().bounds()) &&
-        grid_cells(frame.domain().bounds(), frame.r()) > kSparseFrom * count_bound)
-        return Opening::sparse;
+    if (!fits || spread_thin(frame, frame.r(), count_bound)) return Opening::sparse;
     return space_time && !frame.torus().on() && !frame.polygon() ? Opening::space_time : Opening::dense;
 }
 

@@ -349,6 +349,7 @@ int main(void)
     int failed;
 
     srunner_add_suite(runner, shape_files_bad_suite());
+    srunner_add_suite(runner, pattern_stats_suite());
     srunner_run_all(runner, CK_NORMAL);
     failed = srunner_ntests_failed(runner);
     srunner_free(runner);

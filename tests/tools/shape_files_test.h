@@ -28,5 +28,7 @@ void assert_message(const char *msg, const char *name, const char *what);
 char *exact_copy(const char *text, size_t len);
 
 Suite *shape_files_bad_suite(void);
+/* The --stats line's nearest neighbours (pattern_stats_test.c). */
+Suite *pattern_stats_suite(void);
 
 #endif
