@@ -250,7 +250,8 @@ void DartGrid<Cells>::keep_to(const Polygon& polygon) {
     if (raster_suits(polygon, box_)) {
         // A raster no larger than a few words per cell of the polygon's area.
         const double cap = 1048576.0 + 4.0 * polygon.area() / (side_x_ * side_y_);
-        const auto max_bands = cap < 0x1p62 ? static_cast<std::size_t>(cap) : std::size_t{1} << 62;
+        const std::size_t most = static_cast<std::size_t>(-1);
+        const std::size_t max_bands = cap < static_cast<double>(most) ? static_cast<std::size_t>(cap) : most;
         if (raster_.build(polygon, box_.x0, side_x_, cols_, box_.y0, side_y_, rows_, max_bands))
             kept_cells_ = raster_.cells();
     }

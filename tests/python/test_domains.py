@@ -80,6 +80,22 @@ class PolygonTest(TestCase):
         self.assertFalse(any(-3.5 + 1e-12 < x < -2.9 - 1e-12 and -3.5 + 1e-12 < y < -3.0 - 1e-12 for x, y in pts),
                          "none in the hole")
 
+    def test_islands_far_apart(self):
+        # Two unit squares 1000 apart: a grid over their whole box would not
+        # fit in memory at this radius; the run holds what the squares need.
+        a = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+        b = [(x + 1000.0, y + 1000.0) for x, y in a]
+        with Sampler(0.01, seed=3, domain=[a, b]) as s:
+            self.assertAlmostEqual(s.free_area, 2.0, delta=1e-12)
+            self.assertIs(s.run(), True)
+            self.assertIs(s.verify(), True)
+            pts = as_pairs(s.points)
+        near = [p for p in pts if p[0] < 500.0]
+        self.assertGreater(len(near), 5000)
+        self.assertGreater(len(pts) - len(near), 5000)
+        self.assertTrue(all(0.0 <= x <= 1.0 and 0.0 <= y <= 1.0 for x, y in near))
+        self.assertTrue(all(1000.0 <= x <= 1001.0 and 1000.0 <= y <= 1001.0 for x, y in pts if x >= 500.0))
+
     def test_the_same_points_however_the_run_is_split(self):
         whole = poissondisk.sample(R, seed=8, domain=[OUTER, HOLE])
         with Sampler(R, seed=8, domain=[OUTER, HOLE]) as s:
