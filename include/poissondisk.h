@@ -49,7 +49,7 @@ extern "C" {
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
 #define PDS_VERSION_MINOR 7
-#define PDS_VERSION_PATCH 6
+#define PDS_VERSION_PATCH 7
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
 
@@ -435,9 +435,11 @@ PDS_API size_t pds_radii(const pds_sampler *s, size_t first, size_t count, doubl
  * different rings closer than 2^-43 times it to each other are moved to one
  * of them (two rings meeting at a corner a few ulps apart). The copy is kept:
  * the arrays may be freed. The domain's bounding box replaces the rectangle
- * of pds_set_domain, and a radius map is spread over that box. A polygon
- * replaces an earlier polygon or mask; nrings == 0 (xy and ring_ends may be
- * NULL) goes back to the rectangle.
+ * of pds_set_domain, and a radius map is spread over that box; memory and
+ * time follow the polygon, not the box (islands far apart, a thin ring are
+ * sampled in the cells they meet). A polygon replaces an earlier polygon or
+ * mask; nrings == 0 (xy and ring_ends may be NULL) goes back to the
+ * rectangle.
  * Returns 0, PDS_EINVAL (s NULL, xy or ring_ends NULL with nrings > 0, a
  * ring with fewer than 3 distinct vertices or all on one line, a
  * non-finite coordinate, decreasing ends, an outline that encloses nothing,
@@ -456,8 +458,9 @@ PDS_API int pds_set_polygon(pds_sampler *s, const double *xy, const size_t *ring
  * exactly, as the rectilinear polygon their squares make.
  *   inside  w*h bytes, row-major, row 0 along y = y0 and column 0 along
  *           x = x0 (as pds_set_radius_map); nonzero is inside. Copied.
- * A mask replaces an earlier polygon or mask; w == 0 or h == 0 (inside may
- * be NULL) goes back to the rectangle.
+ * Memory and time follow the inside pixels, not the rectangle. A mask
+ * replaces an earlier polygon or mask; w == 0 or h == 0 (inside may be NULL)
+ * goes back to the rectangle.
  * Returns 0, PDS_EINVAL (s NULL, inside NULL with w*h > 0, w*h overflowing,
  * no pixel inside, pixel lines that round together in the rectangle, a
  * rectangle whose corners no one scale reads exactly, as for

@@ -58,6 +58,7 @@ public:
         // The cells the dart's disk reaches, relative to its own: columns
         // x_lo..x_hi and rows y_lo..y_hi, each within -kPad..kPad.
         int x_lo, x_hi, y_lo, y_hi;
+        bool inside;  // drawn in a cell wholly inside keep_to's polygon
     };
 
     // domain and radius in the internal frame; throws std::bad_alloc.
@@ -78,6 +79,8 @@ public:
     // has its darts drawn among the grid cells it may meet instead
     // (polygon_raster.hpp), each cell alike. The polygon must outlive the grid.
     void keep_to(const Polygon& polygon);
+    // Whether d lies in keep_to's polygon without testing it.
+    static bool surely_inside(const Dart& d) { return d.inside; }
     // Whether d is at least R from every point; points[k] is point k.
     bool is_free(const Dart& d, const std::vector<Point>& points, const std::vector<double>&) const;
     // Records point `index` at d (and its copies on the torus).
@@ -93,6 +96,8 @@ public:
     const Torus& torus() const { return torus_; }
     const PointRadii* radii() const { return nullptr; }
     const Cells& cells() const { return cells_; }
+    // Whether keep_to's darts are drawn among its polygon's raster (tests).
+    bool draws_in_raster() const { return raster_.cells() > 0; }
     // Distances the rounded offsets left undecided, sent to the exact
     // predicate (for tests: the path must be taken).
     std::size_t exact_checks() const { return exact_checks_; }
@@ -213,12 +218,14 @@ void DartGrid<Cells>::throw_darts(Dart* batch, std::size_t n, Rng& rng) const {
     const double w = static_cast<double>(cols_) * side_x_, h = static_cast<double>(rows_) * side_y_;
     for (std::size_t k = 0; k < n; ++k) {
         Dart& d = batch[k];
+        d.inside = false;
         if (raster_.cells() > 0) {
             const double cells = static_cast<double>(raster_.cells());
-            std::size_t col, row;
-            raster_.cell(std::min(raster_.cells() - 1, static_cast<std::size_t>(rng.next_double() * cells)), &col, &row);
-            d.p.x = box_.x0 + (static_cast<double>(col) + rng.next_double()) * side_x_;
-            d.p.y = box_.y0 + (static_cast<double>(row) + rng.next_double()) * side_y_;
+            const PolygonRaster::Cell c =
+                raster_.cell(std::min(raster_.cells() - 1, static_cast<std::size_t>(rng.next_double() * cells)));
+            d.p.x = box_.x0 + (static_cast<double>(c.col) + rng.next_double()) * side_x_;
+            d.p.y = box_.y0 + (static_cast<double>(c.row) + rng.next_double()) * side_y_;
+            d.inside = c.inside;
         } else if (keep_) {
             do {
                 d.p.x = box_.x0 + rng.next_double() * w;
@@ -252,8 +259,15 @@ void DartGrid<Cells>::keep_to(const Polygon& polygon) {
         const double cap = 1048576.0 + 4.0 * polygon.area() / (side_x_ * side_y_);
         const std::size_t most = static_cast<std::size_t>(-1);
         const std::size_t max_bands = cap < static_cast<double>(most) ? static_cast<std::size_t>(cap) : most;
-        if (raster_.build(polygon, box_.x0, side_x_, cols_, box_.y0, side_y_, rows_, max_bands))
-            kept_cells_ = raster_.cells();
+        // Drawn where the raster holds less than the outline grid's cells
+        // (cells far wider than the polygon's parts hold more: large R).
+        if (raster_.build(polygon, box_.x0, side_x_, cols_, box_.y0, side_y_, rows_, max_bands)) {
+            if (static_cast<double>(raster_.cells()) * side_x_ * side_y_ < polygon.candidate_area()) {
+                kept_cells_ = raster_.cells();
+            } else {
+                raster_ = PolygonRaster();
+            }
+        }
     }
     cells_.writes_only_in(kept_cells_);
 }

@@ -98,7 +98,10 @@ public:
     // the stage is over (the acceptance rate over a window of darts fell
     // below kMinAcceptance), and from then on.
     const Point* next(Rng& rng) override {
-        const Dart* d = queue_.next([&](const Dart& x) { return domain_.contains(x.p) && (!polygon_ || polygon_->contains(x.p)); },
+        const Dart* d = queue_.next(
+            [&](const Dart& x) {
+                return domain_.contains(x.p) && (!polygon_ || Grid::surely_inside(x) || polygon_->contains(x.p));
+            },
                                     [&](Dart* batch, std::size_t n) { grid_.throw_darts(batch, n, rng); },
                                     [&](const Dart& x) { return grid_.is_free(x, points_, values_); });
         return d ? &d->p : nullptr;

@@ -122,6 +122,7 @@ public:
     // A polygonal domain: darts stay uniform over the whole box and the
     // stage keeps those inside it (exact; a sparse polygon wastes darts).
     void keep_to(const Polygon&) {}
+    static bool surely_inside(const Dart&) { return false; }
     // Whether d is outside every disk; points[k] and values[k] are point
     // k's position and field value.
     bool is_free(const Dart& d, const std::vector<Point>& points, const std::vector<double>& values) const;

@@ -9,9 +9,13 @@
 // meeting an edge, and then lies in a span that the middle line has inside
 // by the even-odd rule; or it meets an edge in the band at its own x, and
 // then lies in that edge's x-extent within the band. The runs are the
-// cells of both, one cell wider on each side for the rounding of the
-// crossings. A cell in a run may still hold no point of the polygon: its
-// darts are refused by the exact test, as before.
+// cells of both; an edge's extent is one cell wider on each side, and taken
+// in the bands beside its ends too, for the rounding of its x.
+//
+// Inside runs. A cell of a span that no edge's extent reaches holds no point
+// of the outline, and a point of it on the middle line is inside: the whole
+// cell is inside, and its darts need no test. The other cells may hold
+// nothing of the polygon: their darts are tested exactly, as before.
 #ifndef PDS_POLYGON_RASTER_HPP
 #define PDS_POLYGON_RASTER_HPP
 
@@ -26,31 +30,44 @@ namespace pds {
 
 // Whether darts in `polygon` should be drawn among its raster's cells: it
 // fills under 1/32 of the box (over the box, over 32 darts are drawn for
-// one kept). Such a polygon's grid also keeps only its taken cells
-// (grid_storage.hpp): the whole grid over the box may not fit in memory.
-bool raster_suits(const Polygon &polygon, const Box &box);
+// one kept).
+bool raster_suits(const Polygon& polygon, const Box& box);
 
 class PolygonRaster {
 public:
-  // The grid: corner (x0, y0), cells sx by sy, cols by rows. False, and
-  // nothing held, when the edges cross more than max_bands row bands in
-  // all (a raster would cost more than the points it serves).
-  bool build(const Polygon &polygon, double x0, double sx, std::size_t cols,
-             double y0, double sy, std::size_t rows, std::size_t max_bands);
-  // Cells in all the runs.
-  std::size_t cells() const { return before_.empty() ? 0 : before_.back(); }
-  // The column and row of cell k of the runs (k < cells()), in row order.
-  void cell(std::size_t k, std::size_t *col, std::size_t *row) const;
-  std::size_t runs() const { return runs_.size(); }
+    // The grid: corner (x0, y0), cells sx by sy, cols by rows. False, and
+    // nothing held, when the edges cross more than max_bands row bands in
+    // all (a raster would cost more than the points it serves).
+    bool build(const Polygon& polygon, double x0, double sx, std::size_t cols, double y0, double sy, std::size_t rows,
+               std::size_t max_bands);
+    // Cells in all the runs.
+    std::size_t cells() const { return before_.empty() ? 0 : before_.back(); }
+    // Cell k of the runs (k < cells(), in row order): its column and row,
+    // and whether it lies wholly inside the polygon.
+    struct Cell {
+        std::size_t col, row;
+        bool inside;
+    };
+    Cell cell(std::size_t k) const {
+        std::size_t i = bucket_[k / step_];
+        while (before_[i + 1] <= k) ++i;
+        return Cell{runs_[i].lo + (k - before_[i]), runs_[i].row, runs_[i].inside};
+    }
+    std::size_t runs() const { return runs_.size(); }
 
 private:
-  struct Run {
-    std::size_t row, lo, hi; // columns lo..hi of the row
-  };
-  std::vector<Run> runs_;           // by row, then column; disjoint
-  std::vector<std::size_t> before_; // before_[i + 1]: cells in runs 0..i
+    struct Run {
+        std::size_t row, lo, hi;  // columns lo..hi of the row
+        bool inside;
+    };
+    static std::vector<Run> joined(std::vector<Run> runs);
+
+    std::vector<Run> runs_;            // by row, then column; disjoint
+    std::vector<std::size_t> before_;  // before_[i]: cells in runs 0..i-1
+    std::vector<std::size_t> bucket_;  // bucket_[j]: the run holding cell j step_
+    std::size_t step_ = 1;
 };
 
-} // namespace pds
+}  // namespace pds
 
 #endif

@@ -158,6 +158,12 @@ double Polygon::count_bound(double r) const {
     return reach / disk * (1.0 + 1e-9) + 1.0;  // the margin covers the rounding of the sums
 }
 
+double Polygon::candidate_area() const {
+    const Box& b = bounds();
+    return static_cast<double>(candidate_cells_.size()) * (b.width() / static_cast<double>(index_->columns())) *
+           (b.height() / static_cast<double>(index_->rows()));
+}
+
 Point Polygon::uniform_point(Rng& rng) const {
     const Box& b = bounds();
     const double cell_w = b.width() / static_cast<double>(index_->columns());

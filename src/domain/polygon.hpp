@@ -52,6 +52,9 @@ public:
     // Uniform in the domain: a cell of the index that is not outside, chosen
     // uniformly, a uniform point of it, kept when the domain contains it.
     Point uniform_point(Rng& rng) const;
+    // The area of the outline grid's cells not outside, where uniform_point
+    // and the darts draw.
+    double candidate_area() const;
     // The same domain times 2^k, exactly.
     Polygon scaled(int k) const;
 
