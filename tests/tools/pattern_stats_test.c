@@ -18,20 +18,28 @@ static double next_unit(unsigned long long *state)
     return (double)(*state >> 11) / 9007199254740992.0;
 }
 
+/* The least squared distance from point i to another, over every pair. */
+static double brute_nearest2(const double *xy, size_t n, size_t i)
+{
+    double best = HUGE_VAL;
+    size_t j;
+    for (j = 0; j < n; j++) {
+        double dx = xy[2 * i] - xy[2 * j], dy = xy[2 * i + 1] - xy[2 * j + 1];
+        if (j != i && dx * dx + dy * dy < best)
+            best = dx * dx + dy * dy;
+    }
+    return best;
+}
+
 static void brute(const double *xy, size_t n, double *least, double *mean)
 {
-    size_t i, j;
+    size_t i;
     double sum = 0.0;
     *least = HUGE_VAL;
     for (i = 0; i < n; i++) {
-        double best = HUGE_VAL;
-        for (j = 0; j < n; j++) {
-            double dx = xy[2 * i] - xy[2 * j], dy = xy[2 * i + 1] - xy[2 * j + 1];
-            if (j != i && dx * dx + dy * dy < best)
-                best = dx * dx + dy * dy;
-        }
-        sum += sqrt(best);
-        *least = sqrt(best) < *least ? sqrt(best) : *least;
+        double d = sqrt(brute_nearest2(xy, n, i));
+        sum += d;
+        *least = d < *least ? d : *least;
     }
     *mean = sum / (double)n;
 }
@@ -73,20 +81,13 @@ START_TEST(the_tree_finds_each_points_nearest)
     const size_t n = getenv("PDS_TEST_LIGHT") ? 500 : 2000;
     double *xy = malloc(2 * n * sizeof *xy), box[4];
     struct pattern_kdtree t;
-    size_t i, j, wrong = 0;
+    size_t i, wrong = 0;
     ck_assert_ptr_nonnull(xy);
     make_points(_i, n, xy, box);
     ck_assert_int_eq(pattern_kdtree_build(&t, xy, n), 0);
-    for (i = 0; i < n; i++) {
-        double best = HUGE_VAL;
-        for (j = 0; j < n; j++) {
-            double dx = xy[2 * i] - xy[2 * j], dy = xy[2 * i + 1] - xy[2 * j + 1];
-            if (j != i && dx * dx + dy * dy < best)
-                best = dx * dx + dy * dy;
-        }
-        if (pattern_kdtree_nearest2(&t, i) != best)
+    for (i = 0; i < n; i++)
+        if (pattern_kdtree_nearest2(&t, i) != brute_nearest2(xy, n, i))
             wrong++;
-    }
     ck_assert_msg(wrong == 0, "kind %d: %zu of %zu nearest distances wrong", _i, wrong, n);
     pattern_kdtree_free(&t);
     free(xy);
