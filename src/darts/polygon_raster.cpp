@@ -55,6 +55,43 @@ std::vector<PolygonRaster::Run> PolygonRaster::joined(std::vector<Run> runs) {
     return out;
 }
 
+// The cells of the spans that no near-edge run holds (both joined).
+std::vector<PolygonRaster::Run> PolygonRaster::inside_of(const std::vector<Run>& spans,
+                                                         const std::vector<Run>& near_edges) {
+    std::vector<Run> out;
+    std::size_t p = 0;
+    for (const Run& span : spans) {
+        while (p < near_edges.size() &&
+               (near_edges[p].row < span.row || (near_edges[p].row == span.row && near_edges[p].hi < span.lo)))
+            ++p;
+        std::size_t from = span.lo;
+        for (std::size_t q = p; q < near_edges.size() && near_edges[q].row == span.row && near_edges[q].lo <= span.hi;
+             ++q) {
+            if (near_edges[q].lo > from) out.push_back(Run{span.row, from, near_edges[q].lo - 1, true});
+            from = std::max(from, near_edges[q].hi + 1);
+        }
+        if (from <= span.hi) out.push_back(Run{span.row, from, span.hi, true});
+    }
+    return out;
+}
+
+bool PolygonRaster::index_runs() {
+    before_.reserve(runs_.size() + 1);
+    before_.push_back(0);
+    for (const Run& r : runs_) before_.push_back(before_.back() + (r.hi - r.lo + 1));
+    // About one run a bucket: a cell's run is found in a step or two.
+    const std::size_t total = cells();
+    if (total == 0) return false;
+    step_ = (total + runs_.size() - 1) / runs_.size();
+    bucket_.resize((total + step_ - 1) / step_);
+    std::size_t i = 0;
+    for (std::size_t j = 0; j < bucket_.size(); ++j) {
+        while (before_[i + 1] <= j * step_) ++i;
+        bucket_[j] = i;
+    }
+    return true;
+}
+
 bool PolygonRaster::build(const Polygon& polygon, double x0, double sx, std::size_t cols, double y0, double sy,
                           std::size_t rows, std::size_t max_bands) {
     runs_.clear();
@@ -111,37 +148,12 @@ bool PolygonRaster::build(const Polygon& polygon, double x0, double sx, std::siz
     near_edges = joined(std::move(near_edges));
     spans = joined(std::move(spans));
     // The runs: the cells near edges, and the spans' other cells (inside).
-    std::vector<Run> all = near_edges;
-    std::size_t p = 0;
-    for (const Run& span : spans) {
-        while (p < near_edges.size() &&
-               (near_edges[p].row < span.row || (near_edges[p].row == span.row && near_edges[p].hi < span.lo)))
-            ++p;
-        std::size_t from = span.lo;
-        for (std::size_t q = p; q < near_edges.size() && near_edges[q].row == span.row && near_edges[q].lo <= span.hi;
-             ++q) {
-            if (near_edges[q].lo > from) all.push_back(Run{span.row, from, near_edges[q].lo - 1, true});
-            from = std::max(from, near_edges[q].hi + 1);
-        }
-        if (from <= span.hi) all.push_back(Run{span.row, from, span.hi, true});
-    }
-    std::sort(all.begin(), all.end(),
+    const std::vector<Run> inside = inside_of(spans, near_edges);
+    runs_ = std::move(near_edges);
+    runs_.insert(runs_.end(), inside.begin(), inside.end());
+    std::sort(runs_.begin(), runs_.end(),
               [](const Run& u, const Run& v) { return u.row != v.row ? u.row < v.row : u.lo < v.lo; });
-    runs_ = std::move(all);
-    before_.reserve(runs_.size() + 1);
-    before_.push_back(0);
-    for (const Run& r : runs_) before_.push_back(before_.back() + (r.hi - r.lo + 1));
-    // About one run a bucket: a cell's run is found in a step or two.
-    const std::size_t total = cells();
-    if (total == 0) return false;
-    step_ = (total + runs_.size() - 1) / runs_.size();
-    bucket_.resize((total + step_ - 1) / step_);
-    std::size_t i = 0;
-    for (std::size_t j = 0; j < bucket_.size(); ++j) {
-        while (before_[i + 1] <= j * step_) ++i;
-        bucket_[j] = i;
-    }
-    return true;
+    return index_runs();
 }
 
 }  // namespace pds

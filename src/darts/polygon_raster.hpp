@@ -61,6 +61,8 @@ private:
         bool inside;
     };
     static std::vector<Run> joined(std::vector<Run> runs);
+    static std::vector<Run> inside_of(const std::vector<Run>& spans, const std::vector<Run>& near_edges);
+    bool index_runs();  // before_ and the buckets from runs_; false when empty
 
     std::vector<Run> runs_;            // by row, then column; disjoint
     std::vector<std::size_t> before_;  // before_[i]: cells in runs 0..i-1
