@@ -3,6 +3,7 @@
 #ifndef PDS_DART_CONSTANTS_HPP
 #define PDS_DART_CONSTANTS_HPP
 
+#include <cmath>
 #include <cstddef>
 
 namespace pds {
@@ -17,6 +18,7 @@ constexpr std::size_t kMinWindow = 256;
 // Cells of side kCellShrink r / sqrt 2: a diagonal under r even after
 // rounding, so a cell never holds two points of radius r or more.
 constexpr double kCellShrink = 0.99;
+inline double cell_side(double r) { return kCellShrink * r / std::sqrt(2.0); }
 // A point's offset in its cell is kept in 16 bits a side.
 constexpr double kOffsetSteps = 65536.0;
 // The filter decides |p - q|^2 against r^2 (1 -+ kFilterSlack), q read from

@@ -149,7 +149,7 @@ DartGrid<Cells>::DartGrid(const Box& domain, double radius, const Torus& torus)
       r2_high_(radius * radius * (1.0 + darts::kFilterSlack)),
       torus_(torus) {
     using namespace darts;
-    const double side = kCellShrink * radius / std::sqrt(2.0);
+    const double side = cell_side(radius);
     cols_ = cells_along(domain.width(), side);
     rows_ = cells_along(domain.height(), side);
     side_x_ = side_y_ = side;

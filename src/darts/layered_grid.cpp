@@ -29,7 +29,7 @@ LayeredGrid::LayeredGrid(const Box& domain, const PointRadii& radii) : box_(doma
         Layer L;
         L.low = low;
         L.high = std::min(low * kLayerRatio, rmax);
-        L.side = kCellShrink * low / std::sqrt(2.0);
+        L.side = cell_side(low);
         L.inv_side = 1.0 / L.side;
         L.x0 = domain.x0 - kPad * L.side;
         L.y0 = domain.y0 - kPad * L.side;

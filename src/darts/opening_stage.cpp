@@ -21,7 +21,7 @@ constexpr double kSparseFrom = 128.0;
 
 // The cells of a dart grid of radius r over the box (dart_grid.hpp's side).
 double grid_cells(const Box& box, double r) {
-    const double side = darts::kCellShrink * r / std::sqrt(2.0);
+    const double side = darts::cell_side(r);
     return std::ceil(box.width() / side) * std::ceil(box.height() / side);
 }
 

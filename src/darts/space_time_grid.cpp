@@ -8,7 +8,7 @@ namespace pds {
 
 SpaceTimeGrid::SpaceTimeGrid(const Box& box, double radius) : box_(box), r_(radius) {
     using namespace darts;
-    side_ = kCellShrink * radius / std::sqrt(2.0);
+    side_ = cell_side(radius);
     cols_ = cells_along(box.width(), side_);
     rows_ = cells_along(box.height(), side_);
     inv_side_ = 1.0 / side_;
