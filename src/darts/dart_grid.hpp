@@ -255,8 +255,11 @@ void DartGrid<Cells>::keep_to(const Polygon& polygon) {
     keep_ = &polygon.index();
     kept_cells_ = keep_->grid_cells_not_outside(box_.x0, side_x_, cols_, box_.y0, side_y_, rows_);
     if (raster_suits(polygon, box_)) {
-        // A raster no larger than a few words per cell of the polygon's area.
-        const double cap = 1048576.0 + 4.0 * polygon.area() / (side_x_ * side_y_);
+        // A raster no larger than a few words per cell of the polygon's
+        // area, and 2^22 bands at most (about 200 MB while it is built): a
+        // bounded run in a polygon far larger than its points draws over
+        // the outline grid's cells instead.
+        const double cap = std::min(4194304.0, 1048576.0 + 4.0 * polygon.area() / (side_x_ * side_y_));
         const std::size_t most = static_cast<std::size_t>(-1);
         const std::size_t max_bands = cap < static_cast<double>(most) ? static_cast<std::size_t>(cap) : most;
         // Drawn where the raster holds less than the outline grid's cells

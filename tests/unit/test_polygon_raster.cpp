@@ -198,6 +198,25 @@ START_TEST(darts_stay_with_the_outline_grid_where_the_raster_is_coarser) {
 }
 END_TEST
 
+START_TEST(a_raster_past_its_band_budget_is_not_built_for_the_darts) {
+    // A square 1750 wide beside a hexagon traced twice (it cancels) in a
+    // box 15375 by 9875, at R 0.001: the square's sides cross 5 million row
+    // bands, past the 2^22 a grid builds (a bounded run of a few points in
+    // a domain of 10^14 took seconds and gigabytes building it). At R 1 the
+    // same polygon is rastered.
+    const std::vector<double> hexagon = {14000, 13666.666666666666, 15916.666666666668, 14250, 19750, 14250, 19750,
+                                         13083.333333333334, 17833.333333333332, 12500, 14000, 12500};
+    std::vector<double> twice = hexagon;
+    twice.insert(twice.end(), hexagon.begin(), hexagon.end());
+    auto shape = std::make_shared<const pds::Polygon>(
+        rings_of({twice, {4375, 5250, 4375, 6125, 5250, 6125, 6125, 6125, 6125, 5250, 6125, 4375, 5250, 4375, 4375,
+                          4375, 4375, 5250}}));
+    ck_assert(pds::raster_suits(*shape, shape->bounds()));
+    ck_assert(!pds::SparseDartStage(shape->bounds(), shape, 0.001).grid().draws_in_raster());
+    ck_assert(pds::SparseDartStage(shape->bounds(), shape, 1.0).grid().draws_in_raster());
+}
+END_TEST
+
 Suite* polygon_raster_suite() {
     Suite* s = suite_create("polygon_raster");
     TCase* t = tcase_create("cells");
@@ -206,6 +225,7 @@ Suite* polygon_raster_suite() {
     tcase_add_test(t, a_raster_that_would_cost_more_than_its_cap_is_not_built);
     tcase_add_test(t, darts_among_the_cells_are_uniform_over_the_polygon);
     tcase_add_test(t, darts_stay_with_the_outline_grid_where_the_raster_is_coarser);
+    tcase_add_test(t, a_raster_past_its_band_budget_is_not_built_for_the_darts);
     suite_add_tcase(s, t);
     return s;
 }
