@@ -253,25 +253,22 @@ template <class Cells>
 void DartGrid<Cells>::keep_to(const Polygon& polygon) {
     if (torus_.on()) return;  // no polygon on the torus
     keep_ = &polygon.index();
-    kept_cells_ = keep_->grid_cells_not_outside(box_.x0, side_x_, cols_, box_.y0, side_y_, rows_);
     if (raster_suits(polygon, box_)) {
         // A raster no larger than a few words per cell of the polygon's
         // area, and 2^22 bands at most (about 200 MB while it is built): a
         // bounded run in a polygon far larger than its points draws over
         // the outline grid's cells instead.
-        const double cap = std::min(4194304.0, 1048576.0 + 4.0 * polygon.area() / (side_x_ * side_y_));
-        const std::size_t most = static_cast<std::size_t>(-1);
-        const std::size_t max_bands = cap < static_cast<double>(most) ? static_cast<std::size_t>(cap) : most;
+        const auto max_bands =
+            static_cast<std::size_t>(std::min(4194304.0, 1048576.0 + 4.0 * polygon.area() / (side_x_ * side_y_)));
         // Drawn where the raster holds less than the outline grid's cells
         // (cells far wider than the polygon's parts hold more: large R).
-        if (raster_.build(polygon, box_.x0, side_x_, cols_, box_.y0, side_y_, rows_, max_bands)) {
-            if (static_cast<double>(raster_.cells()) * side_x_ * side_y_ < polygon.candidate_area()) {
-                kept_cells_ = raster_.cells();
-            } else {
-                raster_ = PolygonRaster();
-            }
-        }
+        if (raster_.build(polygon, box_.x0, side_x_, cols_, box_.y0, side_y_, rows_, max_bands) &&
+            !(static_cast<double>(raster_.cells()) * side_x_ * side_y_ < polygon.candidate_area()))
+            raster_ = PolygonRaster();
     }
+    kept_cells_ = raster_.cells() > 0
+                      ? raster_.cells()
+                      : keep_->grid_cells_not_outside(box_.x0, side_x_, cols_, box_.y0, side_y_, rows_);
     cells_.writes_only_in(kept_cells_);
 }
 
