@@ -10,18 +10,31 @@
 namespace pds {
 
 int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]) {
-    const double ex = b.x - a.x, ey = b.y - a.y;
+    double ex = b.x - a.x, ey = b.y - a.y;
+    const double longest = std::fmax(std::fabs(ex), std::fabs(ey));
+    if (!(longest >= 0x1.0p-1000)) return 0;  // no area a double could hold
+    // The side runs from t = 0 to t = end along a + t e. A side so short that
+    // its squared length would underflow (a domain far thinner than R has
+    // them, and they hold most of its cells' area) is scaled by a power of
+    // two first, exactly; other sides are measured unscaled.
+    double end = 1.0;
+    if (longest < 0x1.0p-400) {
+        int shift = 0;
+        std::frexp(longest, &shift);
+        ex = std::ldexp(ex, -shift);
+        ey = std::ldexp(ey, -shift);
+        end = std::ldexp(1.0, -shift);
+    }
     const double ee = ex * ex + ey * ey;
-    if (ee == 0.0) return 0;
     const auto at = [&](double t) { return Point{a.x + t * ex, a.y + t * ey}; };
     const double inv_ee = 1.0 / ee;
     const double closest = -(a.x * ex + a.y * ey) * inv_ee;  // parameter of closest approach
-    const double cr = cross(a, b);
-    const double h2 = cr * cr * inv_ee;                        // squared distance of the line
+    const double cr = end == 1.0 ? cross(a, b) : cross(a, Point{ex, ey});
+    const double h2 = cr * cr * inv_ee;  // squared distance of the line
     if (h2 >= r2) {
         // The far side misses the circle (case 3 if the closest approach is
         // inside the side: split there so distance is monotone on each piece).
-        if (closest > 0.0 && closest < 1.0) {
+        if (closest > 0.0 && closest < end) {
             const Point m = at(closest);
             out[0] = Piece{a, m};
             out[1] = Piece{m, b};
@@ -35,8 +48,8 @@ int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]) 
     const double s = std::sqrt((r2 - h2) * inv_ee);
     const double t1 = closest - s, t2 = closest + s;
     int n = 0;
-    if (t1 > 0.0) out[n++] = Piece{a, t1 < 1.0 ? at(t1) : b};
-    if (t2 < 1.0) out[n++] = Piece{t2 > 0.0 ? at(t2) : a, b};
+    if (t1 > 0.0) out[n++] = Piece{a, t1 < end ? at(t1) : b};
+    if (t2 < end) out[n++] = Piece{t2 > 0.0 ? at(t2) : a, b};
     return n;
 }
 

@@ -1,6 +1,8 @@
 // cell_stream.cpp - the chunk sums of the cell pipeline (see cell_stream.hpp).
 #include "cells/cell_stream.hpp"
 
+#include <cmath>
+
 namespace pds {
 namespace cell_stream {
 
@@ -18,7 +20,9 @@ int fan_pieces(const Vtx& va, const Vtx& vb, double r2, Piece out[2]) {
 void CellSink::edge(const Vtx& a, const Vtx& b) {
     if (done()) return;
     Piece pieces[2];
-    if (cross(Point{a.x, a.y}, Point{b.x, b.y}) < 0.0) {
+    const double turn = cross(Point{a.x, a.y}, Point{b.x, b.y});
+    fan_ += std::fabs(turn);
+    if (turn < 0.0) {
         // A clockwise fan triangle: the site is outside its power cell. Its
         // free area, measured turned counterclockwise, is the shadow's.
         flush();

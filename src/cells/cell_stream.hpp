@@ -273,6 +273,8 @@ public:
     // free area is sum() - shadow(); chunks hold only the counterclockwise
     // pieces, which cover the cell once, and the shadow too.
     double shadow() const { return shadow_; }
+    // The area of the fan, free or not: the cell's area, with the shadow.
+    double fan_area() const { return 0.5 * fan_; }
     // A bound on the distance from the site to every polygon vertex.
     double reach() const { return std::sqrt(max_d2_) * (1.0 + 4.0 * kUnitRoundoff) + max_err_; }
     int certainly_out() const { return certainly_out_; }
@@ -293,6 +295,7 @@ private:
     double rounding_;  // bound on the rounding of |v|^2 and R^2
     double sum_ = 0.0;
     double shadow_ = 0.0;
+    double fan_ = 0.0;  // twice the fan's area
     double max_d2_ = 0.0, max_err_ = 0.0;
     int certainly_out_ = 0, undecided_ = 0;
     bool found_ = false, fallback_ = false, stop_at_target_ = false;

@@ -42,20 +42,30 @@ struct CellMeasure {
     double free() const { return area > shadow ? area - shadow : 0.0; }
     bool doubtful = false;  // rounding left the classification open
     double reach = 0.0;     // bound on the distance from the site to the cell's vertices
+    double floor = 0.0;     // the least weight a possibly-free cell gets (area_floor)
 };
 
 // The smallest weight a possibly-free cell gets, so it stays selectable:
-// R^2 2^-100, far below any area rounding can resolve, far above underflow.
-inline double area_floor(double r) { return r * r * 0x1.0p-100; }
+// 2^-100 of R^2 or of the cell's own area if smaller, far below any area
+// rounding can resolve. The cell's area matters where the domain is far
+// thinner than R: its cells, R long and a sliver wide, would otherwise all
+// weigh R^2 2^-100, far above their free areas, and be chosen alike whatever
+// their areas (and pds_free_area would sum the floors). Kept above the
+// smallest normal double so a real cell whose area underflows stays
+// selectable.
+inline double area_floor(double r, double cell_area) {
+    const double least = (cell_area < r * r ? cell_area : r * r) * 0x1.0p-100;
+    return least > 0x1.0p-1022 ? least : 0x1.0p-1022;
+}
 
 // The sink's verdict on the cell as a whole.
 inline CellMeasure verdict(const cell_stream::CellSink& sink, bool clip_doubtful, double r) {
     CellMeasure m;
     m.reach = sink.reach();
+    m.floor = area_floor(r, sink.fan_area());
     if (!clip_doubtful && sink.certainly_out() == 0 && sink.undecided() == 0) return m;  // covered
     m.doubtful = clip_doubtful || sink.certainly_out() == 0;
-    const double floor = area_floor(r);
-    m.area = sink.sum() > floor ? sink.sum() : floor;
+    m.area = sink.sum() > m.floor ? sink.sum() : m.floor;
     m.shadow = sink.shadow();
     return m;
 }

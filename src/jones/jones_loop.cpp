@@ -281,7 +281,7 @@ void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
             // area) / bound, not area / bound: the fan's shadow is not drawn
             // from, so the bound drops to the free area.
             const CellMeasure m = cells.measure(v);
-            const double free = m.free() > 0.0 ? m.free() : (m.area > 0.0 ? area_floor(q.radius) : 0.0);
+            const double free = m.free() > 0.0 ? m.free() : (m.area > 0.0 ? m.floor : 0.0);
             Point p;
             if (!(cell_target < free)) {
                 if (free < tree_.weight(site)) set_weight(site, free);

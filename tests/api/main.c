@@ -26,6 +26,7 @@ int main(void)
     srunner_add_suite(runner, golden_suite());
     srunner_add_suite(runner, splits_suite());
     srunner_add_suite(runner, limits_suite());
+    srunner_add_suite(runner, slivers_suite());
     srunner_add_suite(runner, count_suite());
     srunner_add_suite(runner, progress_suite());
     srunner_add_suite(runner, periodic_suite());

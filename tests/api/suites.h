@@ -12,6 +12,7 @@
  *   golden_suite       pinned fingerprints of the points some seeds give  (golden.c)
  *   splits_suite       same bytes however calls split the work, refine too (splits.c)
  *   limits_suite       tiny, huge and far-off domains; when ERANGE comes   (limits.c)
+ *   slivers_suite      rectangles far thinner than R: free area, the law   (slivers.c)
  *   count_suite        pds_set_count: exactly n points, spacing, splits    (count.c)
  *   progress_suite     pds_set_progress: reports, cancel and resume        (progress.c)
  *   periodic_suite     pds_set_periodic: the torus, spacing, law, state    (periodic.c)
@@ -42,6 +43,7 @@ Suite *lifecycle_suite(void);
 Suite *golden_suite(void);
 Suite *splits_suite(void);
 Suite *limits_suite(void);
+Suite *slivers_suite(void);
 Suite *count_suite(void);
 Suite *progress_suite(void);
 Suite *periodic_suite(void);

@@ -254,12 +254,47 @@ START_TEST(draws_are_uniform_in_free_regions) {
 }
 END_TEST
 
+START_TEST(short_sides_keep_their_area) {
+    // Fan triangles whose far side is so short that its squared length
+    // underflows (the cells of a domain far thinner than R), with R = 1: the
+    // pieces must hold the triangle minus its sector, 0.5 (cross - angle).
+    for (const double len : {1e-150, 1e-200, 1e-300}) {
+        struct Tri {
+            pds::Point a, b;
+            int pieces;
+        };
+        const Tri tris[] = {
+            {{len, 2}, {0, 2}, 0},                 // ends at the closest approach (1 or 2 pieces)
+            {{2, -0.5 * len}, {2, 0.5 * len}, 2},  // case 3: the closest approach inside the side
+            {{-3, len}, {-3, 0}, 0},
+        };
+        for (const Tri& t : tris) {
+            pds::Piece pieces[2];
+            const int n = pds::split_fan_triangle(t.a, t.b, 1.0, pieces);
+            ck_assert(t.pieces == 0 ? n == 1 || n == 2 : n == t.pieces);
+            double area = 0;
+            for (int i = 0; i < n; ++i) area += pds::piece_area(pieces[i], 1.0);
+            const double cr = pds::cross(t.a, t.b);
+            const double want = 0.5 * (cr - std::atan2(cr, pds::dot(t.a, t.b)));
+            ck_assert_msg(std::fabs(area - want) <= 1e-12 * want, "side %g from (%g, %g): pieces' area %.17g, want %.17g",
+                          len, t.a.x, t.a.y, area, want);
+        }
+    }
+    // The least weight of a possibly-free cell: 2^-100 of R^2, or of the
+    // cell's own area when that is smaller.
+    ck_assert(pds::area_floor(0.01, 1.0) == 1e-4 * 0x1.0p-100);
+    ck_assert(pds::area_floor(0.01, 1e-240) == 1e-240 * 0x1.0p-100);
+    ck_assert(pds::area_floor(0.01, 0.0) > 0.0);
+}
+END_TEST
+
 Suite* free_area_suite() {
     Suite* s = suite_create("free_area");
     TCase* t = tcase_create("area");
     tcase_set_timeout(t, 300);
     tcase_add_test(t, area_matches_integration);
     tcase_add_test(t, pieces_cover_the_cases);
+    tcase_add_test(t, short_sides_keep_their_area);
     suite_add_tcase(s, t);
     t = tcase_create("classification");
     tcase_set_timeout(t, 300);
