@@ -1,7 +1,9 @@
 // opening_stage.cpp - which opening stage a run gets (see opening_stage.hpp).
 #include "darts/opening_stage.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "darts/dart_constants.hpp"
 #include "darts/dart_stage.hpp"
@@ -23,6 +25,19 @@ constexpr double kSparseFrom = 128.0;
 double grid_cells(const Box& box, double r) {
     const double side = darts::cell_side(r);
     return std::ceil(box.width() / side) * std::ceil(box.height() / side);
+}
+
+// Whether every cell of the dart grid of radius r over the box, with its
+// padding, has a size_t number (dart_grid.hpp's bound). Not so on a 32-bit
+// target (wasm32) for a box far wider than R (islands far apart, a bounded
+// run in a huge rectangle), which would fail for want of numbers: the Jones
+// loop then runs alone, its memory following the points. On a 64-bit target
+// the precision limit on R keeps every grid far within.
+bool numbered(const Box& box, double r) {
+    const double side = darts::cell_side(r), pad = 2.0 * darts::kPad;
+    const double cells = (std::max(std::ceil(box.width() / side), 1.0) + pad) *
+                         (std::max(std::ceil(box.height() / side), 1.0) + pad);
+    return cells <= static_cast<double>(SIZE_MAX);
 }
 
 // A polygon that fills little of its box, whose grid of radius r over the
@@ -61,6 +76,7 @@ Opening opening_for(const Frame& frame, double count_bound, const RadiusField* f
     // cells it meets (polygon_raster.hpp); its grid keeps only its taken
     // cells once the whole grid would have over kSparseFrom cells for each
     // point the polygon can hold (islands far apart: more than memory).
+    if (!numbered(frame.domain().bounds(), frame.r())) return Opening::none;
     if (!fits || spread_thin(frame, frame.r(), count_bound)) return Opening::sparse;
     return space_time && !frame.torus().on() && !frame.polygon() ? Opening::space_time : Opening::dense;
 }

@@ -52,21 +52,24 @@ test('rings meeting at corners a few ulps apart: merged, the area is the square 
   s.dispose();
 });
 
-test('islands far apart: memory and time for the islands, not their box', async () => {
-  // Two unit squares 300 apart: a grid over their whole box would take 15 GB at this radius.
-  const a = [[0, 0], [1, 0], [1, 1], [0, 1]];
-  const b = a.map(([x, y]) => [x + 300, y + 300]);
-  const s = await Sampler.create(0.01, { seed: 3, polygon: [a, b] });
-  assert.ok(Math.abs(s.freeArea - 2) < 1e-12, `free area ${s.freeArea}, 2 expected`);
-  assert.equal(s.run(), true);
-  assert.equal(s.verify(), true);
-  const pts = pairs(s.points());
-  const near = pts.filter(([x]) => x < 150);
-  assert.ok(near.length > 5000 && pts.length - near.length > 5000, `${near.length} and ${pts.length - near.length} points`);
-  assert.ok(near.every(([x, y]) => x >= 0 && x <= 1 && y >= 0 && y <= 1));
-  assert.ok(pts.every(([x, y]) => x < 150 || (x >= 300 && x <= 301 && y >= 300 && y <= 301)));
-  s.dispose();
-});
+for (const apart of [300, 1000]) {
+  test(`islands ${apart} apart: memory and time for the islands, not their box`, async () => {
+    // Two unit squares: a grid over their whole box would take 15 GB at this
+    // radius (300 apart), or number more cells than 32 bits can (1000 apart).
+    const a = [[0, 0], [1, 0], [1, 1], [0, 1]];
+    const b = a.map(([x, y]) => [x + apart, y + apart]);
+    const s = await Sampler.create(0.01, { seed: 3, polygon: [a, b] });
+    assert.ok(Math.abs(s.freeArea - 2) < 1e-12, `free area ${s.freeArea}, 2 expected`);
+    assert.equal(s.run(), true);
+    assert.equal(s.verify(), true);
+    const pts = pairs(s.points());
+    const near = pts.filter(([x]) => x < apart / 2);
+    assert.ok(near.length > 5000 && pts.length - near.length > 5000, `${near.length} and ${pts.length - near.length} points`);
+    assert.ok(near.every(([x, y]) => x >= 0 && x <= 1 && y >= 0 && y <= 1));
+    assert.ok(pts.every(([x, y]) => x < apart / 2 || (x >= apart && x <= apart + 1 && y >= apart && y <= apart + 1)));
+    s.dispose();
+  });
+}
 
 test('rings as pairs, as flat numbers, one ring alone, GeoJSON: the same points', async () => {
   const rings = [closed(OUTER), closed(HOLE)];
