@@ -361,6 +361,14 @@ expect "$core --radius 1e-5 in [0,1e-3]^2 --verify --stats: the same points" \
 expect "$core --radius 1e-5 in [0,1e-3]^2: --stats says maximal verified" \
     grep -q "N=$m R=1e-05 domain=\\[0,0\\.001\\]x\\[0,0\\.001\\] coverage=1\\.0* maximal verified" \
         "$tmp/smallv.err"
+# A rectangle 1e-200 wide: every disk spans it, so 5 points cover between 0.05
+# and 0.1 of it (the coverage comes from the library's free area).
+run sliver --radius 0.01 --domain 0 0 1e-200 1 --max-points 5 --partial --stats
+expect "$core --radius 0.01 in [0,1e-200]x[0,1] --max-points 5 --partial --stats: exit 0 (got $rc)" \
+    [ "$rc" -eq 0 ]
+expect "$core --radius 0.01 in [0,1e-200]x[0,1], 5 points: coverage within [0.05, 0.1]" \
+    awk '{ for (i = 1; i <= NF; i++) if ($i ~ /^coverage=/) { c = substr($i, 10) + 0; f = 1 } }
+         END { exit !(f && c >= 0.05 && c <= 0.1) }' "$tmp/sliver.err"
 
 # ---- library failures: exit 1, "poissondisk: ...: <library message>" -----------------
 # A maximal pattern at 1e-4 (~7e6 points) needs about a gigabyte: in 300 MB of

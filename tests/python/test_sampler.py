@@ -118,6 +118,25 @@ class MaximalPatternTest(TestCase):
         pts = poissondisk.sample(0.1, bounds=[[0, 0], [2, 1]])
         self.assertTrue(inside(pts, 0, 0, 2, 1) and max(p[0] for p in pts) > 1.5)
 
+    def test_sliver_free_area(self):
+        # A rectangle 1e-200 wide: every disk spans it, so the free area is the
+        # width times the length left outside the points' intervals.
+        w, r = 1e-200, 0.01
+        with Sampler(r, seed=5, bounds=((0.0, 0.0), (w, 1.0))) as s:
+            for n in range(1, 21):
+                s.run(1)
+                ys = sorted(p[1] for p in s.points)
+                covered_length, hi = 0.0, 0.0
+                for y in ys:
+                    a, b = max(y - r, hi), min(y + r, 1.0)
+                    covered_length += max(b - a, 0.0)
+                    hi = max(hi, b)
+                self.assertAlmostEqual(s.free_area / w, 1.0 - covered_length, delta=1e-9,
+                                       msg=f"{n} points")
+            s.run()
+            self.assertEqual(s.free_area, 0.0)
+            self.assertIs(s.verify(), True)
+
 
 class ErrorTest(TestCase):
     def test_hierarchy(self):
