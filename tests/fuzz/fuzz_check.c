@@ -338,13 +338,21 @@ void fz_reset(fz_state *st, pds_sampler *s, double radius)
     st->msg[sizeof st->msg - 1] = '\0';
 }
 
+/* hi - lo in units of r; a span past the largest double (both ends near it,
+ * opposite signs) is halved first, exactly, as the library scales it. */
+static double span_in_radii(double lo, double hi, double r)
+{
+    const double d = hi - lo;
+    return isinf(d) ? 2.0 * ((0.5 * hi - 0.5 * lo) / r) : d / r;
+}
+
 double fz_count_bound(const fz_state *st)
 {
     /* Overflow gives inf (a huge bound), never NaN: the domain is non-empty.
      * A field: at its smallest radius, as the library bounds it. */
     const double r = fz_smallest_radius(st);
-    const double w = (st->dom[2] - st->dom[0]) / r;
-    const double h = (st->dom[3] - st->dom[1]) / r;
+    const double w = span_in_radii(st->dom[0], st->dom[2], r);
+    const double h = span_in_radii(st->dom[1], st->dom[3], r);
     return 1.1547005383792515 * w * h + (w + h) + 1.0;
 }
 
