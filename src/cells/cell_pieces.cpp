@@ -9,28 +9,16 @@
 
 namespace pds {
 
-int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]) {
-    double ex = b.x - a.x, ey = b.y - a.y;
-    const double longest = std::fmax(std::fabs(ex), std::fabs(ey));
-    if (!(longest >= 0x1.0p-1000)) return 0;  // no area a double could hold
-    // The side runs from t = 0 to t = end along a + t e. A side so short that
-    // its squared length would underflow (a domain far thinner than R has
-    // them, and they hold most of its cells' area) is scaled by a power of
-    // two first, exactly; other sides are measured unscaled.
-    double end = 1.0;
-    if (longest < 0x1.0p-400) {
-        int shift = 0;
-        std::frexp(longest, &shift);
-        ex = std::ldexp(ex, -shift);
-        ey = std::ldexp(ey, -shift);
-        end = std::ldexp(1.0, -shift);
-    }
-    const double ee = ex * ex + ey * ey;
+namespace {
+
+// The split of the far side a-b, given a + t (ex, ey) for t in [0, end] along
+// it, ee = ex^2 + ey^2, and cr = cross(a, (ex, ey)) end.
+__attribute__((always_inline)) inline int split_side(const Point& a, const Point& b, double ex, double ey,
+                                                     double ee, double end, double cr, double r2, Piece out[2]) {
     const auto at = [&](double t) { return Point{a.x + t * ex, a.y + t * ey}; };
     const double inv_ee = 1.0 / ee;
     const double closest = -(a.x * ex + a.y * ey) * inv_ee;  // parameter of closest approach
-    const double cr = end == 1.0 ? cross(a, b) : cross(a, Point{ex, ey});
-    const double h2 = cr * cr * inv_ee;  // squared distance of the line
+    const double h2 = cr * cr * inv_ee;                        // squared distance of the line
     if (h2 >= r2) {
         // The far side misses the circle (case 3 if the closest approach is
         // inside the side: split there so distance is monotone on each piece).
@@ -51,6 +39,27 @@ int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]) 
     if (t1 > 0.0) out[n++] = Piece{a, t1 < end ? at(t1) : b};
     if (t2 < end) out[n++] = Piece{t2 > 0.0 ? at(t2) : a, b};
     return n;
+}
+
+// A side so short that its squared length loses precision or underflows (a
+// domain far thinner than R has them, and they hold most of its cells'
+// area): the same split with the side scaled by a power of two, exactly.
+int split_short_side(const Point& a, const Point& b, double r2, Piece out[2]) {
+    const double longest = std::fmax(std::fabs(b.x - a.x), std::fabs(b.y - a.y));
+    if (!(longest >= 0x1.0p-1000)) return 0;  // no area a double could hold
+    int shift = 0;
+    std::frexp(longest, &shift);
+    const double ex = std::ldexp(b.x - a.x, -shift), ey = std::ldexp(b.y - a.y, -shift);
+    return split_side(a, b, ex, ey, ex * ex + ey * ey, std::ldexp(1.0, -shift), cross(a, Point{ex, ey}), r2, out);
+}
+
+}  // namespace
+
+int split_fan_triangle(const Point& a, const Point& b, double r2, Piece out[2]) {
+    const double ex = b.x - a.x, ey = b.y - a.y;
+    const double ee = ex * ex + ey * ey;
+    if (ee < 0x1.0p-800) return split_short_side(a, b, r2, out);
+    return split_side(a, b, ex, ey, ee, 1.0, cross(a, b), r2, out);
 }
 
 void Chunk::begin(const Piece& pc, bool keep_pieces) {
