@@ -139,6 +139,15 @@ expect "--polygon, two squares 1000 apart: inside, spaced, in both squares" \
     eval 'dc inside "$tmp/far.out" "polygon:$tmp/far.txt" && dc spacing "$tmp/far.out" 0.005 - &&
           [ "$(awk "\$1 > 500" "$tmp/far.out" | wc -l)" -gt 20000 ] &&
           [ "$(awk "\$1 < 500" "$tmp/far.out" | wc -l)" -gt 20000 ]'
+# A strip 1e-12 high along the diagonal: far thinner than the outline grid's
+# cells, so its first point comes from its slabs, not by rejection over them.
+printf '0 0\n1 1\n1 1.000000000001\n0 0.000000000001\n' > "$tmp/strip.txt"
+run strip --radius 0.01 --polygon "$tmp/strip.txt" --verify --stats
+expect "--polygon, a strip 1e-12 high along the diagonal: exits 0, maximal and verified (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && grep -q " maximal verified " "$tmp/strip.err"'
+expect "--polygon, a strip 1e-12 high along the diagonal: inside, spaced, 70 to 143 points" \
+    eval 'dc inside "$tmp/strip.out" "polygon:$tmp/strip.txt" && dc spacing "$tmp/strip.out" 0.01 - &&
+          [ "$(wc -l < "$tmp/strip.out")" -gt 70 ] && [ "$(wc -l < "$tmp/strip.out")" -le 143 ]'
 run geo --radius 0.02 --polygon "$tmp/shape.geojson"
 expect "--polygon GeoJSON: the same points as the same rings in text" \
     eval '[ "$rc" -eq 0 ] && cmp -s "$tmp/poly.out" "$tmp/geo.out"'

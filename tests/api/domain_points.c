@@ -210,6 +210,27 @@ START_TEST(maximal_on_islands_far_apart)
 }
 END_TEST
 
+/* A strip 1e-12 high along the diagonal of the unit square, at R 0.01: the
+ * outline grid's cells near it are 10^10 times its area, so the first point
+ * cannot be found by rejection over them (1.7.7 took minutes). */
+static const double diagonal_strip_xy[] = {0, 0, 1, 1, 1, 1 + 1e-12, 0, 1e-12};
+static const size_t diagonal_strip_ends[] = {4};
+
+START_TEST(maximal_on_a_strip_far_thinner_than_its_cells)
+{
+    const region g = {diagonal_strip_xy, diagonal_strip_ends, 1};
+    pds_sampler *s = in_polygon(&g, 0.01, 5);
+    size_t n;
+
+    assert_rel_close(pds_free_area(s), 1e-12, 1e-3, "a strip 1e-12 high along the diagonal");
+    n = run_to_end(s);
+    /* Between 1/(2R) and 1/R + 1 points along a line of length sqrt(2). */
+    ck_assert_msg(n > 70 && n <= 143, "a strip 1e-12 high along the diagonal, R 0.01: %zu points", n);
+    assert_domain_pattern(s, &g, NULL, 0, "a strip 1e-12 high along the diagonal, R 0.01");
+    pds_destroy(s);
+}
+END_TEST
+
 /* The unit L at 1e-6 scale, and moved 1e5 away from the origin. */
 START_TEST(maximal_in_the_l_scaled_and_moved)
 {
@@ -363,6 +384,7 @@ Suite *domain_points_suite(void)
     tcase_add_loop_test(tc, maximal_where_rings_cross, 0, 2);
     tcase_add_test(tc, maximal_where_rings_meet_within_rounding);
     tcase_add_test(tc, maximal_on_islands_far_apart);
+    tcase_add_test(tc, maximal_on_a_strip_far_thinner_than_its_cells);
     tcase_add_loop_test(tc, maximal_in_the_l_scaled_and_moved, 0, 2);
     tcase_add_test(tc, maximal_in_a_frame_far_thinner_than_r);
     tcase_add_test(tc, same_points_at_any_power_of_two);

@@ -96,6 +96,17 @@ class PolygonTest(TestCase):
         self.assertTrue(all(0.0 <= x <= 1.0 and 0.0 <= y <= 1.0 for x, y in near))
         self.assertTrue(all(1000.0 <= x <= 1001.0 and 1000.0 <= y <= 1001.0 for x, y in pts if x >= 500.0))
 
+    def test_strip_far_thinner_than_its_cells(self):
+        # A strip 1e-12 high along the diagonal of the unit square.
+        strip = [(0.0, 0.0), (1.0, 1.0), (1.0, 1.0 + 1e-12), (0.0, 1e-12)]
+        with Sampler(0.01, seed=5, domain=[strip]) as s:
+            self.assertAlmostEqual(s.free_area, 1e-12, delta=1e-15)
+            self.assertIs(s.run(), True)
+            self.assertIs(s.verify(), True)
+            pts = as_pairs(s.points)
+        self.assertTrue(70 < len(pts) <= 143, len(pts))
+        self.assertTrue(all(0.0 <= x <= 1.0 and x <= y <= x + 1e-12 + 1e-15 for x, y in pts))
+
     def test_the_same_points_however_the_run_is_split(self):
         whole = poissondisk.sample(R, seed=8, domain=[OUTER, HOLE])
         with Sampler(R, seed=8, domain=[OUTER, HOLE]) as s:

@@ -35,6 +35,7 @@ int main() {
     srunner_add_suite(runner, progress_suite());
     srunner_add_suite(runner, polygon_suite());
     srunner_add_suite(runner, polygon_domain_suite());
+    srunner_add_suite(runner, polygon_slabs_suite());
     srunner_add_suite(runner, polygon_crossings_suite());
     srunner_add_suite(runner, polygon_raster_suite());
     srunner_add_suite(runner, outline_clip_suite());

@@ -37,6 +37,7 @@ Suite* rectangle_suite();
 Suite* progress_suite();
 Suite* polygon_suite();
 Suite* polygon_domain_suite();
+Suite* polygon_slabs_suite();
 Suite* polygon_crossings_suite();
 Suite* polygon_raster_suite();
 Suite* outline_clip_suite();

@@ -71,6 +71,18 @@ for (const apart of [300, 1000]) {
   });
 }
 
+test('a strip far thinner than the outline grid\'s cells: its first point at once, maximal', async () => {
+  // 1e-12 high along the diagonal of the unit square.
+  const strip = [[0, 0], [1, 1], [1, 1 + 1e-12], [0, 1e-12]];
+  const s = await Sampler.create(0.01, { seed: 5, polygon: [strip] });
+  assert.equal(s.run(), true);
+  assert.equal(s.verify(), true);
+  const pts = pairs(s.points());
+  assert.ok(pts.length > 70 && pts.length <= 143, `${pts.length} points`);
+  assert.ok(pts.every(([x, y]) => x >= 0 && x <= 1 && y >= x && y <= x + 1.001e-12));
+  s.dispose();
+});
+
 test('rings as pairs, as flat numbers, one ring alone, GeoJSON: the same points', async () => {
   const rings = [closed(OUTER), closed(HOLE)];
   const a = await poissonDisk(0.06, { seed: 6, polygon: rings });
