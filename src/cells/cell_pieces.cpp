@@ -11,8 +11,9 @@ namespace pds {
 
 namespace {
 
-// The split of the far side a-b, given a + t (ex, ey) for t in [0, end] along
-// it, ee = ex^2 + ey^2, and cr = cross(a, (ex, ey)) end.
+// The split of the far side a-b, given as a + t (ex, ey) for t in [0, end],
+// with ee = ex^2 + ey^2 and cr = cross(a, (ex, ey)) (cross(a, b) when end is
+// 1); t is measured in lengths of (ex, ey) throughout.
 __attribute__((always_inline)) inline int split_side(const Point& a, const Point& b, double ex, double ey,
                                                      double ee, double end, double cr, double r2, Piece out[2]) {
     const auto at = [&](double t) { return Point{a.x + t * ex, a.y + t * ey}; };
@@ -49,8 +50,9 @@ int split_short_side(const Point& a, const Point& b, double r2, Piece out[2]) {
     if (!(longest >= 0x1.0p-1000)) return 0;  // no area a double could hold
     int shift = 0;
     std::frexp(longest, &shift);
+    // (ex, ey) = (b - a) 2^-shift, so the side ends at t = 2^shift.
     const double ex = std::ldexp(b.x - a.x, -shift), ey = std::ldexp(b.y - a.y, -shift);
-    return split_side(a, b, ex, ey, ex * ex + ey * ey, std::ldexp(1.0, -shift), cross(a, Point{ex, ey}), r2, out);
+    return split_side(a, b, ex, ey, ex * ex + ey * ey, std::ldexp(1.0, shift), cross(a, Point{ex, ey}), r2, out);
 }
 
 }  // namespace

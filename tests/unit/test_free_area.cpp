@@ -267,6 +267,7 @@ START_TEST(short_sides_keep_their_area) {
             {{len, 2}, {0, 2}, 0},                 // ends at the closest approach (1 or 2 pieces)
             {{2, -0.5 * len}, {2, 0.5 * len}, 2},  // case 3: the closest approach inside the side
             {{-3, len}, {-3, 0}, 0},
+            {{2 * len, 1.5}, {len, 1.5}, 1},       // the closest approach lies beyond the side
         };
         for (const Tri& t : tris) {
             pds::Piece pieces[2];
