@@ -170,22 +170,27 @@ Point Polygon::uniform_point(Rng& rng) const {
     const double cell_w = b.width() / static_cast<double>(index_->columns());
     const double cell_h = b.height() / static_cast<double>(index_->rows());
     const double n = static_cast<double>(candidate_cells_.size());
-    // 64 times the expected tries (a failure once in e^64), from 256 up to
-    // 2^16; past them the polygon is far thinner than the cells, and its
-    // slabs give the point (a mixture of uniform draws is uniform).
-    const double expected = candidate_area() / area_;
-    const double budget = std::min(65536.0, std::max(256.0, 64.0 * expected));
-    for (double tries = 0.0; tries < budget; tries += 1.0) {
+    const auto candidate = [&] {
         const auto pick = std::min(candidate_cells_.size() - 1, static_cast<std::size_t>(rng.next_double() * n));
         const std::size_t cell = candidate_cells_[pick];
         const double col = static_cast<double>(cell % index_->columns());
         const double row = static_cast<double>(cell / index_->columns());
-        const Point p{b.x0 + (col + rng.next_double()) * cell_w, b.y0 + (row + rng.next_double()) * cell_h};
+        return Point{b.x0 + (col + rng.next_double()) * cell_w, b.y0 + (row + rng.next_double()) * cell_h};
+    };
+    // 64 times the expected tries (a failure once in e^64), from 256 up to
+    // 2^16; past them the polygon is far thinner than the cells, and its
+    // slabs give the point (a mixture of uniform draws is uniform). Slabs
+    // without area (none seen) leave it to the cells.
+    const double expected = candidate_area() / area_;
+    const double budget = std::min(65536.0, std::max(256.0, 64.0 * expected));
+    for (double tries = 0.0; tries < budget; tries += 1.0) {
+        const Point p = candidate();
         if (contains(p)) return p;
     }
     const PolygonSlabs slabs(*rings_);
+    const bool by_slabs = slabs.area() > 0.0;
     for (Point p;;)
-        if (slabs.draw(rng, &p) && contains(p)) return p;
+        if (by_slabs ? slabs.draw(rng, &p) && contains(p) : contains(p = candidate())) return p;
 }
 
 Magnitudes magnitudes(const double* c, std::size_t n) {
