@@ -21,12 +21,8 @@ double high_x(const PolygonRings& rings, std::uint32_t e) {
 
 }  // namespace
 
-double PolygonSlabs::Part::area(double width) const {
-    return 0.5 * width * (std::max(0.0, hi0 - lo0) + std::max(0.0, hi1 - lo1));
-}
-
 void PolygonSlabs::parts_of(const std::vector<std::uint32_t>& edges, double x0, double x1,
-                            std::vector<Part>& out) const {
+                            std::vector<Trapezoid>& out) const {
     struct Crossing {
         double mid, at0, at1;
     };
@@ -39,8 +35,11 @@ void PolygonSlabs::parts_of(const std::vector<std::uint32_t>& edges, double x0, 
     }
     std::sort(crossings.begin(), crossings.end(), [](const Crossing& p, const Crossing& q) { return p.mid < q.mid; });
     out.clear();
-    for (std::size_t k = 0; k + 1 < crossings.size(); k += 2)
-        out.push_back(Part{crossings[k].at0, crossings[k].at1, crossings[k + 1].at0, crossings[k + 1].at1});
+    for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
+        const Crossing &lo = crossings[k], &hi = crossings[k + 1];
+        const double area = 0.5 * (x1 - x0) * (std::max(0.0, hi.at0 - lo.at0) + std::max(0.0, hi.at1 - lo.at1));
+        out.push_back(Trapezoid{x0, x1, lo.at0, lo.at1, hi.at0, hi.at1, area});
+    }
 }
 
 PolygonSlabs::PolygonSlabs(const PolygonRings& rings) : rings_(rings) {
@@ -58,7 +57,7 @@ PolygonSlabs::PolygonSlabs(const PolygonRings& rings) : rings_(rings) {
     // The sweep: an edge spans slab [x0, x1] exactly when its ends lie at or
     // beyond both (the slabs' ends are the vertices' abscissae).
     std::vector<std::uint32_t> active;
-    std::vector<Part> parts;
+    std::vector<Trapezoid> parts;
     std::size_t next = 0;
     double total = 0.0;
     cumulative_.reserve(xs_.size());
@@ -69,7 +68,7 @@ PolygonSlabs::PolygonSlabs(const PolygonRings& rings) : rings_(rings) {
             active.end());
         while (next < order.size() && low_x(rings, order[next]) <= x0) active.push_back(order[next++]);
         parts_of(active, x0, x1, parts);
-        for (const Part& p : parts) total += p.area(x1 - x0);
+        for (const Trapezoid& t : parts) total += t.area;
         cumulative_.push_back(total);
     }
 }
@@ -81,36 +80,29 @@ bool PolygonSlabs::draw(Rng& rng, Point* out) const {
         cumulative_.size() - 1,
         static_cast<std::size_t>(std::upper_bound(cumulative_.begin(), cumulative_.end(), target) -
                                  cumulative_.begin()));
-    const double x0 = xs_[slab], x1 = xs_[slab + 1], width = x1 - x0;
+    const double x0 = xs_[slab], x1 = xs_[slab + 1];
     std::vector<std::uint32_t> edges;
     for (std::uint32_t e = 0; e < rings_.vertices(); ++e)
         if (rings_.edge_start(e).x != rings_.edge_end(e).x && low_x(rings_, e) <= x0 && high_x(rings_, e) >= x1)
             edges.push_back(e);
-    std::vector<Part> parts;
+    std::vector<Trapezoid> parts;
     parts_of(edges, x0, x1, parts);
     double sum = 0.0;
-    for (const Part& p : parts) sum += p.area(width);
+    for (const Trapezoid& t : parts) sum += t.area;
     if (!(sum > 0.0)) return false;
-    // A part by its area, then x by the inverse of the area's distribution
-    // across it (the height changes linearly), then y uniform.
+    // A part by its area, then a point in it.
     const double pick = rng.next_double() * sum;
-    const Part* chosen = &parts.back();
+    const Trapezoid* chosen = &parts.back();
     double running = 0.0;
-    for (const Part& p : parts) {
-        running += p.area(width);
-        if (running > pick && p.area(width) > 0.0) {
-            chosen = &p;
+    for (const Trapezoid& t : parts) {
+        running += t.area;
+        if (running > pick && t.area > 0.0) {
+            chosen = &t;
             break;
         }
     }
-    const double h0 = std::max(0.0, chosen->hi0 - chosen->lo0), h1 = std::max(0.0, chosen->hi1 - chosen->lo1);
     const double u = rng.next_double(), v = rng.next_double();
-    // s solves h0 s + (h1 - h0) s^2 / 2 = u (h0 + h1) / 2, in the form that
-    // never divides by h1 - h0.
-    const double root = std::sqrt(h0 * h0 + u * (h1 * h1 - h0 * h0));
-    const double s = h0 + root > 0.0 ? u * (h0 + h1) / (h0 + root) : u;
-    const double lo = chosen->lo0 + s * (chosen->lo1 - chosen->lo0), hi = chosen->hi0 + s * (chosen->hi1 - chosen->hi0);
-    *out = Point{x0 + s * width, lo + v * (hi - lo)};
+    *out = point_in_trapezoid(*chosen, u, v);
     return true;
 }
 

@@ -24,6 +24,7 @@
 
 #include "core/point.hpp"
 #include "core/rng.hpp"
+#include "core/trapezoid.hpp"
 #include "domain/polygon_rings.hpp"
 
 namespace pds {
@@ -39,13 +40,8 @@ public:
     bool draw(Rng& rng, Point* out) const;
 
 private:
-    // The parts of slab i as (lower, upper) heights at its two ends, in order.
-    struct Part {
-        double lo0, lo1, hi0, hi1;
-        double area(double width) const;
-    };
     // The parts of the slab between x0 and x1 from the edges spanning it.
-    void parts_of(const std::vector<std::uint32_t>& edges, double x0, double x1, std::vector<Part>& out) const;
+    void parts_of(const std::vector<std::uint32_t>& edges, double x0, double x1, std::vector<Trapezoid>& out) const;
 
     const PolygonRings& rings_;
     std::vector<double> xs_;          // the vertices' distinct abscissae, ascending
