@@ -106,6 +106,7 @@ static double lowest_radius(const fz_state *st)
     if (st->shape.kind != FZ_SHAPE_NONE) /* NaN (lenient) when the library's area is not known */
         area = st->shape.area_known && fz_shape_scalable(st) ? area * sqrt(st->shape.frac) : NAN;
     low = 0.98 * area / sqrt(3.14159265358979323846 * (double)st->target);
+    if (isnan(low)) return low; /* lenient: fz_precision_ok(NaN) is false */
     return low < st->radius ? low : st->radius;
 }
 
