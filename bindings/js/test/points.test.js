@@ -80,3 +80,26 @@ test('maximal, and verify() says so; freeArea falls to 0', async () => {
   assert.ok(r.every((v) => v === 0.01));
   s.dispose();
 });
+
+test('a rectangle far thinner than R: the free area is the width times the free length', async () => {
+  const w = 1e-200, r = 0.01;
+  const s = await Sampler.create(r, { seed: 5, bounds: [0, 0, w, 1] });
+  for (let n = 1; n <= 20; n++) {
+    s.run(1);
+    const ys = [];
+    const pts = s.points();
+    for (let i = 1; i < pts.length; i += 2) ys.push(pts[i]);
+    ys.sort((a, b) => a - b);
+    let covered = 0, hi = 0;
+    for (const y of ys) {
+      const a = Math.max(y - r, hi), b = Math.min(y + r, 1);
+      covered += Math.max(b - a, 0);
+      hi = Math.max(hi, b);
+    }
+    assert.ok(Math.abs(s.freeArea / w - (1 - covered)) < 1e-9, `${n} points: free area ${s.freeArea}`);
+  }
+  assert.equal(s.run(), true);
+  assert.equal(s.freeArea, 0);
+  assert.equal(s.verify(), true);
+  s.dispose();
+});
