@@ -21,10 +21,12 @@ enum class Opening { none, space_time, dense, sparse, field };
 
 constexpr double kSparseFrom = 128.0;
 
-// The cells of a dart grid of radius r over the box (dart_grid.hpp's side).
-double grid_cells(const Box& box, double r) {
+// The cells of a dart grid of radius r over the box (dart_grid.hpp's side
+// and count along each axis), each axis widened by `pad` cells.
+double grid_cells(const Box& box, double r, double pad = 0.0) {
     const double side = darts::cell_side(r);
-    return std::ceil(box.width() / side) * std::ceil(box.height() / side);
+    return (std::max(std::ceil(box.width() / side), 1.0) + pad) *
+           (std::max(std::ceil(box.height() / side), 1.0) + pad);
 }
 
 // Whether every cell of the dart grid of radius r over the box, with its
@@ -34,10 +36,7 @@ double grid_cells(const Box& box, double r) {
 // loop then runs alone, its memory following the points. On a 64-bit target
 // the precision limit on R keeps every grid far within.
 bool numbered(const Box& box, double r) {
-    const double side = darts::cell_side(r), pad = 2.0 * darts::kPad;
-    const double cells = (std::max(std::ceil(box.width() / side), 1.0) + pad) *
-                         (std::max(std::ceil(box.height() / side), 1.0) + pad);
-    return cells <= static_cast<double>(SIZE_MAX);
+    return grid_cells(box, r, 2.0 * darts::kPad) <= static_cast<double>(SIZE_MAX);
 }
 
 // A polygon that fills little of its box, whose grid of radius r over the
