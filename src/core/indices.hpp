@@ -8,6 +8,12 @@
 //   SiteIndex    a real vertex counted without the ghosts: the leaf of the
 //                free-area tree that holds its cell's weight.
 //
+// And one number outside the pattern: GridCell, a cell of a dart grid,
+// numbered row by row over the padded grid. 64 bits on every target: a grid
+// over a wide box (islands far apart) can have more cells than a 32-bit
+// size_t counts, and wasm32 must number them as a 64-bit machine does to
+// draw the same points.
+//
 // Site and vertex differ by the ghost count, always: site_of / vertex_of are
 // the only conversions. Point and vertex agree (vertex = point + kGhosts)
 // except for the points of the dart stage, which enter the mesh in a spatial
@@ -24,6 +30,7 @@ namespace pds {
 using PointIndex = std::size_t;
 using VertexIndex = std::uint32_t;
 using SiteIndex = std::size_t;
+using GridCell = std::uint64_t;
 
 constexpr VertexIndex kGhostVertices = 4;
 

@@ -53,7 +53,7 @@ public:
 
     struct Dart {
         Point p;
-        std::size_t cell;
+        GridCell cell;  // its cell's number in the padded grid
         std::int64_t col, row;  // its cell's column and row, without the padding
         // The cells the dart's disk reaches, relative to its own: columns
         // x_lo..x_hi and rows y_lo..y_hi, each within -kPad..kPad.
@@ -89,7 +89,7 @@ public:
     void release() { cells_.release(); }
 
     // The sampling rule's scale: the grid's cells (those kept, with keep_to).
-    std::size_t cell_count() const { return keep_ ? kept_cells_ : cols_ * rows_; }
+    GridCell cell_count() const { return keep_ ? GridCell{kept_cells_} : GridCell{cols_} * rows_; }
     // The hand-over's curve over the grid's cells.
     CurveOrder curve(const Box& domain) const { return CurveOrder(domain, side_x_, side_y_, cols_, rows_); }
     double radius() const { return r_; }
@@ -121,7 +121,7 @@ private:
     // Point `index` (or its copy) p into the cell in column col, row row.
     void write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index);
     // The exact point of a nonempty cell (its copy, in the padding of a torus).
-    Point exact(std::size_t cell, Word word, const std::vector<Point>& points) const;
+    Point exact(GridCell cell, Word word, const std::vector<Point>& points) const;
     void aim(Dart& d) const;  // fills d's cell, column, row and block from d.p
 
     Box box_;
@@ -133,7 +133,7 @@ private:
     double reach_x_, reach_y_;  // R in cells, with a little slack
     Torus torus_;
     std::size_t cols_ = 0, rows_ = 0;  // real cells; the padded row has cols_ + 2 kPad
-    std::size_t stride_ = 0;
+    GridCell stride_ = 0;
     const PolygonIndex* keep_ = nullptr;  // keep_to's polygon grid, or none
     PolygonRaster raster_;                // or, for a polygon filling little of the box, its cells
     std::size_t kept_cells_ = 0;          // grid cells darts are drawn in
@@ -169,28 +169,28 @@ DartGrid<Cells>::DartGrid(const Box& domain, double radius, const Torus& torus)
     step_y_ = side_y_ / kOffsetSteps;
     reach_x_ = radius * inv_side_x_ + kReachSlack;
     reach_y_ = radius * inv_side_y_ + kReachSlack;
-    stride_ = cols_ + 2 * kPad;
-    const std::size_t padded_rows = rows_ + 2 * kPad;
-    if (padded_rows > static_cast<std::size_t>(-1) / stride_) throw std::bad_alloc();
+    stride_ = GridCell{cols_} + 2 * kPad;
+    const GridCell padded_rows = GridCell{rows_} + 2 * kPad;
+    if (padded_rows > static_cast<GridCell>(-1) / stride_) throw std::bad_alloc();
     cells_ = Cells(stride_ * padded_rows);
 }
 
 template <class Cells>
 void DartGrid<Cells>::write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index) {
     using darts::kPad;
-    const std::size_t cell = static_cast<std::size_t>(row + kPad) * stride_ + static_cast<std::size_t>(col + kPad);
+    const GridCell cell = static_cast<GridCell>(row + kPad) * stride_ + static_cast<GridCell>(col + kPad);
     const std::uint64_t sx = offset_steps(p.x - cell_x0(col), step_x_);
     const std::uint64_t sy = offset_steps(p.y - cell_y0(row), step_y_);
     cells_.set(cell, (sy << 48) | (sx << 32) | (std::uint64_t{index} + 1));
 }
 
 template <class Cells>
-Point DartGrid<Cells>::exact(std::size_t cell, Word word, const std::vector<Point>& points) const {
+Point DartGrid<Cells>::exact(GridCell cell, Word word, const std::vector<Point>& points) const {
     using darts::kPad;
     const Point& p = points[static_cast<std::uint32_t>(word) - 1];
     if (!torus_.on()) return p;
     // A copy sits in the padding, shifted toward the side it pads.
-    const std::size_t col = cell % stride_, row = cell / stride_;
+    const GridCell col = cell % stride_, row = cell / stride_;
     const int i = col < kPad ? -1 : col >= cols_ + kPad ? 1 : 0;
     const int j = row < kPad ? -1 : row >= rows_ + kPad ? 1 : 0;
     return torus_.shifted(p, i, j);
@@ -241,10 +241,10 @@ void DartGrid<Cells>::throw_darts(Dart* batch, std::size_t n, Rng& rng) const {
         }
         aim(d);
         // The block: 3 or 4 rows of at most 32 bytes, a line or two each.
-        std::size_t row = d.cell + static_cast<std::size_t>(d.y_lo * static_cast<std::ptrdiff_t>(stride_));
+        GridCell row = d.cell + static_cast<GridCell>(d.y_lo * static_cast<std::int64_t>(stride_));
         for (int i = d.y_lo; i <= d.y_hi; ++i, row += stride_) {
-            cells_.prefetch(row + static_cast<std::size_t>(d.x_lo));
-            cells_.prefetch(row + static_cast<std::size_t>(d.x_hi));
+            cells_.prefetch(row + static_cast<GridCell>(d.x_lo));
+            cells_.prefetch(row + static_cast<GridCell>(d.x_hi));
         }
     }
 }
@@ -281,7 +281,7 @@ void DartGrid<Cells>::aim(Dart& d) const {
     const std::size_t cx = clamped_cell(fx, cols_), cy = clamped_cell(fy, rows_);
     d.col = static_cast<std::int64_t>(cx);
     d.row = static_cast<std::int64_t>(cy);
-    d.cell = (cy + kPad) * stride_ + cx + kPad;
+    d.cell = (GridCell{cy} + kPad) * stride_ + cx + kPad;
     d.x_lo = block_offset(fx - reach_x_, d.col, kPad);
     d.x_hi = block_offset(fx + reach_x_, d.col, kPad);
     d.y_lo = block_offset(fy - reach_y_, d.row, kPad);
@@ -293,11 +293,11 @@ bool DartGrid<Cells>::is_free(const Dart& d, const std::vector<Point>& points, c
     // An occupied cell is covered whole (its diagonal is under R).
     if (cells_.get(d.cell) != 0) return false;
     const Point& p = d.p;
-    const auto stride = static_cast<std::ptrdiff_t>(stride_);
+    const auto stride = static_cast<std::int64_t>(stride_);
     // Whether the point in the cell i rows and j columns from the dart's
     // (if there is one) lies within R.
     const auto covers = [&](int i, int j) {
-        const std::size_t cell = d.cell + static_cast<std::size_t>(i * stride + j);
+        const GridCell cell = d.cell + static_cast<GridCell>(i * stride + j);
         const Word word = cells_.get(cell);
         if (word == 0) return false;
         const double qx = cell_x0(d.col + j) + (static_cast<double>((word >> 32) & 0xFFFF) + 0.5) * step_x_;

@@ -68,7 +68,10 @@ public:
         if (polygon_) grid_.keep_to(*polygon_);  // before the rule: it scales with the cells kept
         // A window long enough that its acceptance rate is a fair estimate,
         // short enough that the stage ends soon after the rate falls.
-        queue_.set_rule(std::max<std::size_t>(darts::kMinWindow, grid_.cell_count() / 16), darts::kMinAcceptance);
+        // (A window past SIZE_MAX darts, on a 32-bit target, is never reached.)
+        const auto window = std::min<GridCell>(grid_.cell_count() / 16, static_cast<std::size_t>(-1));
+        queue_.set_rule(std::max<std::size_t>(darts::kMinWindow, static_cast<std::size_t>(window)),
+                        darts::kMinAcceptance);
     }
 
     // Room for `points` points in all, and the hand-over's scratch; strong

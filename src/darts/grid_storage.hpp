@@ -27,6 +27,7 @@
 #include <new>
 #include <vector>
 
+#include "core/indices.hpp"
 #include "core/page_hints.hpp"
 #include "core/rng.hpp"
 #include "core/prefetch.hpp"
@@ -37,20 +38,26 @@ class DenseCells {
 public:
     DenseCells() = default;
     // `cells` zeroed words; throws std::bad_alloc.
-    explicit DenseCells(std::size_t cells) : bytes_(cells * sizeof(std::uint64_t)) {
+    explicit DenseCells(GridCell cells) {
         if (cells > static_cast<std::size_t>(-1) / sizeof(std::uint64_t)) throw std::bad_alloc();
-        words_.reset(static_cast<std::uint64_t*>(std::calloc(cells, sizeof(std::uint64_t))));
+        bytes_ = static_cast<std::size_t>(cells) * sizeof(std::uint64_t);
+        words_.reset(static_cast<std::uint64_t*>(std::calloc(static_cast<std::size_t>(cells), sizeof(std::uint64_t))));
         if (!words_) throw std::bad_alloc();
     }
 
-    std::uint64_t get(std::size_t cell) const { return words_[cell]; }
-    void set(std::size_t cell, std::uint64_t word) { words_[cell] = word; }
-    void prefetch(std::size_t cell) const { pds::prefetch(words_.get() + cell); }
+    // A cell's number is below the array's size, so it fits a size_t.
+    std::uint64_t get(GridCell cell) const { return words_[static_cast<std::size_t>(cell)]; }
+    void set(GridCell cell, std::uint64_t word) { words_[static_cast<std::size_t>(cell)] = word; }
+    void prefetch(GridCell cell) const { pds::prefetch(words_.get() + static_cast<std::size_t>(cell)); }
     // The same, for a grid that threads read while one of them writes (the
     // space-time stage's bands): relaxed atomic accesses, a plain load or
     // store on the machines we build for, but defined behaviour.
-    std::uint64_t load(std::size_t cell) const { return __atomic_load_n(words_.get() + cell, __ATOMIC_RELAXED); }
-    void store(std::size_t cell, std::uint64_t word) { __atomic_store_n(words_.get() + cell, word, __ATOMIC_RELAXED); }
+    std::uint64_t load(GridCell cell) const {
+        return __atomic_load_n(words_.get() + static_cast<std::size_t>(cell), __ATOMIC_RELAXED);
+    }
+    void store(GridCell cell, std::uint64_t word) {
+        __atomic_store_n(words_.get() + static_cast<std::size_t>(cell), word, __ATOMIC_RELAXED);
+    }
 
     // Room for `points` points writing `writes` cells in all (never fails:
     // the array is whole). Once the points are worth them (copies on a
@@ -70,7 +77,7 @@ public:
     // one by one as points land: huge pages, or all pages made writable,
     // would make the grid over the polygon's bounding box resident, not the
     // polygon's cells (a thin ring across its box: 1.6 GB against 0.2).
-    void writes_only_in(std::size_t cells) { spread_ = 2 * cells >= bytes_ / sizeof(std::uint64_t); }
+    void writes_only_in(GridCell cells) { spread_ = 2 * cells >= bytes_ / sizeof(std::uint64_t); }
     // Bytes under the huge-page hint (0: none asked), bytes made writable
     // ahead (0: none, or no support), and the words (tests).
     std::size_t advised_bytes() const { return advised_; }
@@ -93,22 +100,22 @@ private:
 class SparseCells {
 public:
     SparseCells() { reserve(0, 1); }
-    explicit SparseCells(std::size_t) : SparseCells() {}
+    explicit SparseCells(GridCell) : SparseCells() {}
 
-    std::uint64_t get(std::size_t cell) const {
+    std::uint64_t get(GridCell cell) const {
         for (std::size_t i = slot_of(cell);; i = (i + 1) & mask_) {
             const Slot& s = slots_[i];
             if (s.word == 0 || s.cell == cell) return s.word;
         }
     }
     // word != 0; requires room (reserve).
-    void set(std::size_t cell, std::uint64_t word) {
+    void set(GridCell cell, std::uint64_t word) {
         std::size_t i = slot_of(cell);
         while (slots_[i].word != 0 && slots_[i].cell != cell) i = (i + 1) & mask_;
         if (slots_[i].word == 0) ++used_;
         slots_[i] = Slot{cell, word};
     }
-    void prefetch(std::size_t cell) const { pds::prefetch(&slots_[slot_of(cell)]); }
+    void prefetch(GridCell cell) const { pds::prefetch(&slots_[slot_of(cell)]); }
 
     // Room for `writes` taken cells in all (the points' and their copies');
     // strong guarantee (std::bad_alloc).
@@ -128,7 +135,7 @@ public:
         mask_ = mask;
     }
     bool has_room_for(std::size_t, std::size_t writes) const { return slots_.size() / 2 >= writes && !slots_.empty(); }
-    void writes_only_in(std::size_t) {}  // memory follows the points already
+    void writes_only_in(GridCell) {}  // memory follows the points already
     std::size_t advised_bytes() const { return 0; }
     // Taken cells (tests).
     std::size_t taken() const { return used_; }
@@ -140,12 +147,12 @@ public:
 
 private:
     struct Slot {
-        std::size_t cell;
+        GridCell cell;
         std::uint64_t word;  // 0: a free slot
     };
     // mix64 spreads neighbouring cells over the table.
     static std::size_t mix(std::uint64_t x) { return static_cast<std::size_t>(mix64(x)); }
-    std::size_t slot_of(std::size_t cell) const { return mix(cell) & mask_; }
+    std::size_t slot_of(GridCell cell) const { return mix(cell) & mask_; }
 
     std::vector<Slot> slots_;
     std::size_t mask_ = 0;

@@ -22,21 +22,10 @@ enum class Opening { none, space_time, dense, sparse, field };
 constexpr double kSparseFrom = 128.0;
 
 // The cells of a dart grid of radius r over the box (dart_grid.hpp's side
-// and count along each axis), each axis widened by `pad` cells.
-double grid_cells(const Box& box, double r, double pad = 0.0) {
+// and count along each axis).
+double grid_cells(const Box& box, double r) {
     const double side = darts::cell_side(r);
-    return (std::max(std::ceil(box.width() / side), 1.0) + pad) *
-           (std::max(std::ceil(box.height() / side), 1.0) + pad);
-}
-
-// Whether every cell of the dart grid of radius r over the box, with its
-// padding, has a size_t number (dart_grid.hpp's bound). Not so on a 32-bit
-// target (wasm32) for a box far wider than R (islands far apart, a bounded
-// run in a huge rectangle), which would fail for want of numbers: the Jones
-// loop then runs alone, its memory following the points. On a 64-bit target
-// the precision limit on R keeps every grid far within.
-bool numbered(const Box& box, double r) {
-    return grid_cells(box, r, 2.0 * darts::kPad) <= static_cast<double>(SIZE_MAX);
+    return std::max(std::ceil(box.width() / side), 1.0) * std::max(std::ceil(box.height() / side), 1.0);
 }
 
 // A polygon that fills little of its box, whose grid of radius r over the
@@ -75,7 +64,6 @@ Opening opening_for(const Frame& frame, double count_bound, const RadiusField* f
     // cells it meets (polygon_raster.hpp); its grid keeps only its taken
     // cells once the whole grid would have over kSparseFrom cells for each
     // point the polygon can hold (islands far apart: more than memory).
-    if (!numbered(frame.domain().bounds(), frame.r())) return Opening::none;
     if (!fits || spread_thin(frame, frame.r(), count_bound)) return Opening::sparse;
     return space_time && !frame.torus().on() && !frame.polygon() ? Opening::space_time : Opening::dense;
 }

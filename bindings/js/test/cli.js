@@ -24,6 +24,14 @@ export function writePgm(width, height, grey) {
   return path;
 }
 
+// A polygon file for --polygon (rings of [x, y], a blank line between rings); its path.
+export function writePolygon(rings) {
+  const dir = mkdtempSync(join(tmpdir(), 'poissondisk-js-'));
+  const path = join(dir, 'polygon.txt');
+  writeFileSync(path, rings.map((ring) => ring.map(([x, y]) => `${x} ${y}`).join('\n')).join('\n\n') + '\n');
+  return path;
+}
+
 export function bytesOf(points) {
   return new Uint8Array(points.buffer, points.byteOffset, points.byteLength);
 }

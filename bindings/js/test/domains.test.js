@@ -55,7 +55,7 @@ test('rings meeting at corners a few ulps apart: merged, the area is the square 
 for (const apart of [300, 1000]) {
   test(`islands ${apart} apart: memory and time for the islands, not their box`, async () => {
     // Two unit squares: a grid over their whole box would take 15 GB at this
-    // radius (300 apart), or number more cells than 32 bits can (1000 apart).
+    // radius (300 apart), and its cells outnumber a 32-bit size_t (1000 apart).
     const a = [[0, 0], [1, 0], [1, 1], [0, 1]];
     const b = a.map(([x, y]) => [x + apart, y + apart]);
     const s = await Sampler.create(0.01, { seed: 3, polygon: [a, b] });

@@ -2,7 +2,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { Sampler, poissonDisk } from '../src/index.js';
-import { bytesOf, cliPoints, writePgm } from './cli.js';
+import { bytesOf, cliPoints, writePgm, writePolygon } from './cli.js';
 
 function sameBytes(actual, expected, what) {
   const a = bytesOf(actual);
@@ -50,6 +50,31 @@ test('radius map from grey levels: the points of the CLI --radius-map', async ()
   const path = writePgm(width, height, grey);
   const pts = await poissonDisk(null, { seed: 3, radiusMap: { width, height, grey, rmin: 0.006, rmax: 0.03 } });
   sameBytes(pts, cliPoints(['--radius-map', path, '--rmin', '0.006', '--rmax', '0.03', '--seed', '3']), 'radius map');
+});
+
+test('polygon with a hole: the points of the CLI', async () => {
+  const rings = [[[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]], [[0.2, 0.2], [0.6, 0.2], [0.4, 0.6]]];
+  const pts = await poissonDisk(0.02, { seed: 4, polygon: rings });
+  sameBytes(pts, cliPoints(['--polygon', writePolygon(rings), '--radius', '0.02', '--seed', '4']), 'polygon');
+});
+
+// Over the islands' box the dart grid has 1.8e9 cells (300 apart) and 2.0e10
+// (1000 apart): more than a 32-bit size_t counts, numbered alike all the same.
+for (const apart of [300, 1000]) {
+  test(`islands ${apart} apart: the points of the CLI`, async () => {
+    const a = [[0, 0], [1, 0], [1, 1], [0, 1]];
+    const rings = [a, a.map(([x, y]) => [x + apart, y + apart])];
+    const pts = await poissonDisk(0.01, { seed: 3, polygon: rings });
+    sameBytes(pts, cliPoints(['--polygon', writePolygon(rings), '--radius', '0.01', '--seed', '3']), `${apart} apart`);
+  });
+}
+
+test('a bounded run in a rectangle 10^6 R wide: the points of the CLI --max-points', async () => {
+  const s = await Sampler.create(0.01, { seed: 8, bounds: [0, 0, 1e4, 1e4] });
+  assert.equal(s.run(3000), false);
+  sameBytes(s.points(), cliPoints(['--domain', '0', '0', '1e4', '1e4', '--radius', '0.01', '--seed', '8',
+    '--max-points', '3000', '--partial']), 'bounded run');
+  s.dispose();
 });
 
 test('the same points however the run is split (steps, batches, runAsync)', async () => {
