@@ -55,9 +55,31 @@ bool OutlineClip::cut_cell(const Point& site, const Box& box, double r) {
                                            std::max(a.y, b.y) < near.y0 || std::min(a.y, b.y) > near.y1;
                                 }),
                  edges_.end());
+    if (edges_.empty()) {
+        keep_whole_cell(site, margin);
+        return true;
+    }
     keep_cell_edges(site, box, margin);
     keep_outline_edges(site, box, margin);
     return true;
+}
+
+void OutlineClip::keep_whole_cell(const Point& site, double margin) {
+    // No outline edge meets the widened box, which is convex and holds the
+    // cell: the box lies on one side of the outline, and one point of it
+    // settles every side. (Not the site: a power cell need not hold it.)
+    // The sides as keep_cell_edges would keep them, uncut.
+    const std::size_t n = cell_.size();
+    const Vtx& u0 = cell_[0];
+    const Vtx& v0 = cell_[1 % n];
+    if (polygon_.locate(Point{site.x + 0.5 * (u0.x + v0.x), site.y + 0.5 * (u0.y + v0.y)}) == PolygonIndex::kOutside)
+        return;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vtx& u = cell_[i];
+        const Vtx& v = cell_[(i + 1) % n];
+        if (v.x - u.x == 0.0 && v.y - u.y == 0.0) continue;
+        segments_.push_back(Segment{Vtx{u.x, u.y, u.err + margin, u.d2}, Vtx{v.x, v.y, v.err + margin, v.d2}});
+    }
 }
 
 void OutlineClip::keep_cell_edges(const Point& site, const Box& box, double margin) {

@@ -125,6 +125,7 @@ private:
     // uncut cell leaves segments_ alone: cell_ is its boundary.
     bool cut_cell(const Point& site, const Box& box, double r);
     void keep_cell_edges(const Point& site, const Box& box, double margin);
+    void keep_whole_cell(const Point& site, double margin);  // a cell no edge meets
     void keep_outline_edges(const Point& site, const Box& box, double margin);
 
     const Polygon& polygon_;

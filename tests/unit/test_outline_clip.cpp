@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "cells/outline_clip.hpp"
 #include "core/rng.hpp"
 #include "domain/mask_outline.hpp"
 #include "domain/polygon.hpp"
@@ -262,6 +263,63 @@ START_TEST(second_point_is_uniform_in_a_cut_region) {
 }
 END_TEST
 
+// The region a cell keeps: the signed area of the boundary the clip feeds
+// its sink (relative to the site), and the number of sides.
+struct RegionSink {
+    double area = 0.0;
+    int sides = 0;
+    void vertex(const pds::OutlineClip::Vtx&) {}
+    void edge(const pds::OutlineClip::Vtx& a, const pds::OutlineClip::Vtx& b) {
+        area += 0.5 * (a.x * b.y - a.y * b.x);
+        ++sides;
+    }
+    void finish() {}
+};
+
+// The square [x0, x0 + w] x [y0, y0 + w] as a cell of `site` (a power cell
+// need not hold its site) in the square [0, 10]^2 with the hole [4, 6]^2.
+RegionSink clip_square(pds::OutlineClip& clip, const Point& site, double x0, double y0, double w) {
+    RegionSink sink;
+    pds::OutlineClip::Stage<RegionSink> stage(clip, sink, site, pds::Box{0, 0, 10, 10}, 0.01);
+    for (const Point& v : {Point{x0, y0}, Point{x0 + w, y0}, Point{x0 + w, y0 + w}, Point{x0, y0 + w}}) {
+        const double x = v.x - site.x, y = v.y - site.y;
+        stage.vertex(pds::OutlineClip::Vtx{x, y, 0.0, x * x + y * y});
+    }
+    stage.finish();
+    return sink;
+}
+
+START_TEST(cells_no_edge_meets_are_kept_or_dropped_whole) {
+    Shape s;
+    s.ring({{0, 0}, {10, 0}, {10, 10}, {0, 10}});
+    s.ring({{4, 4}, {6, 4}, {6, 6}, {4, 6}});
+    const auto polygon = s.polygon();
+    pds::OutlineClip clip(*polygon);
+    // Cells in grid cells the outline meets (the grid's cells are about 0.3
+    // wide) but whose boxes no edge meets: kept whole inside, dropped whole
+    // in the hole, wherever their sites are.
+    struct Case {
+        Point site;
+        double x0, y0;
+        bool inside;
+    };
+    for (const Case& c : {Case{{-0.5, 0.22}, 0.2, 0.2, true}, Case{{0.22, 0.22}, 0.2, 0.2, true},
+                          Case{{3.9, 5.0}, 4.5, 5.0, false}, Case{{4.55, 5.05}, 4.5, 5.0, false},
+                          Case{{4.55, 5.05}, 6.1, 5.0, true}}) {
+        const RegionSink r = clip_square(clip, c.site, c.x0, c.y0, 0.05);
+        ck_assert_msg(clip.cut() && clip.edges().empty(), "the case must take the path it tests");
+        const double want = c.inside ? 0.0025 : 0.0;
+        ck_assert_msg(std::fabs(r.area - want) < 1e-15 && r.sides == (c.inside ? 4 : 0),
+                      "cell at (%g, %g), site (%g, %g): area %.17g over %d sides, %g expected", c.x0, c.y0,
+                      c.site.x, c.site.y, r.area, r.sides, want);
+    }
+    // A cell the hole's edge crosses: cut, the part outside the hole kept.
+    const RegionSink r = clip_square(clip, Point{3.9, 5.0}, 3.95, 5.0, 0.1);
+    ck_assert_msg(clip.cut() && !clip.edges().empty(), "the hole's side meets the cell");
+    ck_assert_msg(std::fabs(r.area - 0.005) < 1e-15, "cut cell: area %.17g, 0.005 expected", r.area);
+}
+END_TEST
+
 }  // namespace
 
 Suite* outline_clip_suite() {
@@ -273,6 +331,7 @@ Suite* outline_clip_suite() {
     tcase_add_test(tc, mask_outline_is_the_union_of_its_pixels);
     tcase_add_test(tc, second_point_is_uniform_in_a_cut_region);
     tcase_add_test(tc, outline_of_a_hundred_thousand_vertices);
+    tcase_add_test(tc, cells_no_edge_meets_are_kept_or_dropped_whole);
     suite_add_tcase(s, tc);
     return s;
 }
