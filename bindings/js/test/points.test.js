@@ -1,6 +1,9 @@
 // The WebAssembly build gives the native library's points, byte for byte.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
+import { mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { Sampler, poissonDisk } from '../src/index.js';
 import { bytesOf, cliPoints, writePgm, writePolygon } from './cli.js';
 
@@ -68,6 +71,25 @@ for (const apart of [300, 1000]) {
     sameBytes(pts, cliPoints(['--polygon', writePolygon(rings), '--radius', '0.01', '--seed', '3']), `${apart} apart`);
   });
 }
+
+test('mask and fixed points: the points of the CLI --mask --fixed', async () => {
+  const width = 40;
+  const height = 30;
+  // Grey levels, top row first (the PGM's order): a dark disk and a dark bar.
+  const grey = new Uint8Array(width * height).map((_, k) => {
+    const i = k % width;
+    const j = Math.floor(k / width);
+    return (i - 14) ** 2 + (j - 12) ** 2 < 100 || (j > 22 && i > 5) ? 20 : 230;
+  });
+  const inside = grey.map((g) => (g < 128 ? 1 : 0));  // top row first too
+  const fixed = [[1.0, 1.0, 0.2], [1.5, 0.3], [2.2, 0.2, 0.05]];
+  const dir = mkdtempSync(join(tmpdir(), 'poissondisk-js-'));
+  const fixedPath = join(dir, 'fixed.txt');
+  writeFileSync(fixedPath, fixed.map((f) => f.join(' ')).join('\n') + '\n');
+  const pts = await poissonDisk(0.03, { seed: 6, bounds: [0, 0, 4, 3], mask: { width, height, inside }, fixed });
+  sameBytes(pts, cliPoints(['--mask', writePgm(width, height, grey), '--domain', '0', '0', '4', '3', '--fixed', fixedPath,
+    '--radius', '0.03', '--seed', '6']), 'mask and fixed points');
+});
 
 test('a bounded run in a rectangle 10^6 R wide: the points of the CLI --max-points', async () => {
   const s = await Sampler.create(0.01, { seed: 8, bounds: [0, 0, 1e4, 1e4] });
