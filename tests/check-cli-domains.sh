@@ -148,6 +148,20 @@ expect "--polygon, a strip 1e-12 high along the diagonal: exits 0, maximal and v
 expect "--polygon, a strip 1e-12 high along the diagonal: inside, spaced, 70 to 143 points" \
     eval 'dc inside "$tmp/strip.out" "polygon:$tmp/strip.txt" && dc spacing "$tmp/strip.out" 0.01 - &&
           [ "$(wc -l < "$tmp/strip.out")" -gt 70 ] && [ "$(wc -l < "$tmp/strip.out")" -le 143 ]'
+# A ring 0.02 wide (64-gons of radius 1 and 0.98) under a radius map from
+# 0.004 to 0.008: it fills 1/25 of its box, so the field's darts are drawn
+# among the cells it meets.
+awk 'BEGIN { for (k = 0; k < 64; k++) printf "%.17g %.17g\n", cos(k * atan2(0, -1) / 32), sin(k * atan2(0, -1) / 32)
+             print ""
+             for (k = 0; k < 64; k++) printf "%.17g %.17g\n", 0.98 * cos(k * atan2(0, -1) / 32), 0.98 * sin(k * atan2(0, -1) / 32) }' \
+    > "$tmp/ring.txt"
+printf 'P2\n2 1\n255\n0 255\n' > "$tmp/ramp.pgm"
+run ringmap --radius-map "$tmp/ramp.pgm" --rmin 0.004 --rmax 0.008 --polygon "$tmp/ring.txt" --verify --stats
+expect "--polygon with --radius-map, a thin ring: exits 0, maximal and verified (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && grep -q " maximal verified " "$tmp/ringmap.err"'
+expect "--polygon with --radius-map, a thin ring: inside, at least rmin apart, 2000 to 8000 points" \
+    eval 'dc inside "$tmp/ringmap.out" "polygon:$tmp/ring.txt" && dc spacing "$tmp/ringmap.out" 0.004 - &&
+          [ "$(wc -l < "$tmp/ringmap.out")" -gt 2000 ] && [ "$(wc -l < "$tmp/ringmap.out")" -le 8000 ]'
 run geo --radius 0.02 --polygon "$tmp/shape.geojson"
 expect "--polygon GeoJSON: the same points as the same rings in text" \
     eval '[ "$rc" -eq 0 ] && cmp -s "$tmp/poly.out" "$tmp/geo.out"'

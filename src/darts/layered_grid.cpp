@@ -49,6 +49,28 @@ LayeredGrid::LayeredGrid(const Box& domain, const PointRadii& radii) : box_(doma
     covered_ = CoveredBitmap(box_.x0, box_.y0, finest.side, finest.cols, finest.rows);
 }
 
+void LayeredGrid::keep_to(const Polygon& polygon) {
+    if (!raster_suits(polygon, box_)) return;
+    // The dart grid's budget (dart_grid.hpp): a few words per finest cell of
+    // the polygon's area, 2^22 bands at most; past it, darts over the box.
+    const Layer& finest = layers_.front();
+    const double side = finest.side;
+    const auto max_bands =
+        static_cast<std::size_t>(std::min(4194304.0, 1048576.0 + 4.0 * polygon.area() / (side * side)));
+    if (!raster_.build(polygon, box_.x0, side, finest.cols, box_.y0, side, finest.rows, max_bands))
+        raster_ = PolygonRaster();
+}
+
+std::size_t LayeredGrid::cell_count() const {
+    const Layer& coarsest = layers_.back();
+    const std::size_t all = coarsest.cols * coarsest.rows;
+    if (raster_.cells() == 0) return all;
+    const Layer& finest = layers_.front();
+    const double share =
+        static_cast<double>(raster_.cells()) / (static_cast<double>(finest.cols) * static_cast<double>(finest.rows));
+    return std::max<std::size_t>(1, static_cast<std::size_t>(share * static_cast<double>(all)));
+}
+
 void LayeredGrid::allocate_cells(Layer& L) {
     // Bricks of 2^10 cells (8 KiB, two pages): 32 x 32, or flatter for a
     // grid under 32 rows or columns (the shorter side first). Ordinary pages:

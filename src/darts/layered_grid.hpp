@@ -44,6 +44,7 @@
 #include "darts/curve_order.hpp"
 #include "darts/dart_constants.hpp"
 #include "darts/grid_arithmetic.hpp"
+#include "darts/polygon_raster.hpp"
 #include "radius/point_radii.hpp"
 
 namespace pds {
@@ -107,6 +108,7 @@ public:
         // kept for the test rather than computed again.
         std::size_t block_layer;
         Block block;
+        bool inside;  // drawn in a raster cell wholly inside keep_to's polygon
     };
 
     // domain and radii in the internal frame. Allocates the grids (zeroed:
@@ -116,13 +118,18 @@ public:
     void reserve(std::size_t) {}
     bool has_room_for(std::size_t) const { return true; }
 
-    // n darts uniform over the finest layer's cells, their tiles, bitmap
-    // words and blocks prefetched.
+    // n darts uniform over the finest layer's cells (with keep_to's raster,
+    // over its cells), their tiles, bitmap words and blocks prefetched.
     void throw_darts(Dart* batch, std::size_t n, Rng& rng) const;
-    // A polygonal domain: darts stay uniform over the whole box and the
-    // stage keeps those inside it (exact; a sparse polygon wastes darts).
-    void keep_to(const Polygon&) {}
-    static bool surely_inside(const Dart&) { return false; }
+    // A polygonal domain: darts uniform over the whole box, the stage keeping
+    // those inside it (exact); or, for a polygon that fills little of the box
+    // (raster_suits), uniform over the finest layer's cells it may meet
+    // (polygon_raster.hpp), where over the box most darts would be drawn in
+    // vain. The polygon must outlive the grid.
+    void keep_to(const Polygon& polygon);
+    static bool surely_inside(const Dart& d) { return d.inside; }
+    // Whether keep_to's darts are drawn among its polygon's raster (tests).
+    bool draws_in_raster() const { return raster_.cells() > 0; }
     // Whether d is outside every disk; points[k] and values[k] are point
     // k's position and field value.
     bool is_free(const Dart& d, const std::vector<Point>& points, const std::vector<double>& values) const;
@@ -134,8 +141,9 @@ public:
     // Frees the grids: the stage is over.
     void release();
 
-    // The sampling rule's scale: the coarsest layer's cells.
-    std::size_t cell_count() const { return layers_.back().cols * layers_.back().rows; }
+    // The sampling rule's scale: the coarsest layer's cells (with a raster,
+    // the share of them its cells cover).
+    std::size_t cell_count() const;
     // The hand-over's curve over the finest layer's cells.
     CurveOrder curve(const Box& domain) const;
     double radius() const { return radii_.rmax(); }
@@ -168,6 +176,7 @@ private:
     // Per tile: the layers with a point in it or in a tile next to it.
     std::vector<std::uint32_t> tiles_;
     CoveredBitmap covered_;  // the finest layer's cells inside one disk
+    PolygonRaster raster_;   // keep_to's, on the finest layer's cells; or none
     mutable std::size_t exact_checks_ = 0;
 };
 
@@ -254,8 +263,18 @@ inline void LayeredGrid::throw_darts(Dart* batch, std::size_t n, Rng& rng) const
     // run: misses too); then the blocks of those still in doubt.
     for (std::size_t at = 0; at < n; ++at) {
         Dart& d = batch[at];
-        d.p.x = box_.x0 + rng.next_double() * w;
-        d.p.y = box_.y0 + rng.next_double() * h;
+        d.inside = false;
+        if (raster_.cells() > 0) {
+            const double cells = static_cast<double>(raster_.cells());
+            const PolygonRaster::Cell c =
+                raster_.cell(std::min(raster_.cells() - 1, static_cast<std::size_t>(rng.next_double() * cells)));
+            d.p.x = box_.x0 + (static_cast<double>(c.col) + rng.next_double()) * finest.side;
+            d.p.y = box_.y0 + (static_cast<double>(c.row) + rng.next_double()) * finest.side;
+            d.inside = c.inside;
+        } else {
+            d.p.x = box_.x0 + rng.next_double() * w;
+            d.p.y = box_.y0 + rng.next_double() * h;
+        }
         d.tile = tile_of(d.p);
         d.cover_cell = covered_.cell_of(d.p);
         pds::prefetch(&tiles_[d.tile]);

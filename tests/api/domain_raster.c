@@ -332,6 +332,35 @@ START_TEST(radius_map_over_the_polygon_box)
 }
 END_TEST
 
+/* A ring 0.02 wide of radius 1 (64-gons) fills 1/25 of its box; under a map
+ * from 0.004 to 0.008 its darts come from the finest layer's raster. */
+START_TEST(radius_map_over_a_thin_ring)
+{
+    const double map[2] = {0.004, 0.008};
+    double xy[256];
+    const size_t ends[2] = {64, 128};
+    const region ring = {xy, ends, 2};
+    double *pts, *r;
+    size_t n, k;
+    pds_sampler *s = sampler_new(1.0, 3);
+
+    for (k = 0; k < 64; k++) {
+        const double t = 2.0 * acos(-1.0) * (double)k / 64.0;
+        xy[2 * k] = cos(t), xy[2 * k + 1] = sin(t);
+        xy[128 + 2 * k] = 0.98 * cos(t), xy[128 + 2 * k + 1] = 0.98 * sin(t);
+    }
+    ck_assert_int_eq(pds_set_radius_map(s, 2, 1, map), 0);
+    ck_assert_int_eq(pds_set_polygon(s, ring.xy, ring.ends, ring.nrings), 0);
+    run_to_end(s);
+    domain_pattern(s, &pts, &r, &n);
+    ck_assert_msg(n > 2000 && n < 8000, "a radius map over a thin ring: %zu points", n);
+    assert_domain_pattern(s, &ring, NULL, 0, "a radius map over a thin ring");
+    free(pts);
+    free(r);
+    pds_destroy(s);
+}
+END_TEST
+
 Suite *domain_raster_suite(void)
 {
     Suite *s = suite_create("domain_raster");
@@ -347,5 +376,6 @@ Suite *domain_raster_suite(void)
     tcase_add_test(tc, shapes_of_a_few_ulps_judged_as_their_rectangles);
     tc = new_tcase(s, "radius map");
     tcase_add_test(tc, radius_map_over_the_polygon_box);
+    tcase_add_test(tc, radius_map_over_a_thin_ring);
     return s;
 }

@@ -139,6 +139,18 @@ class PolygonTest(TestCase):
             self.assertFalse([p for p in as_pairs(s.points)
                               if not in_polygon(p[0], p[1], [OUTER, HOLE])])
 
+    def test_radius_map_over_a_thin_ring(self):
+        # 64-gons of radius 1 and 0.98: the ring fills 1/25 of its box.
+        outer = [(math.cos(k * math.pi / 32), math.sin(k * math.pi / 32)) for k in range(64)]
+        inner = [(0.98 * x, 0.98 * y) for x, y in outer]
+        with Sampler(None, seed=2, domain=[outer, inner], radius_map=[[0.008, 0.016]]) as s:
+            self.assertIs(s.run(), True)
+            self.assertIs(s.verify(), True)
+            pts = as_pairs(s.points)
+        self.assertTrue(500 < len(pts) < 2000, len(pts))
+        self.assertFalse([p for p in pts if not in_polygon(p[0], p[1], [outer, inner])])
+        self.assertTrue(min_dist_ok(pts, 0.008), "every pair at least rmin apart")
+
 
 class GeoInterfaceTest(TestCase):
     POLYGON = {"type": "Polygon", "coordinates": [closed(OUTER), closed(HOLE)]}

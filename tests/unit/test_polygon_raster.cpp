@@ -3,7 +3,7 @@
 // of the runs; cells called inside lie wholly inside; the runs are in row
 // order and disjoint, and hold little more than the polygon (a ring's hole
 // and the sea between islands stay out); and the darts a grid draws among
-// them are uniform over the polygon.
+// them (one radius, or a field's finest layer) are uniform over the polygon.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -13,6 +13,9 @@
 #include "core/rng.hpp"
 #include "darts/dart_stage.hpp"
 #include "darts/polygon_raster.hpp"
+#include "domain/frame.hpp"
+#include "radius/point_radii.hpp"
+#include "radius/radius_field.hpp"
 #include "polygon_rings.hpp"
 #include "suites.hpp"
 
@@ -182,6 +185,45 @@ START_TEST(darts_among_the_cells_are_uniform_over_the_polygon) {
 }
 END_TEST
 
+double twice_along_x(void* r0, double x, double) { return *static_cast<double*>(r0) * (1.0 + x); }
+
+START_TEST(field_darts_among_the_cells_are_uniform_over_the_polygon) {
+    // Islands of areas 1 and 2 (0.08 square, 0.08 by 0.16) in opposite
+    // corners of the unit square fill 1/52 of it: a field's darts are drawn
+    // among the finest layer's raster cells. The first point, by island and
+    // by quarter of its width, against the areas (chi-square, 7 degrees of
+    // freedom): darts placed from the padded grid's corner (two cells off)
+    // leave each island's last quarter nearly empty.
+    auto islands = std::make_shared<const pds::Polygon>(
+        rings_of({{0, 0, 0.08, 0, 0.08, 0.08, 0, 0.08}, {0.92, 0.84, 1, 0.84, 1, 1, 0.92, 1}}));
+    const pds::Box box{0, 0, 1, 1};
+    ck_assert(pds::raster_suits(*islands, box));
+    double r0 = 0.01;
+    const pds::RadiusField field = pds::RadiusField::function(twice_along_x, &r0, r0, 2 * r0);
+    const pds::Frame frame(box, 2 * r0);
+    const pds::PointRadii radii(field, frame);
+    const int seeds = test_light() ? 600 : 3000;
+    std::vector<int> bins(8, 0);
+    for (int seed = 1; seed <= seeds; ++seed) {
+        pds::FieldDartStage stage(box, islands, radii);
+        ck_assert(stage.grid().draws_in_raster());
+        pds::Rng rng(static_cast<std::uint64_t>(seed));
+        const pds::Point* p = stage.next(rng);
+        ck_assert(p != nullptr && islands->contains(*p));
+        const bool large = p->x > 0.5;
+        const double x0 = large ? 0.92 : 0.0;
+        bins[(large ? 4 : 0) + std::min(3, static_cast<int>((p->x - x0) / 0.02))]++;
+    }
+    double chi2 = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        const double expected = seeds * (k < 4 ? 1.0 : 2.0) / 12.0;
+        chi2 += (bins[k] - expected) * (bins[k] - expected) / expected;
+    }
+    ck_assert_msg(chi2 < 24.3, "chi2 %.1f (7 degrees of freedom, limit 24.3 at 0.001): %d %d %d %d | %d %d %d %d",
+                  chi2, bins[0], bins[1], bins[2], bins[3], bins[4], bins[5], bins[6], bins[7]);
+}
+END_TEST
+
 START_TEST(darts_stay_with_the_outline_grid_where_the_raster_is_coarser) {
     // A thin ring: at R 0.0005 the raster's cells are far fewer than the
     // outline grid's cells that meet the ring, and the darts are drawn among
@@ -224,6 +266,7 @@ Suite* polygon_raster_suite() {
     tcase_add_test(t, every_point_of_the_polygon_lies_in_a_cell_of_the_runs);
     tcase_add_test(t, a_raster_that_would_cost_more_than_its_cap_is_not_built);
     tcase_add_test(t, darts_among_the_cells_are_uniform_over_the_polygon);
+    tcase_add_test(t, field_darts_among_the_cells_are_uniform_over_the_polygon);
     tcase_add_test(t, darts_stay_with_the_outline_grid_where_the_raster_is_coarser);
     tcase_add_test(t, a_raster_past_its_band_budget_is_not_built_for_the_darts);
     suite_add_tcase(s, t);

@@ -72,6 +72,16 @@ for (const apart of [300, 1000]) {
   });
 }
 
+test('radius map over a thin ring: the points of the CLI', async () => {
+  // 64-gons of radius 1 and 0.98: the field's darts come from the ring's raster.
+  const outer = Array.from({ length: 64 }, (_, k) => [Math.cos((k * Math.PI) / 32), Math.sin((k * Math.PI) / 32)]);
+  const rings = [outer, outer.map(([x, y]) => [0.98 * x, 0.98 * y])];
+  const grey = new Uint8Array([0, 255]);
+  const pts = await poissonDisk(null, { seed: 2, polygon: rings, radiusMap: { width: 2, height: 1, grey, rmin: 0.004, rmax: 0.008 } });
+  sameBytes(pts, cliPoints(['--polygon', writePolygon(rings), '--radius-map', writePgm(2, 1, grey), '--rmin', '0.004',
+    '--rmax', '0.008', '--seed', '2']), 'radius map over a ring');
+});
+
 test('mask and fixed points: the points of the CLI --mask --fixed', async () => {
   const width = 40;
   const height = 30;
