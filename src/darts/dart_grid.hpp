@@ -53,7 +53,7 @@ public:
 
     struct Dart {
         Point p;
-        GridCell cell;  // its cell's number in the padded grid
+        GridCell cell;          // its cell's number in the padded grid
         std::int64_t col, row;  // its cell's column and row, without the padding
         // The cells the dart's disk reaches, relative to its own: columns
         // x_lo..x_hi and rows y_lo..y_hi, each within -kPad..kPad.

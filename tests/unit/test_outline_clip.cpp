@@ -303,15 +303,15 @@ START_TEST(cells_no_edge_meets_are_kept_or_dropped_whole) {
         double x0, y0;
         bool inside;
     };
-    for (const Case& c : {Case{{-0.5, 0.22}, 0.2, 0.2, true}, Case{{0.22, 0.22}, 0.2, 0.2, true},
-                          Case{{3.9, 5.0}, 4.5, 5.0, false}, Case{{4.55, 5.05}, 4.5, 5.0, false},
-                          Case{{4.55, 5.05}, 6.1, 5.0, true}}) {
+    for (const Case& c :
+         {Case{{-0.5, 0.22}, 0.2, 0.2, true}, Case{{0.22, 0.22}, 0.2, 0.2, true}, Case{{3.9, 5.0}, 4.5, 5.0, false},
+          Case{{4.55, 5.05}, 4.5, 5.0, false}, Case{{4.55, 5.05}, 6.1, 5.0, true}}) {
         const RegionSink r = clip_square(clip, c.site, c.x0, c.y0, 0.05);
         ck_assert_msg(clip.cut() && clip.edges().empty(), "the case must take the path it tests");
         const double want = c.inside ? 0.0025 : 0.0;
         ck_assert_msg(std::fabs(r.area - want) < 1e-15 && r.sides == (c.inside ? 4 : 0),
-                      "cell at (%g, %g), site (%g, %g): area %.17g over %d sides, %g expected", c.x0, c.y0,
-                      c.site.x, c.site.y, r.area, r.sides, want);
+                      "cell at (%g, %g), site (%g, %g): area %.17g over %d sides, %g expected", c.x0, c.y0, c.site.x,
+                      c.site.y, r.area, r.sides, want);
     }
     // A cell the hole's edge crosses: cut, the part outside the hole kept.
     const RegionSink r = clip_square(clip, Point{3.9, 5.0}, 3.95, 5.0, 0.1);

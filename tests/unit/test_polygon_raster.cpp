@@ -219,8 +219,8 @@ START_TEST(field_darts_among_the_cells_are_uniform_over_the_polygon) {
         const double expected = seeds * (k < 4 ? 1.0 : 2.0) / 12.0;
         chi2 += (bins[k] - expected) * (bins[k] - expected) / expected;
     }
-    ck_assert_msg(chi2 < 24.3, "chi2 %.1f (7 degrees of freedom, limit 24.3 at 0.001): %d %d %d %d | %d %d %d %d",
-                  chi2, bins[0], bins[1], bins[2], bins[3], bins[4], bins[5], bins[6], bins[7]);
+    ck_assert_msg(chi2 < 24.3, "chi2 %.1f (7 degrees of freedom, limit 24.3 at 0.001): %d %d %d %d | %d %d %d %d", chi2,
+                  bins[0], bins[1], bins[2], bins[3], bins[4], bins[5], bins[6], bins[7]);
 }
 END_TEST
 
