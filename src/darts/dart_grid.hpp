@@ -254,15 +254,12 @@ void DartGrid<Cells>::keep_to(const Polygon& polygon) {
     if (torus_.on()) return;  // no polygon on the torus
     keep_ = &polygon.index();
     if (raster_suits(polygon, box_)) {
-        // A raster no larger than a few words per cell of the polygon's
-        // area, and 2^22 bands at most (about 200 MB while it is built): a
-        // bounded run in a polygon far larger than its points draws over
-        // the outline grid's cells instead.
-        const auto max_bands =
-            static_cast<std::size_t>(std::min(4194304.0, 1048576.0 + 4.0 * polygon.area() / (side_x_ * side_y_)));
-        // Drawn where the raster holds less than the outline grid's cells
-        // (cells far wider than the polygon's parts hold more: large R).
-        if (raster_.build(polygon, box_.x0, side_x_, cols_, box_.y0, side_y_, rows_, max_bands) &&
+        // Past its budget (raster_band_budget) a bounded run in a polygon far
+        // larger than its points draws over the outline grid's cells instead;
+        // so it does where the raster holds more than the outline grid's
+        // cells (cells far wider than the polygon's parts: large R).
+        if (raster_.build(polygon, box_.x0, side_x_, cols_, box_.y0, side_y_, rows_,
+                          raster_band_budget(polygon, side_x_ * side_y_)) &&
             !(static_cast<double>(raster_.cells()) * side_x_ * side_y_ < polygon.candidate_area()))
             raster_ = PolygonRaster();
     }

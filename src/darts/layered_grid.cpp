@@ -51,13 +51,11 @@ LayeredGrid::LayeredGrid(const Box& domain, const PointRadii& radii) : box_(doma
 
 void LayeredGrid::keep_to(const Polygon& polygon) {
     if (!raster_suits(polygon, box_)) return;
-    // The dart grid's budget (dart_grid.hpp): a few words per finest cell of
-    // the polygon's area, 2^22 bands at most; past it, darts over the box.
+    // Past its budget, no raster: darts over the box.
     const Layer& finest = layers_.front();
     const double side = finest.side;
-    const auto max_bands =
-        static_cast<std::size_t>(std::min(4194304.0, 1048576.0 + 4.0 * polygon.area() / (side * side)));
-    if (!raster_.build(polygon, box_.x0, side, finest.cols, box_.y0, side, finest.rows, max_bands))
+    if (!raster_.build(polygon, box_.x0, side, finest.cols, box_.y0, side, finest.rows,
+                       raster_band_budget(polygon, side * side)))
         raster_ = PolygonRaster();
 }
 

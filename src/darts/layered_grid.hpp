@@ -125,7 +125,7 @@ public:
     // those inside it (exact); or, for a polygon that fills little of the box
     // (raster_suits), uniform over the finest layer's cells it may meet
     // (polygon_raster.hpp), where over the box most darts would be drawn in
-    // vain. The polygon must outlive the grid.
+    // vain.
     void keep_to(const Polygon& polygon);
     static bool surely_inside(const Dart& d) { return d.inside; }
     // Whether keep_to's darts are drawn among its polygon's raster (tests).

@@ -12,6 +12,10 @@ bool raster_suits(const Polygon& polygon, const Box& box) {
     return 32.0 * polygon.area() < box.width() * box.height();
 }
 
+std::size_t raster_band_budget(const Polygon& polygon, double cell_area) {
+    return static_cast<std::size_t>(std::min(4194304.0, 1048576.0 + 4.0 * polygon.area() / cell_area));
+}
+
 namespace {
 
 // Where x or y falls on the grid, clamped to it (rounding and the box's

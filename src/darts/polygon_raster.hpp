@@ -32,6 +32,11 @@ namespace pds {
 // fills under 1/32 of the box (over the box, over 32 darts are drawn for
 // one kept).
 bool raster_suits(const Polygon& polygon, const Box& box);
+// The most row bands a raster of cells of `cell_area` over `polygon` may
+// take (build's max_bands): a few words per cell of the polygon's area, and
+// 2^22 at most (about 200 MB while it is built). A bounded run in a polygon
+// far larger than its points draws its darts otherwise.
+std::size_t raster_band_budget(const Polygon& polygon, double cell_area);
 
 class PolygonRaster {
 public:
