@@ -347,6 +347,12 @@ file_case "--fixed, a point outside the bounding box" \
     --radius 0.02 --fixed "$bad/outside.txt"
 file_case "--fixed outside the polygon's bounding box" "--fixed $bad/outside.txt: line 3: " \
     --radius 0.02 --polygon "$tmp/shape.txt" --fixed "$bad/outside.txt"
+# Inside the mask's rectangle, beyond its dark pixels: a mask's bounding box is
+# theirs (the annulus ends in the pixel column ending at x = 1.2375).
+printf '1.45 0.5\n' > "$bad/past_mask.txt"
+file_case "--fixed beyond the mask's dark pixels" \
+    "--fixed $bad/past_mask.txt: line 1: the point \(1\.45, 0\.5\) lies outside the domain's bounding box \[0,1\.2375\]x\[" \
+    --radius 0.02 --mask "$tmp/mask.pgm" --domain 0 0 1.5 1 --fixed "$bad/past_mask.txt"
 # A bad second file: the first was read, still nothing is written.
 file_case "--polygon good, --fixed bad" "--fixed $bad/four.txt: line 3: " \
     --radius 0.02 --polygon "$tmp/shape.txt" --fixed "$bad/four.txt"

@@ -129,6 +129,37 @@ static int load_mask(const char *prog, struct cli_domain *d)
     return 0;
 }
 
+/*
+ * The domain's bounding box as the library takes it for fixed points: a
+ * mask's is the box of its inside pixels within box (the rectangle it spans),
+ * else box itself.
+ */
+static void mask_or_box(const struct cli_domain *d, const double box[4], double out[4])
+{
+    size_t row, col, c0 = (size_t)-1, c1 = 0, r0 = (size_t)-1, r1 = 0;
+    double pw, ph;
+
+    memcpy(out, box, 4 * sizeof out[0]);
+    if (d->mask == NULL)
+        return;
+    for (row = 0; row < d->mask_h; row++)
+        for (col = 0; col < d->mask_w; col++)
+            if (d->inside[row * d->mask_w + col]) {
+                c0 = col < c0 ? col : c0;
+                c1 = col > c1 ? col : c1;
+                r0 = row < r0 ? row : r0;
+                r1 = row > r1 ? row : r1;
+            }
+    if (c0 == (size_t)-1)
+        return;
+    pw = (box[2] - box[0]) / (double)d->mask_w;
+    ph = (box[3] - box[1]) / (double)d->mask_h;
+    out[0] = box[0] + (double)c0 * pw;
+    out[2] = c1 + 1 == d->mask_w ? box[2] : box[0] + (double)(c1 + 1) * pw;
+    out[1] = box[1] + (double)r0 * ph;
+    out[3] = r1 + 1 == d->mask_h ? box[3] : box[1] + (double)(r1 + 1) * ph;
+}
+
 int cli_domain_load(const char *prog, struct cli_domain *d, double box[4])
 {
     char msg[512], where[48];
@@ -159,17 +190,19 @@ int cli_domain_load(const char *prog, struct cli_domain *d, double box[4])
     }
     if (d->fixed != NULL) {
         const struct fixed_points *p = &d->points;
+        double fbox[4];
+        mask_or_box(d, box, fbox);
         if (fixed_points_read(d->fixed, &d->points, msg, sizeof msg) != 0) {
             fprintf(stderr, "%s: --fixed %s\n", prog, msg);
             return CLI_EXIT_LIBRARY;
         }
         for (k = 0; k < p->n; k++) {
             double x = p->xy[2 * k], y = p->xy[2 * k + 1];
-            if (x < box[0] || x > box[2] || y < box[1] || y > box[3]) {
+            if (x < fbox[0] || x > fbox[2] || y < fbox[1] || y > fbox[3]) {
                 fprintf(stderr, "%s: --fixed %s: %sthe point (%g, %g) lies outside the "
                                 "domain's bounding box [%g,%g]x[%g,%g]\n", prog, d->fixed,
-                        where_text(where, sizeof where, d->fixed, k), x, y, box[0], box[2],
-                        box[1], box[3]);
+                        where_text(where, sizeof where, d->fixed, k), x, y, fbox[0], fbox[2],
+                        fbox[1], fbox[3]);
                 return CLI_EXIT_LIBRARY;
             }
         }

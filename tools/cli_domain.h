@@ -47,7 +47,8 @@ int cli_domain_shaped(const struct cli_domain *d);
  * Reads the files given, in the order polygon, mask, fixed points. With a
  * polygon, box (x0 y0 x1 y1, in: --domain) becomes the vertices' bounding
  * box, as the library makes it; a mask spans box. Checks what the library
- * would only find at the first point: a fixed point outside box. Returns 0,
+ * would only find at the first point: a fixed point outside box (with a
+ * mask, outside its inside pixels' bounding box). Returns 0,
  * or CLI_EXIT_LIBRARY after "PROG: --OPTION FILE: WHERE: WHAT" on stderr.
  */
 int cli_domain_load(const char *prog, struct cli_domain *d, double box[4]);

@@ -4,6 +4,7 @@
 // its first vertices before the first sampled point.
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -129,8 +130,16 @@ void Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
     const double rmax = field_ ? field_->rmax() : fixed_radius_;
     for (std::size_t k = 0; k < fixed_.size(); ++k) {
         const Point p = frame_.to_internal(fixed_[k]);
-        if (!frame_.box().contains(p))
-            throw DomainError("fixed point " + std::to_string(k) + " lies outside the domain's bounding box");
+        if (!frame_.box().contains(p)) {
+            // The box in the user's units: a mask's is its inside pixels', not its rectangle.
+            const Box& b = frame_.box();
+            const Point lo = frame_.to_user(Point{b.x0, b.y0}), hi = frame_.to_user(Point{b.x1, b.y1});
+            char what[256];
+            std::snprintf(what, sizeof what,
+                          "fixed point %zu (%g, %g) lies outside the domain's bounding box [%g,%g]x[%g,%g]", k,
+                          fixed_[k].x, fixed_[k].y, lo.x, hi.x, lo.y, hi.y);
+            throw DomainError(what);
+        }
         // A value the field's scaling turns into the clearance, now and after a refine.
         const double c = fixed_clearance_[k];
         values.push_back(c > 0.0 ? c / frame_.user_radius() * rmax : radii.value_at(p));

@@ -109,6 +109,9 @@ START_TEST(fixed_outside_the_box_at_the_first_point)
 
     ck_assert_int_eq(pds_set_fixed(a, out, NULL, 2), 0);
     assert_failed(a, pds_run(a, 0, &added), PDS_EINVAL, "fixed point outside the box, pds_run");
+    ck_assert_msg(strstr(pds_errmsg(a), "fixed point 1 (1.5, 0.5) lies outside the domain's bounding box "
+                                        "[0,1]x[0,1]") != NULL,
+                  "the message names the point and the box: %s", pds_errmsg(a));
     ck_assert_uint_eq(added, 0);
     assert_failed(a, pds_step(a), PDS_EINVAL, "fixed point outside the box, pds_step");
     ck_assert_uint_eq(pds_count(a), 0);

@@ -289,7 +289,9 @@ class FixedTest(TestCase):
             self.assertTrue(exc.message.startswith("pds_set_fixed:"), exc.message)
             self.assertIn("point 1", exc.message)
         with Sampler(0.1, fixed=[(2.0, 2.0)]) as s:  # outside the bounding box
-            self.assertLibraryError(poissondisk.InvalidArgumentError, poissondisk.EINVAL, s.run)
+            exc = self.assertLibraryError(poissondisk.InvalidArgumentError, poissondisk.EINVAL, s.run)
+            self.assertIn("fixed point 0 (2, 2) lies outside the domain's bounding box [0,1]x[0,1]",
+                          exc.message)
             self.assertEqual(len(s), 0)
 
 

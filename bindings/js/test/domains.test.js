@@ -199,7 +199,8 @@ test('errors: the library message, naming the ring, vertex or point', async () =
     (e) => e instanceof InvalidArgumentError && /pds_set_fixed/.test(e.message) && /point 1/.test(e.libraryMessage));
   await assert.rejects(Sampler.create(0.1, { fixed: [[0.5, 0.5, -1]] }), InvalidArgumentError);
   const s = await Sampler.create(0.1, { fixed: [[2, 2]] });  // outside the bounding box
-  assert.throws(() => s.run(), InvalidArgumentError);
+  assert.throws(() => s.run(), (e) => e instanceof InvalidArgumentError &&
+    e.message.includes("fixed point 0 (2, 2) lies outside the domain's bounding box [0,1]x[0,1]"));
   assert.equal(s.count, 0);
   s.dispose();
 });
