@@ -148,6 +148,12 @@ expect "--polygon, a strip 1e-12 high along the diagonal: exits 0, maximal and v
 expect "--polygon, a strip 1e-12 high along the diagonal: inside, spaced, 70 to 143 points" \
     eval 'dc inside "$tmp/strip.out" "polygon:$tmp/strip.txt" && dc spacing "$tmp/strip.out" 0.01 - &&
           [ "$(wc -l < "$tmp/strip.out")" -gt 70 ] && [ "$(wc -l < "$tmp/strip.out")" -le 143 ]'
+# Fixed points on one line, one inside another's clearance (hidden between its
+# neighbours in the weighted mesh).
+printf '0.67 0.5 0.0155\n0.669 0.5 0.0418\n0.8 0.5 0.0162\n' > "$tmp/online.txt"
+run online --radius 0.036 --fixed "$tmp/online.txt" --verify --stats
+expect "--fixed on one line, one inside another's clearance: exits 0, maximal and verified (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && grep -q " maximal verified " "$tmp/online.err"'
 # A ring 0.02 wide (64-gons of radius 1 and 0.98) under a radius map from
 # 0.004 to 0.008: it fills 1/25 of its box, so the field's darts are drawn
 # among the cells it meets.

@@ -11,6 +11,17 @@
 
 namespace pds {
 
+namespace {
+
+// Whether m, collinear with a and b, lies strictly between them (exact:
+// along a line, a coordinate orders the points).
+bool strictly_between(const Point& a, const Point& m, const Point& b) {
+    if (a.x != b.x) return (a.x < m.x && m.x < b.x) || (b.x < m.x && m.x < a.x);
+    return (a.y < m.y && m.y < b.y) || (b.y < m.y && m.y < a.y);
+}
+
+}  // namespace
+
 Delaunay::Delaunay(const Box& domain, bool weighted, double ghost_radius) : weighted_(weighted) {
     const double cx = 0.5 * (domain.x0 + domain.x1);
     const double cy = 0.5 * (domain.y0 + domain.y1);
@@ -289,6 +300,20 @@ std::uint32_t Delaunay::insert(const Point& p, double r, std::uint32_t near) {
             hide_vertex(b, v);
             e = t;
             --degree_v;
+        } else if (side_b == 0 && !is_ghost(b) && degree(b) == 4 && strictly_between(p, points_[b], pf)) {
+            // b lies on the segment from v to f, and the link edge's failed
+            // test puts lifted b above lifted v f: b is hidden, though no
+            // triangle of v holds it. The 3-1 flip of this degenerate case:
+            // b's four edges go, and v joins f (b's place as a neighbour).
+            hide_vertex(b, v);
+            mesh_.connect(t, mesh_.lprev(t));  // f -> v, in the face a f c v
+            e = t;
+        } else if (side_a == 0 && !is_ghost(a) && degree(a) == 4 && strictly_between(p, points_[a], pf)) {
+            // The same for a on the segment from v to f.
+            const EdgeRef fb = mesh_.lnext(t);
+            hide_vertex(a, v);
+            mesh_.connect(mesh_.lnext(fb), fb);  // v -> f, in the face f b v c
+            e = fb;
         } else {
             // Not flippable now; another link edge is (the Lemma).
             e = mesh_.lprev(mesh_.onext(e));

@@ -22,12 +22,15 @@
 // flip test is the power test (predicates.hpp) and the insertion is
 // Edelsbrunner & Shah's (1996): the point's spokes, then 2-2 flips of link
 // edges that fail the test where the quadrilateral is convex, and 3-1 flips
-// that remove a reflex vertex of degree 3. A disk whose power cell is empty
-// is "hidden": it is not in the mesh, keeps its point and radius, and names
-// the vertex that hid it (a walk starting there begins nearby). A disk is
-// hidden when its lifted point lies on or above the lower hull: a cell of
-// zero area counts as empty. With equal radii every decision is the
-// unweighted one, so the mesh is the same, edge for edge.
+// that remove a reflex vertex of degree 3; in the degenerate case of a
+// vertex of degree 4 on the segment from the new point to the far corner
+// (disks on one line), it is removed and the segment drawn. A disk whose
+// power cell is empty is "hidden": it is not in the mesh, keeps its point
+// and radius, and names the vertex that hid it (a walk starting there
+// begins nearby). A disk is hidden when its lifted point lies on or above
+// the lower hull: a cell of zero area counts as empty. With equal radii
+// every decision is the unweighted one, so the mesh is the same, edge for
+// edge.
 #ifndef PDS_DELAUNAY_HPP
 #define PDS_DELAUNAY_HPP
 

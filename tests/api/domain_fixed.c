@@ -207,6 +207,26 @@ START_TEST(kept_clear_counted_for_coverage_not_returned)
 }
 END_TEST
 
+/* Fixed points on one line with clearances that leave one inside another's
+ * (weighted, it is hidden, lying between its neighbours): the weighted
+ * insertion looped on this before. In the L's foot, along y = 0.1. */
+START_TEST(fixed_on_a_line_one_inside_another)
+{
+    const double xy[8] = {0.67, 0.1, 0.669, 0.1, 0.8, 0.1, 0.3, 0.1};
+    const double c[4] = {0.0155, 0.0418, 0.0162, 0.02};
+    disk fx[4];
+    size_t k;
+    pds_sampler *s = extra_new(&nothing, 0.036, 3);
+
+    for (k = 0; k < 4; k++)
+        fx[k].x = xy[2 * k], fx[k].y = xy[2 * k + 1], fx[k].r = c[k];
+    ck_assert_int_eq(pds_set_fixed(s, xy, c, 4), 0);
+    run_to_end(s);
+    assert_domain_pattern(s, &UNIT_L, fx, 4, "fixed on a line, one inside another");
+    pds_destroy(s);
+}
+END_TEST
+
 START_TEST(clearance_null_is_r)
 {
     const double r = 0.04;
@@ -317,6 +337,7 @@ Suite *domain_fixed_suite(void)
     tc = new_tcase(s, "clearance and coverage");
     tcase_add_test(tc, kept_clear_counted_for_coverage_not_returned);
     tcase_add_test(tc, clearance_null_is_r);
+    tcase_add_test(tc, fixed_on_a_line_one_inside_another);
     tcase_add_test(tc, clearance_0_is_the_field_value);
     tcase_add_test(tc, obstacle_in_a_mask);
     tc = new_tcase(s, "splits, cancel, count, refine");

@@ -269,6 +269,15 @@ class FixedTest(TestCase):
         if numpy is not None:
             self.assertSamePoints(poissondisk.sample(0.05, seed=2, fixed=numpy.array(xy)), a)
 
+    def test_fixed_on_a_line_one_inside_another(self):
+        # Weighted, the point at 0.67 is hidden between its neighbours on the line.
+        fixed = [(0.67, 0.5, 0.0155), (0.669, 0.5, 0.0418), (0.8, 0.5, 0.0162)]
+        with Sampler(0.036, seed=1, fixed=fixed) as s:
+            self.assertIs(s.run(), True)
+            self.assertIs(s.verify(), True)
+            pts = as_pairs(s.points)
+        self.assertTrue(all((x - fx) ** 2 + (y - fy) ** 2 >= c * c for x, y in pts for fx, fy, c in fixed))
+
     def test_fixed_in_a_polygon(self):
         fixed = [(0.1, 1.5, 0.25), (1.5, 0.5, 0.0)]
         with Sampler(R, seed=12, domain=[OUTER, HOLE], fixed=fixed) as s:

@@ -1,8 +1,8 @@
 // test_regular.cpp - the weighted mesh (regular triangulation, delaunay.hpp):
 // exact regularity by a brute-force check of every triangle against every
-// disk, hidden disks (at insertion and by 3-1 flips), independence of the
-// insertion order, and equal radii giving the unweighted mesh record for
-// record.
+// disk, hidden disks (at insertion, by 3-1 flips, and on a line through the
+// new disk), independence of the insertion order, and equal radii giving the
+// unweighted mesh record for record.
 #include <algorithm>
 #include <array>
 #include <random>
@@ -155,6 +155,40 @@ START_TEST(equal_radii_give_the_unweighted_mesh) {
 }
 END_TEST
 
+START_TEST(a_disk_between_two_on_a_line_is_hidden) {
+    // Three disks on a line, the middle one inside the power of the heavy one
+    // beside it: it is hidden, though it lies on the segment between its
+    // neighbours, not inside a triangle (the insertion looped before). Every
+    // order of the three; then a line of 60 disks with random radii among 40
+    // off it, in 4 orders.
+    const std::vector<Disk> three{{{0.67, 0.5}, 0.0155}, {{0.669, 0.5}, 0.0418}, {{0.8, 0.5}, 0.0162}};
+    std::vector<std::size_t> order{0, 1, 2};
+    do {
+        std::vector<Disk> disks;
+        for (std::size_t i : order) disks.push_back(three[i]);
+        const pds::Delaunay dt = build(disks);
+        check_regular_brute(dt);
+        ck_assert_uint_eq(dt.hidden_count(), 1);
+        for (std::size_t k = 0; k < 3; ++k)
+            ck_assert(dt.is_hidden(static_cast<std::uint32_t>(k + pds::Delaunay::kGhosts)) == (order[k] == 0));
+    } while (std::next_permutation(order.begin(), order.end()));
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<Disk> mixed;
+    for (int i = 0; i < 60; ++i) mixed.push_back({{u(rng), 0.5}, 0.05 * u(rng)});
+    for (int i = 0; i < 40; ++i) mixed.push_back({{u(rng), u(rng)}, 0.05 * u(rng)});
+    std::size_t hidden = 0;
+    for (int round = 0; round < 4; ++round) {
+        std::shuffle(mixed.begin(), mixed.end(), rng);
+        const pds::Delaunay dt = build(mixed);
+        check_regular_brute(dt);
+        if (round == 0) hidden = dt.hidden_count();
+        ck_assert_uint_eq(dt.hidden_count(), hidden);
+    }
+    ck_assert_uint_gt(hidden, 10);
+}
+END_TEST
+
 START_TEST(weighted_grid_with_ties) {
     // A grid with two radii in a pattern: many exact ties in the power test
     // (lifted points on one plane) and points on edges.
@@ -178,6 +212,7 @@ Suite* regular_suite() {
     tcase_add_test(t, insertion_order_does_not_matter);
     tcase_add_test(t, equal_radii_give_the_unweighted_mesh);
     tcase_add_test(t, weighted_grid_with_ties);
+    tcase_add_test(t, a_disk_between_two_on_a_line_is_hidden);
     suite_add_tcase(s, t);
     return s;
 }

@@ -164,6 +164,17 @@ test('fixed points: clearances kept, not returned, counted for coverage', async 
   assert.equal(uncovered(pts, 0.05, gridProbes([0, 0, 1, 1], 0.02, () => true), FIXED), null);
 });
 
+test('fixed points on one line, one inside another\'s clearance: maximal, verified', async () => {
+  // Weighted, the point at 0.67 is hidden between its neighbours on the line.
+  const fixed = [[0.67, 0.5, 0.0155], [0.669, 0.5, 0.0418], [0.8, 0.5, 0.0162]];
+  const s = await Sampler.create(0.036, { seed: 1, fixed });
+  assert.equal(s.run(), true);
+  assert.equal(s.verify(), true);
+  const pts = pairs(s.points());
+  s.dispose();
+  assert.equal(clearanceBroken(pts, fixed, 0.036), null);
+});
+
 test('fixed points: every form gives the same points; 0 or none means the radius', async () => {
   const xy = FIXED.map(([x, y]) => [x, y]);
   const a = await poissonDisk(0.05, { seed: 2, fixed: xy });
