@@ -154,6 +154,13 @@ printf '0.67 0.5 0.0155\n0.669 0.5 0.0418\n0.8 0.5 0.0162\n' > "$tmp/online.txt"
 run online --radius 0.036 --fixed "$tmp/online.txt" --verify --stats
 expect "--fixed on one line, one inside another's clearance: exits 0, maximal and verified (got $rc)" \
     eval '[ "$rc" -eq 0 ] && grep -q " maximal verified " "$tmp/online.err"'
+# A fixed point given twice: one point, the larger clearance.
+printf '0.3 0.4 0.05\n0.6 0.6\n0.3 0.4 0.1\n' > "$tmp/twice.txt"
+run twice --radius 0.03 --fixed "$tmp/twice.txt" --verify --stats
+expect "--fixed with a point given twice: exits 0, maximal and verified (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && grep -q " maximal verified " "$tmp/twice.err"'
+expect "--fixed with a point given twice: every point clear of the larger clearance" \
+    eval '[ "$(awk "(\$1 - 0.3) ^ 2 + (\$2 - 0.4) ^ 2 < 0.01" "$tmp/twice.out" | wc -l)" -eq 0 ]'
 # A ring 0.02 wide (64-gons of radius 1 and 0.98) under a radius map from
 # 0.004 to 0.008: it fills 1/25 of its box, so the field's darts are drawn
 # among the cells it meets.

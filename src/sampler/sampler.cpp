@@ -161,12 +161,12 @@ void Sampler::prepare(std::size_t points) {
         if (use_darts())
             darts = make_opening_stage(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr,
                                        parallel_ ? std::optional<std::uint64_t>(seed_) : std::nullopt);
-        if (has_fixed()) adopt_fixed(*jones, points);
+        const std::size_t fixed = has_fixed() ? adopt_fixed(*jones, points) : 0;
         if (region_draws_) jones->draw_cut_cells_by_region();
         if (region_darts_per_cell_ > 0.0) jones->set_region_darts_per_cell(region_darts_per_cell_);
         jones_ = std::move(jones);
         darts_ = std::move(darts);
-        adopted_fixed_ = fixed_.size();
+        adopted_fixed_ = fixed;
     }
     // One growth policy for every call: at least double what is there, up
     // to what the pattern can hold, so small calls cost O(1) amortized. The

@@ -2,6 +2,7 @@
 // polygon, a mask's outline, fixed points (see sampler.hpp). The frame keeps
 // the polygon in internal units; the Jones stage adopts the fixed points as
 // its first vertices before the first sampled point.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -121,7 +122,7 @@ void Sampler::set_fixed(std::vector<Point> points, std::vector<double> clearance
     fixed_clearance_ = std::move(clearances);
 }
 
-void Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
+std::size_t Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
     const PointRadii radii = *point_radii(frame_);
     std::vector<Point> points;
     std::vector<double> values;
@@ -145,11 +146,46 @@ void Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
         values.push_back(c > 0.0 ? c / frame_.user_radius() * rmax : radii.value_at(p));
         points.push_back(p);
     }
-    std::vector<std::uint32_t> order(fixed_.size());
+    drop_repeated_fixed(points, values);
+    std::vector<std::uint32_t> order(points.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
-    jones.reserve(room + fixed_.size());
+    jones.reserve(room + points.size());
     jones.adopt(points, order.data(), &values, Poll{});
-    jones.set_fixed(fixed_.size());
+    jones.set_fixed(points.size());
+    return points.size();
+}
+
+void Sampler::drop_repeated_fixed(std::vector<Point>& points, std::vector<double>& values) {
+    // A point given twice is one disk, the larger (it holds the other): the
+    // mesh takes one vertex a position. The others keep their order.
+    std::vector<std::uint32_t> by_place(points.size());
+    for (std::size_t k = 0; k < by_place.size(); ++k) by_place[k] = static_cast<std::uint32_t>(k);
+    std::sort(by_place.begin(), by_place.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return points[a].x != points[b].x   ? points[a].x < points[b].x
+               : points[a].y != points[b].y ? points[a].y < points[b].y
+                                            : a < b;
+    });
+    std::vector<bool> dropped(points.size(), false);
+    bool any = false;
+    for (std::size_t i = 0; i < by_place.size();) {
+        std::size_t j = i + 1, keep = i;
+        const Point& p = points[by_place[i]];
+        for (; j < by_place.size() && points[by_place[j]].x == p.x && points[by_place[j]].y == p.y; ++j) {
+            if (values[by_place[j]] > values[by_place[keep]]) keep = j;
+        }
+        for (std::size_t k = i; k < j; ++k)
+            if (k != keep) dropped[by_place[k]] = any = true;
+        i = j;
+    }
+    if (!any) return;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        if (dropped[k]) continue;
+        points[kept] = points[k];
+        values[kept++] = values[k];
+    }
+    points.resize(kept);
+    values.resize(kept);
 }
 
 }  // namespace pds

@@ -227,6 +227,32 @@ START_TEST(fixed_on_a_line_one_inside_another)
 }
 END_TEST
 
+/* A position given more than once is one fixed point, the one with the
+ * largest clearance (the first of equal ones), in its place among the others:
+ * the same points as with that one alone (before, PDS_EINTERNAL: a duplicate
+ * vertex). */
+START_TEST(fixed_given_twice_count_once)
+{
+    const double thrice[8] = {0.3, 0.1, 0.8, 0.15, 0.3, 0.1, 0.3, 0.1};
+    const double c[4] = {0.03, 0.05, 0.08, 0.02}, once_c[2] = {0.05, 0.08};
+    const double once[2][4] = {{0.3, 0.1, 0.8, 0.15}, {0.8, 0.15, 0.3, 0.1}};
+    const double *cs[2] = {NULL, c};
+    const double *once_cs[2] = {NULL, once_c};
+    int k;
+
+    for (k = 0; k < 2; k++) {
+        pds_sampler *a = extra_new(&nothing, 0.04, 8), *b = extra_new(&nothing, 0.04, 8);
+        ck_assert_int_eq(pds_set_fixed(a, thrice, cs[k], 4), 0);
+        ck_assert_int_eq(pds_set_fixed(b, once[k], once_cs[k], 2), 0);
+        run_to_end(a);
+        run_to_end(b);
+        assert_same_points(a, b, k ? "a point given thrice with clearances" : "a point given thrice");
+        pds_destroy(a);
+        pds_destroy(b);
+    }
+}
+END_TEST
+
 START_TEST(clearance_null_is_r)
 {
     const double r = 0.04;
@@ -338,6 +364,7 @@ Suite *domain_fixed_suite(void)
     tcase_add_test(tc, kept_clear_counted_for_coverage_not_returned);
     tcase_add_test(tc, clearance_null_is_r);
     tcase_add_test(tc, fixed_on_a_line_one_inside_another);
+    tcase_add_test(tc, fixed_given_twice_count_once);
     tcase_add_test(tc, clearance_0_is_the_field_value);
     tcase_add_test(tc, obstacle_in_a_mask);
     tc = new_tcase(s, "splits, cancel, count, refine");

@@ -278,6 +278,16 @@ class FixedTest(TestCase):
             pts = as_pairs(s.points)
         self.assertTrue(all((x - fx) ** 2 + (y - fy) ** 2 >= c * c for x, y in pts for fx, fy, c in fixed))
 
+    def test_fixed_given_twice_counts_once(self):
+        # One point, the larger clearance, in its place: the points of that one alone.
+        with Sampler(0.03, seed=2, fixed=[(0.3, 0.4, 0.05), (0.6, 0.6, 0.0), (0.3, 0.4, 0.1)]) as s:
+            self.assertIs(s.run(), True)
+            self.assertIs(s.verify(), True)
+            twice = as_pairs(s.points)
+        with Sampler(0.03, seed=2, fixed=[(0.6, 0.6, 0.0), (0.3, 0.4, 0.1)]) as s:
+            s.run()
+            self.assertEqual(twice, as_pairs(s.points))
+
     def test_fixed_in_a_polygon(self):
         fixed = [(0.1, 1.5, 0.25), (1.5, 0.5, 0.0)]
         with Sampler(R, seed=12, domain=[OUTER, HOLE], fixed=fixed) as s:

@@ -175,6 +175,13 @@ test('fixed points on one line, one inside another\'s clearance: maximal, verifi
   assert.equal(clearanceBroken(pts, fixed, 0.036), null);
 });
 
+test('a fixed point given twice counts once, with the larger clearance', async () => {
+  const twice = await poissonDisk(0.03, { seed: 2, fixed: [[0.3, 0.4, 0.05], [0.6, 0.6, 0], [0.3, 0.4, 0.1]] });
+  const once = await poissonDisk(0.03, { seed: 2, fixed: [[0.6, 0.6, 0], [0.3, 0.4, 0.1]] });
+  assert.deepEqual(Array.from(twice), Array.from(once));
+  assert.ok(twice.length > 100);
+});
+
 test('fixed points: every form gives the same points; 0 or none means the radius', async () => {
   const xy = FIXED.map(([x, y]) => [x, y]);
   const a = await poissonDisk(0.05, { seed: 2, fixed: xy });
