@@ -154,6 +154,11 @@ printf '0.67 0.5 0.0155\n0.669 0.5 0.0418\n0.8 0.5 0.0162\n' > "$tmp/online.txt"
 run online --radius 0.036 --fixed "$tmp/online.txt" --verify --stats
 expect "--fixed on one line, one inside another's clearance: exits 0, maximal and verified (got $rc)" \
     eval '[ "$rc" -eq 0 ] && grep -q " maximal verified " "$tmp/online.err"'
+# --count past a clearance that covers the square at the first radius.
+printf '0.5 0.5 1.0\n' > "$tmp/cover.txt"
+run cover --count 3 --fixed "$tmp/cover.txt" --verify --stats
+expect "--count 3 with a clearance covering the square: exits 0 with 3 points, verified (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && [ "$(wc -l < "$tmp/cover.out")" -eq 3 ] && grep -q " verified " "$tmp/cover.err"'
 # A fixed point given twice: one point, the larger clearance.
 printf '0.3 0.4 0.05\n0.6 0.6\n0.3 0.4 0.1\n' > "$tmp/twice.txt"
 run twice --radius 0.03 --fixed "$tmp/twice.txt" --verify --stats

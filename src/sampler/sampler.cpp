@@ -212,7 +212,10 @@ void Sampler::lower_radius_for_count() {
     constexpr double kLargestStep = 0.99, kSmallestStep = 0.999;
     const double guess = std::sqrt(static_cast<double>(count()) / static_cast<double>(count_target_));
     const double step = std::min(kSmallestStep, std::max(kLargestStep, guess));
-    refine(step * frame_.user_radius());
+    // With no point yet (fixed points' clearances cover the domain) the
+    // stages are kept all the same: the clearances shrink with the radius,
+    // as they do once points exist, until points fit.
+    refine_stages(step * frame_.user_radius());
 }
 
 void Sampler::hand_over() {
@@ -303,13 +306,17 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
 }
 
 void Sampler::refine(double radius) {
-    Frame next = frame_;
-    next.set_radius(radius);
     if (count() == 0) {
         forget_stages();
-        frame_ = next;
+        frame_.set_radius(radius);
         return;
     }
+    refine_stages(radius);
+}
+
+void Sampler::refine_stages(double radius) {
+    Frame next = frame_;
+    next.set_radius(radius);
     Frame next_smallest = next;
     if (field_) next_smallest.set_radius(scaled_radius(field_->rmin(), field_->rmax(), radius));
     const Limit limit = next_smallest.precision_limit();

@@ -175,6 +175,8 @@ private:
     bool complete() const { return count_target_ != 0 && count() >= count_target_; }
     void hand_over();
     void lower_radius_for_count();
+    // refine() once the stages exist: they go on at the smaller radius.
+    void refine_stages(double radius);
 
     void use_shape(std::shared_ptr<const Polygon> shape, int exponent = 0);
 

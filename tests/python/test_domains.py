@@ -278,6 +278,12 @@ class FixedTest(TestCase):
             pts = as_pairs(s.points)
         self.assertTrue(all((x - fx) ** 2 + (y - fy) ** 2 >= c * c for x, y in pts for fx, fy, c in fixed))
 
+    def test_count_past_a_clearance_covering_the_square(self):
+        with Sampler(None, seed=4, count=3, fixed=[(0.5, 0.5, 1.0)]) as s:
+            self.assertIs(s.run(), True)
+            self.assertEqual(len(s), 3)
+            self.assertIs(s.verify(), True)
+
     def test_fixed_given_twice_counts_once(self):
         # One point, the larger clearance, in its place: the points of that one alone.
         with Sampler(0.03, seed=2, fixed=[(0.3, 0.4, 0.05), (0.6, 0.6, 0.0), (0.3, 0.4, 0.1)]) as s:

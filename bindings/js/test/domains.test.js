@@ -175,6 +175,14 @@ test('fixed points on one line, one inside another\'s clearance: maximal, verifi
   assert.equal(clearanceBroken(pts, fixed, 0.036), null);
 });
 
+test('count past a clearance that covers the square at the first radius', async () => {
+  const s = await Sampler.create(null, { seed: 4, count: 3, fixed: [[0.5, 0.5, 1.0]] });
+  assert.equal(s.run(), true);
+  assert.equal(s.count, 3);
+  assert.equal(s.verify(), true);
+  s.dispose();
+});
+
 test('a fixed point given twice counts once, with the larger clearance', async () => {
   const twice = await poissonDisk(0.03, { seed: 2, fixed: [[0.3, 0.4, 0.05], [0.6, 0.6, 0], [0.3, 0.4, 0.1]] });
   const once = await poissonDisk(0.03, { seed: 2, fixed: [[0.6, 0.6, 0], [0.3, 0.4, 0.1]] });
