@@ -156,8 +156,8 @@ private:
         if (has_fixed() && fixed_field_) return PointRadii(*fixed_field_, frame);
         return std::nullopt;
     }
-    // Makes the fixed points the Jones stage's first vertices; returns how many (a
-    // position given twice is one point, its larger clearance).
+    // Makes the fixed points the Jones stage's first vertices; returns how
+    // many (a position given twice is one point, with its larger clearance).
     std::size_t adopt_fixed(JonesStage& jones, std::size_t room);
     static void drop_repeated_fixed(std::vector<Point>& points, std::vector<double>& values);
     bool use_darts() const;
