@@ -220,12 +220,9 @@ void DartGrid<Cells>::throw_darts(Dart* batch, std::size_t n, Rng& rng) const {
         Dart& d = batch[k];
         d.inside = false;
         if (raster_.cells() > 0) {
-            const double cells = static_cast<double>(raster_.cells());
-            const PolygonRaster::Cell c =
-                raster_.cell(std::min(raster_.cells() - 1, static_cast<std::size_t>(rng.next_double() * cells)));
-            d.p.x = box_.x0 + (static_cast<double>(c.col) + rng.next_double()) * side_x_;
-            d.p.y = box_.y0 + (static_cast<double>(c.row) + rng.next_double()) * side_y_;
-            d.inside = c.inside;
+            const PolygonRaster::Dart r = raster_.draw(rng);
+            d.p = r.p;
+            d.inside = r.inside;
         } else if (keep_) {
             do {
                 d.p.x = box_.x0 + rng.next_double() * w;

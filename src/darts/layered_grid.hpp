@@ -265,12 +265,9 @@ inline void LayeredGrid::throw_darts(Dart* batch, std::size_t n, Rng& rng) const
         Dart& d = batch[at];
         d.inside = false;
         if (raster_.cells() > 0) {
-            const double cells = static_cast<double>(raster_.cells());
-            const PolygonRaster::Cell c =
-                raster_.cell(std::min(raster_.cells() - 1, static_cast<std::size_t>(rng.next_double() * cells)));
-            d.p.x = box_.x0 + (static_cast<double>(c.col) + rng.next_double()) * finest.side;
-            d.p.y = box_.y0 + (static_cast<double>(c.row) + rng.next_double()) * finest.side;
-            d.inside = c.inside;
+            const PolygonRaster::Dart r = raster_.draw(rng);
+            d.p = r.p;
+            d.inside = r.inside;
         } else {
             d.p.x = box_.x0 + rng.next_double() * w;
             d.p.y = box_.y0 + rng.next_double() * h;

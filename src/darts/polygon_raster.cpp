@@ -102,6 +102,7 @@ bool PolygonRaster::build(const Polygon& polygon, double x0, double sx, std::siz
     before_.clear();
     bucket_.clear();
     step_ = 1;
+    x0_ = x0, sx_ = sx, y0_ = y0, sy_ = sy;
     if (cols == 0 || rows == 0) return false;
     const PolygonRings& rings = polygon.rings();
     const std::size_t n = rings.vertices();

@@ -19,11 +19,13 @@
 #ifndef PDS_POLYGON_RASTER_HPP
 #define PDS_POLYGON_RASTER_HPP
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "core/point.hpp"
+#include "core/rng.hpp"
 #include "domain/polygon.hpp"
 
 namespace pds {
@@ -60,6 +62,22 @@ public:
     }
     std::size_t runs() const { return runs_.size(); }
 
+    // A dart uniform over the runs' cells (requires cells() > 0): a cell,
+    // then a point in it; inside when its cell lies wholly inside.
+    struct Dart {
+        Point p;
+        bool inside;
+    };
+    Dart draw(Rng& rng) const {
+        const double n = static_cast<double>(cells());
+        const Cell c = cell(std::min(cells() - 1, static_cast<std::size_t>(rng.next_double() * n)));
+        Dart d;
+        d.p.x = x0_ + (static_cast<double>(c.col) + rng.next_double()) * sx_;
+        d.p.y = y0_ + (static_cast<double>(c.row) + rng.next_double()) * sy_;
+        d.inside = c.inside;
+        return d;
+    }
+
 private:
     struct Run {
         std::size_t row, lo, hi;  // columns lo..hi of the row
@@ -73,6 +91,7 @@ private:
     std::vector<std::size_t> before_;  // before_[i]: cells in runs 0..i-1
     std::vector<std::size_t> bucket_;  // bucket_[j]: the run holding cell j step_
     std::size_t step_ = 1;
+    double x0_ = 0.0, sx_ = 1.0, y0_ = 0.0, sy_ = 1.0;  // the grid build() was given
 };
 
 }  // namespace pds
