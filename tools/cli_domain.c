@@ -111,12 +111,21 @@ static int load_mask(const char *prog, struct cli_domain *d)
         return CLI_EXIT_LIBRARY;
     }
     /* The image's top row is the domain's top (y1); the mask's row 0 lies along y0. */
+    d->mask_c0 = d->mask_r0 = (size_t)-1;
+    d->mask_c1 = d->mask_r1 = 0;
     for (row = 0; row < d->mask_h; row++)
         for (col = 0; col < d->mask_w; col++) {
             unsigned g = img.pix[row * d->mask_w + col];
             unsigned char in_it = 2u * g < img.maxval; /* darker than mid-grey */
-            d->inside[(d->mask_h - 1 - row) * d->mask_w + col] = in_it;
+            size_t r = d->mask_h - 1 - row;
+            d->inside[r * d->mask_w + col] = in_it;
             count += in_it;
+            if (in_it) {
+                d->mask_c0 = col < d->mask_c0 ? col : d->mask_c0;
+                d->mask_c1 = col > d->mask_c1 ? col : d->mask_c1;
+                d->mask_r0 = r < d->mask_r0 ? r : d->mask_r0;
+                d->mask_r1 = r > d->mask_r1 ? r : d->mask_r1;
+            }
         }
     pgm_free(&img);
     if (count == 0) {
@@ -136,28 +145,17 @@ static int load_mask(const char *prog, struct cli_domain *d)
  */
 static void mask_or_box(const struct cli_domain *d, const double box[4], double out[4])
 {
-    size_t row, col, c0 = (size_t)-1, c1 = 0, r0 = (size_t)-1, r1 = 0;
     double pw, ph;
 
     memcpy(out, box, 4 * sizeof out[0]);
     if (d->mask == NULL)
         return;
-    for (row = 0; row < d->mask_h; row++)
-        for (col = 0; col < d->mask_w; col++)
-            if (d->inside[row * d->mask_w + col]) {
-                c0 = col < c0 ? col : c0;
-                c1 = col > c1 ? col : c1;
-                r0 = row < r0 ? row : r0;
-                r1 = row > r1 ? row : r1;
-            }
-    if (c0 == (size_t)-1)
-        return;
     pw = (box[2] - box[0]) / (double)d->mask_w;
     ph = (box[3] - box[1]) / (double)d->mask_h;
-    out[0] = box[0] + (double)c0 * pw;
-    out[2] = c1 + 1 == d->mask_w ? box[2] : box[0] + (double)(c1 + 1) * pw;
-    out[1] = box[1] + (double)r0 * ph;
-    out[3] = r1 + 1 == d->mask_h ? box[3] : box[1] + (double)(r1 + 1) * ph;
+    out[0] = box[0] + (double)d->mask_c0 * pw;
+    out[2] = d->mask_c1 + 1 == d->mask_w ? box[2] : box[0] + (double)(d->mask_c1 + 1) * pw;
+    out[1] = box[1] + (double)d->mask_r0 * ph;
+    out[3] = d->mask_r1 + 1 == d->mask_h ? box[3] : box[1] + (double)(d->mask_r1 + 1) * ph;
 }
 
 int cli_domain_load(const char *prog, struct cli_domain *d, double box[4])

@@ -34,6 +34,8 @@ struct cli_domain {
     struct shape_rings rings;  /* the polygon as read */
     size_t mask_w, mask_h;     /* the mask's size, the image's */
     unsigned char *inside;     /* mask_w * mask_h, 1 inside; row 0 along y0 */
+    size_t mask_c0, mask_c1;   /* the inside pixels' first and last column */
+    size_t mask_r0, mask_r1;   /* and row (row 0 along y0) */
     struct fixed_points points;/* the fixed points as read (clearance 0: not given) */
     double radius0;            /* pds_radius as the run starts: the library scales every
                                   clearance by pds_radius / radius0 (--refine, --count) */
