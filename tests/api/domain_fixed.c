@@ -65,6 +65,17 @@ static void assert_says(const pds_sampler *s, const char *part, const char *what
 
 static const domain_extra nothing = {"the L", NULL, NULL};
 
+/* Sets the n fixed points xy (clearances c, NULL for none) on s, runs to the
+ * end, checks the pattern in g against the disks fx, and destroys s. */
+static void fixed_run_checked(pds_sampler *s, const region *g, const double *xy, const double *c,
+                              const disk *fx, size_t n, const char *what)
+{
+    ck_assert_int_eq(pds_set_fixed(s, xy, c, n), 0);
+    run_to_end(s);
+    assert_domain_pattern(s, g, fx, n, what);
+    pds_destroy(s);
+}
+
 START_TEST(fixed_refused)
 {
     const double xy[6] = {0.5, 0.2, 0.2, 0.6, 0.8, 0.1};
@@ -220,10 +231,7 @@ START_TEST(fixed_on_a_line_one_inside_another)
 
     for (k = 0; k < 4; k++)
         fx[k].x = xy[2 * k], fx[k].y = xy[2 * k + 1], fx[k].r = c[k];
-    ck_assert_int_eq(pds_set_fixed(s, xy, c, 4), 0);
-    run_to_end(s);
-    assert_domain_pattern(s, &UNIT_L, fx, 4, "fixed on a line, one inside another");
-    pds_destroy(s);
+    fixed_run_checked(s, &UNIT_L, xy, c, fx, 4, "fixed on a line, one inside another");
 }
 END_TEST
 
@@ -263,10 +271,7 @@ START_TEST(clearance_null_is_r)
     fixed_disks(r, r, fx);
     for (k = 0; k < 3; k++)
         fx[k].r = r;
-    ck_assert_int_eq(pds_set_fixed(s, fixed_xy, NULL, 3), 0);
-    run_to_end(s);
-    assert_domain_pattern(s, &UNIT_L, fx, 3, "clearance NULL");
-    pds_destroy(s);
+    fixed_run_checked(s, &UNIT_L, fixed_xy, NULL, fx, 3, "clearance NULL");
 }
 END_TEST
 
@@ -282,10 +287,7 @@ START_TEST(clearance_0_is_the_field_value)
     fx[1].x = xy[2], fx[1].y = xy[3], fx[1].r = 0.04;
     ck_assert_int_eq(pds_set_polygon(s, UNIT_L.xy, UNIT_L.ends, UNIT_L.nrings), 0);
     ck_assert_int_eq(pds_set_radius_map(s, 2, 1, map), 0);
-    ck_assert_int_eq(pds_set_fixed(s, xy, NULL, 2), 0);
-    run_to_end(s);
-    assert_domain_pattern(s, &UNIT_L, fx, 2, "clearance 0 with a radius map");
-    pds_destroy(s);
+    fixed_run_checked(s, &UNIT_L, xy, NULL, fx, 2, "clearance 0 with a radius map");
 }
 END_TEST
 
@@ -303,10 +305,7 @@ START_TEST(obstacle_in_a_mask)
 
     fx[0].x = xy[0], fx[0].y = xy[1], fx[0].r = c[0];
     ck_assert_int_eq(pds_set_mask(s, 2, 2, mask), 0);
-    ck_assert_int_eq(pds_set_fixed(s, xy, c, 1), 0);
-    run_to_end(s);
-    assert_domain_pattern(s, &l, fx, 1, "an obstacle in an L mask");
-    pds_destroy(s);
+    fixed_run_checked(s, &l, xy, c, fx, 1, "an obstacle in an L mask");
 }
 END_TEST
 
