@@ -159,6 +159,11 @@ printf '0.5 0.5 1.0\n' > "$tmp/cover.txt"
 run cover --count 3 --fixed "$tmp/cover.txt" --verify --stats
 expect "--count 3 with a clearance covering the square: exits 0 with 3 points, verified (got $rc)" \
     eval '[ "$rc" -eq 0 ] && [ "$(wc -l < "$tmp/cover.out")" -eq 3 ] && grep -q " verified " "$tmp/cover.err"'
+# A clearance that covers the square at one radius: maximal with no point.
+run covered --radius 0.05 --fixed "$tmp/cover.txt" --verify --stats
+expect "--fixed with a clearance covering the square: exits 0, no point, coverage 1, maximal and verified (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && [ ! -s "$tmp/covered.out" ] &&
+          grep -Eq "^poissondisk: N=0 .* coverage=1\.0+ maximal verified " "$tmp/covered.err"'
 # A fixed point given twice: one point, the larger clearance.
 printf '0.3 0.4 0.05\n0.6 0.6\n0.3 0.4 0.1\n' > "$tmp/twice.txt"
 run twice --radius 0.03 --fixed "$tmp/twice.txt" --verify --stats

@@ -364,12 +364,14 @@ std::size_t Sampler::copy_radii(std::size_t first, std::size_t n, double* r) con
 }
 
 double Sampler::free_area() const {
-    if (count() == 0) return frame_.area_to_user(frame_.area());
+    // Adopted fixed points are the stage's own: their clearances count even
+    // before the first point (they may leave no room for one).
+    if (count() == 0 && !(started() && adopted_fixed_ > 0)) return frame_.area_to_user(frame_.area());
     return frame_.area_to_user(stage().free_area());
 }
 
 VerifyReport Sampler::verify() const {
-    if (count() == 0) {
+    if (count() == 0 && !(started() && adopted_fixed_ > 0)) {
         VerifyReport rep;
         rep.failure = "no points yet";
         return rep;

@@ -284,6 +284,13 @@ class FixedTest(TestCase):
             self.assertEqual(len(s), 3)
             self.assertIs(s.verify(), True)
 
+    def test_clearance_covering_the_square_leaves_no_point(self):
+        with Sampler(0.05, seed=4, fixed=[(0.5, 0.5, 1.0)]) as s:
+            self.assertIs(s.run(), True)
+            self.assertEqual(len(s), 0)
+            self.assertIs(s.verify(), True)
+            self.assertEqual(s.free_area, 0.0)
+
     def test_fixed_given_twice_counts_once(self):
         # One point, the larger clearance, in its place: the points of that one alone.
         with Sampler(0.03, seed=2, fixed=[(0.3, 0.4, 0.05), (0.6, 0.6, 0.0), (0.3, 0.4, 0.1)]) as s:

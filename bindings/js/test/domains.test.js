@@ -183,6 +183,15 @@ test('count past a clearance that covers the square at the first radius', async 
   s.dispose();
 });
 
+test('a clearance that covers the square leaves no point, maximal and verified', async () => {
+  const s = await Sampler.create(0.05, { seed: 4, fixed: [[0.5, 0.5, 1.0]] });
+  assert.equal(s.run(), true);
+  assert.equal(s.count, 0);
+  assert.equal(s.verify(), true);
+  assert.equal(s.freeArea, 0);
+  s.dispose();
+});
+
 test('a fixed point given twice counts once, with the larger clearance', async () => {
   const twice = await poissonDisk(0.03, { seed: 2, fixed: [[0.3, 0.4, 0.05], [0.6, 0.6, 0], [0.3, 0.4, 0.1]] });
   const once = await poissonDisk(0.03, { seed: 2, fixed: [[0.6, 0.6, 0], [0.3, 0.4, 0.1]] });
