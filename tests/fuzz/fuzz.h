@@ -174,6 +174,11 @@ struct fz_state {
      * parallel process (its points differ from the single-thread process's,
      * so the replay selects it too); later calls only change the count. */
     int parallel;
+    /* 1.4: the fixed points in force (fuzz_fixed.c) */
+    double *fix_xy, *fix_c; /* as given; fix_c all 0 when given as NULL */
+    size_t nfix;
+    int fix_c_null;
+    double fix_ref;  /* the radius the run started with (clearances scale from it); 0 before */
 };
 enum { FZ_FIELD_NONE, FZ_FIELD_MAP, FZ_FIELD_FN };
 
@@ -345,5 +350,23 @@ void fz_lib_bound(const fz_state *st, double *lo, double *hi);
 void fz_shape_coverage(const fz_state *st);
 /* Every nonzero coordinate of the domain within 2^-890 of the largest. */
 int fz_shape_scalable(const fz_state *st);
+
+/* 1.4 (fuzz_fixed.c): fixed points */
+void fz_op_fixed(fz_state *st, fz_reader *r);
+/* Before the first point: some fixed point lies outside the box (1), near its
+ * sides (-1: either), or none (0). */
+int fz_fixed_outside(const fz_state *st);
+/* After pds_run or pds_step at the first point with `outside` as above: the
+ * call refused a fixed point outside the box (1; checked against the model). */
+int fz_fixed_refused(fz_state *st, const char *fn, int rc, int outside, size_t added);
+/* A call that may add points begins: the clearances are adopted at this radius. */
+void fz_fixed_run_starts(fz_state *st);
+/* Every point read keeps every fixed point's clearance (part of fz_check_pattern). */
+void fz_fixed_check_pattern(const fz_state *st);
+/* (x, y) lies in some fixed point's closed clearance disk. */
+int fz_fixed_covers(const fz_state *st, double x, double y);
+/* The replay's sampler t gets the same fixed points; 0 when memory ran out. */
+int fz_fixed_apply(const fz_state *st, pds_sampler *t);
+void fz_fixed_reset(fz_state *st);
 
 #endif /* PDS_FUZZ_H */

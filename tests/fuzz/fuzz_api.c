@@ -33,6 +33,8 @@
  *      PDS_ESTATE after points of the single-thread process; a success before
  *      the first point selects the parallel process, whose points must not
  *      depend on the count (the replay selects it too, on one thread)
+ *   4  pds_set_fixed with up to 63 decoded points and clearances (1.4,
+ *      fuzz_fixed.c)
  *
  * Checked after every call (fuzz_check.c): the code is one the header allows
  * for that call in that situation; pds_strerror and pds_errmsg are sane; a
@@ -123,6 +125,12 @@ static void ext_threads(fz_state *st, fz_reader *r, size_t *reads)
     fz_op_threads(st, r);
 }
 
+static void ext_fixed(fz_state *st, fz_reader *r, size_t *reads)
+{
+    (void)reads;
+    fz_op_fixed(st, r);
+}
+
 /* Append only: a selector keeps its call for good (see the header comment). */
 static const struct {
     const char *name;
@@ -132,6 +140,7 @@ static const struct {
     {"ext/polygon", ext_polygon},
     {"ext/mask", ext_mask},
     {"ext/threads", ext_threads},
+    {"ext/fixed", ext_fixed},
 };
 #define FZ_EXT_OPS (sizeof ext_ops / sizeof ext_ops[0])
 
@@ -224,6 +233,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     pds_destroy(st.s);
     fz_field_reset(&st);
     fz_shape_free(&st.shape);
+    fz_fixed_reset(&st);
     free(st.pts);
     free(st.tmp);
     free(st.rad);

@@ -148,6 +148,7 @@ void fz_check_pattern(const fz_state *st)
     swept *p;
     size_t i, j, m = n;
 
+    fz_fixed_check_pattern(st);
     if (n < 2) return;
     /* On the torus, copies shifted by one period along the sweep of the points
      * within R of its start meet the points near its end. */
@@ -210,9 +211,13 @@ void fz_check_free_area(fz_state *st)
     /* (A domain whose coordinates cannot be scaled, a nonzero one below 2^-890 of the
      * largest, gets no point (PDS_ERANGE): its free area is not judged.) */
     if (isfinite(area) && area > 1e-290 && fz_precision_ok(st, INFINITY)) {
-        if (st->count == 0)
+        if (st->count == 0 && st->nfix == 0)
             FZ_CHECK(fabs(a - area) <= 1e-9 * area, "pds_free_area is %.17g before the first "
                      "point, the domain's area is %.17g", a, area);
+        else if (st->count == 0) /* the clearances count once a run has started */
+            FZ_CHECK(a <= area * (1.0 + 1e-9) && (st->fix_ref > 0.0 || fabs(a - area) <= 1e-9 * area),
+                     "pds_free_area is %.17g before the first point with %zu fixed points (the "
+                     "domain's area %.17g)", a, st->nfix, area);
         else
             FZ_CHECK(a <= area * (1.0 + 1e-9), "pds_free_area %.17g exceeds the domain's area "
                      "%.17g", a, area);
@@ -280,7 +285,7 @@ void fz_check_coverage(const fz_state *st)
         w = st->per[0];
         h = st->per[1];
     }
-    if (st->seen == 0 || !(w > 0.0 && h > 0.0 && isfinite(w) && isfinite(h))) return;
+    if ((st->seen == 0 && st->nfix == 0) || !(w > 0.0 && h > 0.0 && isfinite(w) && isfinite(h))) return;
     for (k = 0; k < 64; k++) {
         double tx, ty, x, y;
         int covered = 0;
@@ -302,6 +307,7 @@ void fz_check_coverage(const fz_state *st)
             const double r = fz_radius_of(st, i);
             covered = dist2(st, x, y, i, r) <= 1.0 + 1e-9;
         }
+        if (!covered) covered = fz_fixed_covers(st, x, y);
         FZ_CHECK(covered, "the maximal pattern leaves the probe (%.17g, %.17g) in no disk%s "
                  "(%zu points, R %.17g, domain [%.17g,%.17g]x[%.17g,%.17g])", x, y,
                  st->periodic ? " on the torus" : "", st->seen, st->radius, st->dom[0],
@@ -328,6 +334,7 @@ void fz_reset(fz_state *st, pds_sampler *s, double radius)
     st->run_failed = 0;
     st->parallel = 0;
     fz_field_reset(st);
+    fz_fixed_reset(st);
     fz_shape_free(&st->shape);
     st->shape.rect[0] = st->shape.rect[1] = 0.0;
     st->shape.rect[2] = st->shape.rect[3] = 1.0;

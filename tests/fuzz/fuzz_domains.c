@@ -380,6 +380,7 @@ static void probe(void *ctx, double x, double y)
         if (st->pts[2 * p] > x + R + c->slack) break;
         if (dx * dx + dy * dy <= reach * reach) return;
     }
+    if (fz_fixed_covers(st, x, y)) return;
     FZ_CHECK(0, "the maximal pattern leaves the probe (%.17g, %.17g) of the %s in no disk (%zu "
              "points, R %.17g, box [%.17g,%.17g]x[%.17g,%.17g], %zu rings)", x, y,
              st->shape.kind == FZ_SHAPE_MASK ? "mask" : "polygon", st->seen, R, st->dom[0],
@@ -390,9 +391,9 @@ void fz_shape_coverage(const fz_state *st)
 {
     cover_ctx c;
     size_t i;
-    if (st->seen == 0) return;
+    if (st->seen == 0 && st->nfix == 0) return;
     c.st = st;
-    c.order = malloc(st->seen * sizeof *c.order);
+    c.order = malloc((st->seen + 1) * sizeof *c.order);
     FZ_CHECK(c.order != NULL, "harness out of memory");
     for (i = 0; i < st->seen; i++) c.order[i] = i;
     g_pts = st->pts;

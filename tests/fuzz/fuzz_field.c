@@ -293,7 +293,11 @@ void fz_sync_radii(fz_state *st, size_t n, const double *xy)
 
 void fz_changed_before_first(fz_state *st)
 {
-    (void)st; /* fixed in 1.3: the generator goes back to the seed (field_first_point_rng) */
+    /* (fixed in 1.3: the generator goes back to the seed, field_first_point_rng.) The
+     * fixed points' clearances are adopted again by the next run (fuzz_fixed.c). */
+    if (st->count > 0) return;
+    st->fix_ref = 0.0;
+    st->maximal = st->checked = 0; /* (maximal with no point: the clearances covered it) */
 }
 
 void fz_field_reset(fz_state *st)

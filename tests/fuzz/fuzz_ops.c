@@ -189,9 +189,14 @@ static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
     /* A radius function that may return a bad value: PDS_EINVAL (fuzz_field.c). */
     const int may_fail = fz_field_may_fail(st), fails = fz_field_fails_everywhere(st);
     const size_t bad_before = st->fns[st->fn_active].bad_calls;
-    const int rc = fz_run(st, max_new, want_added ? &added : NULL);
-    const unsigned cancel = st->prog.on ? FZ_BIT(PDS_ECANCELED) : 0u;
+    const int outside = fz_fixed_outside(st); /* a fixed point outside the box: EINVAL (1.4) */
+    int rc;
+    unsigned cancel;
     double want, want_lo, lo, hi;
+
+    fz_fixed_run_starts(st);
+    rc = fz_run(st, max_new, want_added ? &added : NULL);
+    cancel = st->prog.on ? FZ_BIT(PDS_ECANCELED) : 0u;
 
     if (st->s == NULL) {
         fz_codes(st, "pds_run", rc, FZ_BIT(PDS_EINVAL));
@@ -199,9 +204,10 @@ static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
         return rc;
     }
     fz_codes(st, "pds_run", rc, FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM) | fz_range_if_111() |
-             cancel | (may_fail ? FZ_BIT(PDS_EINVAL) : 0u));
+             cancel | (may_fail || outside ? FZ_BIT(PDS_EINVAL) : 0u));
     now = pds_count(st->s);
-    check_field_failure(st, "pds_run", rc, fails, bad_before, now - before);
+    if (!fz_fixed_refused(st, "pds_run", rc, outside, now - before))
+        check_field_failure(st, "pds_run", rc, fails, bad_before, now - before);
     FZ_CHECK(now >= before, "pds_run: the count fell from %zu to %zu", before, now);
     if (want_added)
         FZ_CHECK(added == now - before, "pds_run returned %d, added %zu, count grew by %zu", rc,
@@ -241,7 +247,9 @@ static int call_run(fz_state *st, size_t max_new, int want_added, int sync_now)
     if (before + added > 0 && (rc == PDS_ENOMEM || rc == PDS_ERANGE)) st->run_failed = 1;
     reread_radius(st, "pds_run");
     account(st, added);
-    FZ_CHECK(rc != 0 || st->count > 0, "pds_run(max_new %zu): maximal without a point", max_new);
+    /* (Fixed points' clearances may cover the domain.) */
+    FZ_CHECK(rc != 0 || st->count > 0 || st->nfix > 0, "pds_run(max_new %zu): maximal without a point",
+             max_new);
     if (rc == 0) st->maximal = 1;
     if (sync_now || rc == 0) fz_sync(st);
     if (rc == 0) fz_check_maximal(st);
@@ -252,16 +260,20 @@ static int call_step(fz_state *st, int sync_now)
 {
     const int may_fail = fz_field_may_fail(st), fails = fz_field_fails_everywhere(st);
     const size_t bad_before = st->fns[st->fn_active].bad_calls;
-    const int rc = pds_step(st->s);
+    const int outside = fz_fixed_outside(st);
+    int rc;
+    fz_fixed_run_starts(st);
+    rc = pds_step(st->s);
     if (st->s == NULL) {
         fz_codes(st, "pds_step", rc, FZ_BIT(PDS_EINVAL));
         return rc;
     }
     fz_codes(st, "pds_step", rc, FZ_OK | FZ_MORE | FZ_BIT(PDS_ENOMEM) | fz_range_if_111() |
-             (may_fail ? FZ_BIT(PDS_EINVAL) : 0u));
-    check_field_failure(st, "pds_step", rc, fails, bad_before, rc == 1 ? 1 : 0);
+             (may_fail || outside ? FZ_BIT(PDS_EINVAL) : 0u));
+    if (!fz_fixed_refused(st, "pds_step", rc, outside, rc == 1 ? 1 : 0))
+        check_field_failure(st, "pds_step", rc, fails, bad_before, rc == 1 ? 1 : 0);
     check_range(st, "pds_step", rc, (double)st->count + 1.0, st->count);
-    FZ_CHECK(rc != 0 || st->count > 0, "pds_step: maximal without a point");
+    FZ_CHECK(rc != 0 || st->count > 0 || st->nfix > 0, "pds_step: maximal without a point");
     if (st->target != 0 && (rc == 0 || rc == 1))
         FZ_CHECK((rc == 0) == (st->count == st->target), "count mode: pds_step returned %d at "
                  "%zu of %zu points", rc, st->count, st->target);

@@ -17,9 +17,9 @@ void fz_op_periodic(fz_state *st, fz_reader *r)
         fz_codes(st, "pds_set_periodic", rc, FZ_BIT(PDS_EINVAL));
         return;
     }
-    /* A polygon or mask is never periodic (1.4). */
+    /* A polygon or mask is never periodic, nor are fixed points (1.4). */
     fz_codes(st, "pds_set_periodic", rc, st->count > 0 ? FZ_BIT(PDS_ESTATE)
-             : flag != 0 && st->shape.kind != FZ_SHAPE_NONE ? FZ_BIT(PDS_EINVAL) : FZ_OK);
+             : flag != 0 && (st->shape.kind != FZ_SHAPE_NONE || st->nfix > 0) ? FZ_BIT(PDS_EINVAL) : FZ_OK);
     if (rc == 0) {
         fz_changed_before_first(st);
         st->periodic = flag != 0;

@@ -62,7 +62,7 @@ static void replay(fz_state *st, int with_field)
     FZ_CHECK(rc == 0, "replay: pds_set_domain returned %d", rc);
     rc = pds_set_periodic(t, st->periodic);
     FZ_CHECK(rc == 0, "replay: pds_set_periodic returned %d", rc);
-    if (!fz_shape_apply(st, t)) { /* a polygon or mask (1.4); memory ran out */
+    if (!fz_shape_apply(st, t) || !fz_fixed_apply(st, t)) { /* 1.4; memory ran out */
         pds_destroy(t);
         return;
     }

@@ -20,6 +20,7 @@ EXT_REPLAY = 0  # the determinism check now, on a sampler that goes on
 EXT_POLYGON = 1  # pds_set_polygon (fuzz_domains.c's decoding)
 EXT_MASK = 2  # pds_set_mask
 EXT_THREADS = 3  # pds_set_threads (1.5)
+EXT_FIXED = 4  # pds_set_fixed (fuzz_fixed.c's decoding)
 
 
 def threads(b):  # pds_set_threads: b < 8 picks 0, 1, 2, 3, 8, 1024, 1025, -1; else b % 16
@@ -186,6 +187,21 @@ def mask(w, h, rows=(), fill=2, special=None):
     b = (w - 1) | (h - 1) << 3 | (192 if special is not None else 0)
     f = fill | ((special or 0) << 2)
     return extended(EXT_MASK) + [b, f] + (list(rows) if fill % 4 >= 2 else [])
+
+
+# fuzz_fixed.c: a point is (kind, a, b): 0 at (a, b) / 255 of the box, 1 corner a % 4,
+# 2 on a side, 3 the one before again, 4 on its line, 5 a millionth of R beside it,
+# 6 a vertex of the shape, 7 just outside the box, 8 a hostile coordinate (more bytes).
+# A clearance: [0] the radius there, [1, k] k / 16 R, [2, i] a factor of R, [3, k] k + 1
+# box diagonals (covers it), [4] -R, [5, ...] hostile, [6] a tenth of the diagonal, [7] R.
+def fixed(points, clearances=None, xy_null=False):
+    n = len(points)
+    head = [n] if n < 7 else [7, n - 7]
+    flags = (15 if xy_null else 0) | (16 if clearances is None else 0)
+    out = extended(EXT_FIXED) + head[:1] + [flags] + head[1:]
+    for k, pt in enumerate(points):
+        out += list(pt) + (list(clearances[k]) if clearances is not None else [])
+    return out
 
 
 MAX_NEW_0, MAX_NEW_64, MAX_NEW_1000, MAX_NEW_SIZE_MAX = [0], [4], [5], [6]
@@ -484,6 +500,28 @@ SEEDS = {
     "threads_count_torus": radius_factor(0, 8) + [92] + count(7) + threads(4) + op(RUN_TO_END)
     + op(CREATE) + radius_factor(0, 8) + [93] + periodic() + threads(2) + op(RUN_CHUNKS, 3)
     + op(RUN_TO_END),
+    # ---- fixed points (1.4) ----
+    # Points inside, on a corner, on a side, given twice and on one line, with
+    # clearances of R, R/2, 2R and the radius there; maximal, the clearances kept.
+    "fixed_points": radius_factor(0, 8) + [94]
+    + fixed([(0, 64, 64), (1, 3, 0), (2, 1, 0), (3, 0, 0), (4, 0, 0), (5, 1, 0)],
+            [[7], [1, 8], [1, 32], [0], [2, 1], [1, 4]])
+    + op(RUN_CHUNKS, 3) + op(RUN_TO_END) + op(REFINE) + refine_by(7) + op(RUN_TO_END) + op(CHECK),
+    # A clearance that covers the square: maximal with no point; a refine, then count mode.
+    "fixed_covering": radius_factor(0, 8) + [95] + fixed([(0, 128, 128)], [[3, 0]])
+    + op(RUN_TO_END) + op(VERIFY) + op(FREE_AREA) + op(REFINE) + refine_by(7) + op(RUN_TO_END)
+    + count(7) + op(RUN_TO_END) + op(CHECK),
+    # Refused: xy NULL, a NaN coordinate, a negative clearance, on the torus; a point
+    # outside the box refused at the first point, then removed (n = 0) and a run.
+    "fixed_refused": radius_factor(0, 8) + [96] + fixed([(0, 1, 1)], xy_null=True)
+    + fixed([(0, 1, 1), (8, 1, 0, 0)], [[0], [0]]) + fixed([(0, 1, 1), (0, 2, 2)], [[0], [4]])
+    + periodic() + fixed([(0, 9, 9)]) + periodic(1) + fixed([(7, 0, 0)]) + op(STEP) + op(RUN) + [1]
+    + fixed([]) + op(RUN_TO_END),
+    # A polygon with fixed points on its vertices, under a radius map.
+    "fixed_polygon_field": radius_factor(0, 7) + [97]
+    + polygon([ring(12, STAR, verts=[2, 1.5] * 6), ring(7, HOLE, REVERSE, verts=[0.5] * 7)])
+    + fixed([(6, 0, 0), (6, 0, 3), (6, 0, 12), (0, 100, 100)], [[0], [1, 16], [0], [6]])
+    + radius_map(1, [3, 3], M_GRAD_X, radius_factor(0, 9), R_2) + op(RUN_TO_END) + op(CHECK),
     # Fixed in 1.5.2 (found/NOTES): a 4 x 4 square (sides with collinear runs) at
     # 1e15 was PDS_EINVAL "encloses nothing": the side probes, 2^-20 of an edge
     # away, rounded onto the edge.
