@@ -148,7 +148,8 @@ void Sampler::prepare(std::size_t points) {
             if (at_lowest != Limit::ok) throw LimitError(at_lowest, lowest.user_radius(), JudgedRadius::count_lowest);
         }
         // Built aside, kept only when both exist: std::bad_alloc changes nothing.
-        if (has_fixed() && !field_) {
+        // A constant field runs as its radius does: the plain sampler's points.
+        if (has_fixed() && !varying_field()) {
             fixed_radius_ = frame_.user_radius();
             fixed_field_ = RadiusField::function(
                 [](void* r, double, double) { return *static_cast<const double*>(r); }, &fixed_radius_,

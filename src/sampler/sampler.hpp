@@ -150,9 +150,10 @@ private:
     bool varying_field() const { return field_ && !field_->constant(); }
     // What the stages see of a varying field.
     // Fixed points need them too (each disk its own radius), from a
-    // constant field at the radius of the first point when there is no field.
+    // constant field at the radius of the first point when there is no
+    // varying field.
     std::optional<PointRadii> point_radii(const Frame& frame) const {
-        if (varying_field() || (has_fixed() && field_)) return PointRadii(*field_, frame);
+        if (varying_field()) return PointRadii(*field_, frame);
         if (has_fixed() && fixed_field_) return PointRadii(*fixed_field_, frame);
         return std::nullopt;
     }

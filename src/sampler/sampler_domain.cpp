@@ -128,7 +128,7 @@ std::size_t Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
     std::vector<double> values;
     points.reserve(fixed_.size());
     values.reserve(fixed_.size());
-    const double rmax = field_ ? field_->rmax() : fixed_radius_;
+    const double rmax = varying_field() ? field_->rmax() : fixed_radius_;
     for (std::size_t k = 0; k < fixed_.size(); ++k) {
         const Point p = frame_.to_internal(fixed_[k]);
         if (!frame_.box().contains(p)) {

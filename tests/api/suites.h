@@ -26,7 +26,7 @@
  *   domain_raster_suite  a mask as the domain; a radius map with a polygon (domain_raster.c)
  *   domain_law_suite   the law in a polygon against dart throwing         (domain_law.c)
  *   domain_fixed_suite pds_set_fixed: refusals, clearances, runs, the law  (domain_fixed.c)
- *   domain_fixed_cover_suite  clearances that cover the domain: maximal, no point (domain_fixed_cover.c)
+ *   domain_fixed_edges_suite  no room left; a constant field             (domain_fixed_edges.c)
  *   threads_suite      pds_set_threads: arguments; the same bytes for any count (threads.c)
  */
 #ifndef PDS_TESTS_API_SUITES_H
@@ -58,7 +58,7 @@ Suite *domain_points_suite(void);
 Suite *domain_raster_suite(void);
 Suite *domain_law_suite(void);
 Suite *domain_fixed_suite(void);
-Suite *domain_fixed_cover_suite(void);
+Suite *domain_fixed_edges_suite(void);
 Suite *threads_suite(void);
 
 #endif /* PDS_TESTS_API_SUITES_H */

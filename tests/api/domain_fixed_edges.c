@@ -1,6 +1,7 @@
 /*
- * domain_fixed_cover.c - fixed points whose clearances leave no room: a run
- * ends maximal with no point, and the read-only calls say so.
+ * domain_fixed_edges.c - fixed points at the edges of their contract:
+ * clearances that leave no room (a run ends maximal with no point, and the
+ * read-only calls say so), and a constant field (the plain sampler's points).
  *
  * Contract (poissondisk.h, pds_set_fixed, pds_verify, pds_free_area): fixed
  * points count for coverage, and pds_free_area counts the clearances once a
@@ -8,6 +9,8 @@
  * point: pds_run and pds_step return PDS_DONE, pds_verify PDS_DONE, and
  * pds_free_area 0. A refine before the first point is a fresh start at the
  * new radius, where clearances of 0 (the radius) shrink and leave room.
+ * With a constant field the points are the plain sampler's at that radius,
+ * byte for byte (pds_set_radius_map), fixed points or not.
  */
 #include <math.h>
 
@@ -85,12 +88,55 @@ START_TEST(a_refine_before_the_first_point_leaves_room)
 }
 END_TEST
 
-Suite *domain_fixed_cover_suite(void)
+/* A uniform map of 0.02, refined before the first point or not: the bytes
+ * of a plain sampler created at 0.02 and refined alike. (Interpolated, the
+ * map's value at a fixed point may be off by an ulp: the radius is the one
+ * to take.) */
+START_TEST(a_constant_field_gives_the_plain_points)
 {
-    Suite *s = suite_create("domain_fixed_cover");
+    static const double xy[10] = {0.69, 0.0039, 0.1098, 0.3098, 0.3569, 0.4549, 0.1059, 0.6, 0.2431, 0.1765};
+    static const double c[5] = {0.7125, 0.0, 0.1414, 0.15, 0.1414};
+    double map[4 * 7];
+    static double a[2 * 20000], b[2 * 20000], ra[20000], rb[20000];
+    size_t n, m, k;
+
+    /* Refines by these factors round differently through the field's scale
+     * (rmax to the radius in force) than the plain radius does. */
+    static const double factor[5] = {1.0, 0.999, 0.7, 0.53, 0.37};
+    for (k = 0; k < 4 * 7; k++) map[k] = 0.02;
+    for (k = 0; k < 5; k++) {
+        pds_sampler *field = sampler_new(0.3, 116), *plain = sampler_new(0.02, 116);
+        ck_assert_int_eq(pds_set_radius_map(field, 4, 7, map), 0);
+        ck_assert_int_eq(pds_set_fixed(field, xy, c, 5), 0);
+        ck_assert_int_eq(pds_set_fixed(plain, xy, c, 5), 0);
+        if (k > 0) { /* before the first point */
+            ck_assert_int_eq(pds_refine(field, 0.02 * factor[k]), 0);
+            ck_assert_int_eq(pds_refine(plain, 0.02 * factor[k]), 0);
+        }
+        n = run_to_end(field);
+        m = run_to_end(plain);
+        ck_assert_uint_eq(n, m);
+        ck_assert_uint_le(n, 20000);
+        ck_assert_uint_eq(pds_points(field, 0, n, a), n);
+        ck_assert_uint_eq(pds_points(plain, 0, n, b), n);
+        ck_assert_mem_eq(a, b, 2 * n * sizeof *a);
+        ck_assert_uint_eq(pds_radii(field, 0, n, ra), n);
+        ck_assert_uint_eq(pds_radii(plain, 0, n, rb), n);
+        ck_assert_mem_eq(ra, rb, n * sizeof *ra);
+        pds_destroy(field);
+        pds_destroy(plain);
+    }
+}
+END_TEST
+
+Suite *domain_fixed_edges_suite(void)
+{
+    Suite *s = suite_create("domain_fixed_edges");
     TCase *tc = new_tcase(s, "no room left");
     tcase_add_test(tc, corners_cover_the_square);
     tcase_add_test(tc, one_clearance_covers_a_polygon_and_a_mask);
     tcase_add_test(tc, a_refine_before_the_first_point_leaves_room);
+    tc = new_tcase(s, "a constant field");
+    tcase_add_test(tc, a_constant_field_gives_the_plain_points);
     return s;
 }
