@@ -127,7 +127,7 @@ public:
         const std::size_t mask = size - 1;
         for (const Slot& s : slots_) {
             if (s.word == 0) continue;
-            std::size_t i = mix(s.cell) & mask;
+            std::size_t i = slot_in(s.cell, mask);
             while (fresh[i].word != 0) i = (i + 1) & mask;
             fresh[i] = s;
         }
@@ -150,9 +150,16 @@ private:
         GridCell cell;
         std::uint64_t word;  // 0: a free slot
     };
-    // mix64 spreads neighbouring cells over the table.
+    // mix64 spreads runs of kRun cells along a row over the table, each run
+    // to kRun slots side by side: a dart's block reads a row's few cells
+    // from one or two lines, as the dense store does, not from one line each.
+    static constexpr unsigned kRunBits = 3;
     static std::size_t mix(std::uint64_t x) { return static_cast<std::size_t>(mix64(x)); }
-    std::size_t slot_of(GridCell cell) const { return mix(cell) & mask_; }
+    static std::size_t slot_in(GridCell cell, std::size_t mask) {
+        constexpr GridCell kRunMask = (GridCell{1} << kRunBits) - 1;
+        return ((mix(cell >> kRunBits) << kRunBits) | static_cast<std::size_t>(cell & kRunMask)) & mask;
+    }
+    std::size_t slot_of(GridCell cell) const { return slot_in(cell, mask_); }
 
     std::vector<Slot> slots_;
     std::size_t mask_ = 0;
