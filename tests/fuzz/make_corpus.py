@@ -522,6 +522,13 @@ SEEDS = {
     + polygon([ring(12, STAR, verts=[2, 1.5] * 6), ring(7, HOLE, REVERSE, verts=[0.5] * 7)])
     + fixed([(6, 0, 0), (6, 0, 3), (6, 0, 12), (0, 100, 100)], [[0], [1, 16], [0], [6]])
     + radius_map(1, [3, 3], M_GRAD_X, radius_factor(0, 9), R_2) + op(RUN_TO_END) + op(CHECK),
+    # Fixed in 1.7.10: six fixed points (one given twice), an 8 x 7 mask and a uniform
+    # 4 x 7 map, refined before the first point: the map's interpolated value at a fixed
+    # point was an ulp off the radius, so the replay by a plain sampler differed in the
+    # last bits (raw bytes as the fuzzer found them).
+    "regress_fixed_constant_map": list(bytes.fromhex(
+        "010006747f04060006b0010126061c4f00030d000240005b7406061b990260003e2d067f023702da5c"
+        "a9e50a2da98f01406b8e010009040400040b7f000b0f")),
     # Fixed in 1.5.2 (found/NOTES): a 4 x 4 square (sides with collinear runs) at
     # 1e15 was PDS_EINVAL "encloses nothing": the side probes, 2^-20 of an edge
     # away, rounded onto the edge.
