@@ -93,6 +93,12 @@ inline double scaled_radius(double value, double rmax, double r_in_force) {
     return r_in_force == rmax ? value : value / rmax * r_in_force;
 }
 
+// The value that scaled_radius turns into `radius`: exactly `radius` while
+// the radius in force is rmax (a clearance is then kept to the bit).
+inline double unscaled_radius(double radius, double rmax, double r_in_force) {
+    return r_in_force == rmax ? radius : radius / r_in_force * rmax;
+}
+
 }  // namespace pds
 
 #endif

@@ -143,7 +143,7 @@ std::size_t Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
         }
         // A value the field's scaling turns into the clearance, now and after a refine.
         const double c = fixed_clearance_[k];
-        values.push_back(c > 0.0 ? c / frame_.user_radius() * rmax : radii.value_at(p));
+        values.push_back(c > 0.0 ? unscaled_radius(c, rmax, frame_.user_radius()) : radii.value_at(p));
         points.push_back(p);
     }
     drop_repeated_fixed(points, values);
