@@ -342,7 +342,28 @@ void JonesLoop<Space, Rule>::draw_batch_unguarded(std::size_t n, Rng& rng) {
 
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::give_up(SiteIndex site) {
-    if (!cells().covered_exactly(vertex_of(site))) ++stats_.gave_up_cells;
+    const VertexIndex v = vertex_of(site);
+    if (!cells().covered_exactly(v)) {
+        // A free region the draws cannot reach (a clearance that falls short
+        // of a corner of the domain by a hair) may still hold that corner,
+        // an exact point: maximal means a point there. Its area is below
+        // what rounding resolves, so where in it the point goes is no
+        // matter of the law. The cell is measured again once it is placed.
+        const Point& c = dt_.point(v);
+        const double reach = 4.0 * std::max(r_, rule_.newer_radius(dt_, v, r_));
+        Point corner{0.0, 0.0};
+        const bool found = space_.any_corner_in(Box{c.x - reach, c.y - reach, c.x + reach, c.y + reach},
+                                                [&](const Point& p) {
+                                                    corner = p;
+                                                    return acceptable(p, v) && still_free(p);
+                                                });
+        if (found) {
+            queue_.push_back(Candidate{corner, v});
+            ++stats_.corner_points;
+            return;
+        }
+        ++stats_.gave_up_cells;
+    }
     set_weight(site, 0.0);
 }
 

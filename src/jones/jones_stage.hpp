@@ -32,6 +32,7 @@ namespace pds {
 // What the stage could not do, for tests and diagnostics.
 struct JonesStats {
     std::size_t gave_up_cells = 0;  // cells still free that no draw could reach
+    std::size_t corner_points = 0;  // points placed on a corner of the domain those left free
     // Where the loop's work goes (bench/phases.cpp): cells selected from the
     // tree; of those, selections whose target fell in the part of the bound
     // the cell had lost since it was measured; and of those, the ones whose

@@ -58,6 +58,17 @@ public:
     }
 
     Point first_point(Rng& rng) const { return domain_.uniform_point(rng); }
+    // Calls fn on the domain's corners in box b until it returns true: exact
+    // points that a free region too thin for the draws may still hold
+    // (JonesLoop::give_up).
+    template <class Fn>
+    bool any_corner_in(const Box& b, Fn&& fn) const {
+        const Box& d = domain_.bounds();
+        const Point corners[4] = {{d.x0, d.y0}, {d.x1, d.y0}, {d.x1, d.y1}, {d.x0, d.y1}};
+        for (const Point& c : corners)
+            if (b.contains(c) && fn(c)) return true;
+        return false;
+    }
     Point snap(const Point& p) const { return p; }
     bool inside(const Point& p) const { return domain_.contains(p); }
     Point wrap(const Point& p) const { return p; }

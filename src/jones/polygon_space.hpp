@@ -34,6 +34,18 @@ public:
 
     Point first_point(Rng& rng) const { return polygon_->uniform_point(rng); }
     bool inside(const Point& p) const { return polygon_->contains(p); }
+    // The outline's vertices on edges near box b (may allocate).
+    template <class Fn>
+    bool any_corner_in(const Box& b, Fn&& fn) const {
+        std::vector<std::uint32_t> edges;
+        polygon_->outline_edges_near(b, edges);
+        const PolygonRings& rings = polygon_->rings();
+        for (std::uint32_t e : edges) {
+            const Point c = rings.edge_start(e);
+            if (b.contains(c) && fn(c)) return true;
+        }
+        return false;
+    }
     OutlineClip* outline_clip() const { return clip_.get(); }
 
     VerifyReport verify(const Delaunay& dt, double r, const std::vector<std::size_t>* rank, std::size_t fixed) const {

@@ -66,6 +66,11 @@ public:
 
     // On the torus grid, inside the fundamental domain.
     Point first_point(Rng& rng) const;
+    // The torus has no corners (JonesLoop::give_up).
+    template <class Fn>
+    bool any_corner_in(const Box&, Fn&&) const {
+        return false;
+    }
     Point snap(const Point& p) const { return Point{Torus::snap(p.x), Torus::snap(p.y)}; }
     bool inside(const Point&) const { return true; }  // cells are unclipped; wrapped when inserted
     Point wrap(const Point& p) const { return copies_.torus().wrap(p); }

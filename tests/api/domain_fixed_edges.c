@@ -9,6 +9,7 @@
  * point: pds_run and pds_step return PDS_DONE, pds_verify PDS_DONE, and
  * pds_free_area 0. A refine before the first point is a fresh start at the
  * new radius, where clearances of 0 (the radius) shrink and leave room.
+ * Room too thin for any draw at a corner of the domain gets a point on it.
  * With a constant field the points are the plain sampler's at that radius,
  * byte for byte (pds_set_radius_map), fixed points or not.
  */
@@ -88,6 +89,45 @@ START_TEST(a_refine_before_the_first_point_leaves_room)
 }
 END_TEST
 
+/* One fixed point on a corner of a 1 x h box, its clearance short of the
+ * opposite corner by a hair (the rounded distance, or less by 1e-15 up to
+ * 4e-10 of it): that corner is the only room left, and too thin for any
+ * draw. Maximal means a point there, and one exactly there is what can be
+ * represented. In the rectangle, a polygon and a mask alike. */
+START_TEST(a_clearance_short_of_a_corner_leaves_a_point_there)
+{
+    static const double shortfall[4] = {0.0, 1e-15, 1e-12, 4e-10};
+    const double h = 0.83333333333333337, at[2] = {0.0, 0.0};
+    const double square[8] = {0, 0, 1, 0, 1, h, 0, h};
+    const size_t ends[1] = {4};
+    const unsigned char pix[6] = {1, 1, 1, 1, 1, 1};
+    size_t k, kind;
+
+    for (kind = 0; kind < 3; kind++) {
+        for (k = 0; k < 4; k++) {
+            const double c = hypot(1.0, h) * (1.0 - shortfall[k]);
+            pds_sampler *s = sampler_new(0.03, 1 + k);
+            double xy[2];
+            size_t added = 0;
+            if (kind == 0) ck_assert_int_eq(pds_set_domain(s, 0, 0, 1, h), 0);
+            if (kind == 1) ck_assert_int_eq(pds_set_polygon(s, square, ends, 1), 0);
+            if (kind == 2) {
+                ck_assert_int_eq(pds_set_domain(s, 0, 0, 1, h), 0);
+                ck_assert_int_eq(pds_set_mask(s, 3, 2, pix), 0);
+            }
+            ck_assert_int_eq(pds_set_fixed(s, at, &c, 1), 0);
+            ck_assert_int_eq(pds_run(s, 0, &added), 0);
+            ck_assert_uint_eq(added, 1);
+            ck_assert_uint_eq(pds_points(s, 0, 1, xy), 1);
+            ck_assert_double_eq(xy[0], 1.0);
+            ck_assert_double_eq(xy[1], h);
+            ck_assert_int_eq(pds_verify(s), 0);
+            pds_destroy(s);
+        }
+    }
+}
+END_TEST
+
 /* A uniform map of 0.02, refined before the first point or not: the bytes
  * of a plain sampler created at 0.02 and refined alike. (Interpolated, the
  * map's value at a fixed point may be off by an ulp: the radius is the one
@@ -136,6 +176,7 @@ Suite *domain_fixed_edges_suite(void)
     tcase_add_test(tc, corners_cover_the_square);
     tcase_add_test(tc, one_clearance_covers_a_polygon_and_a_mask);
     tcase_add_test(tc, a_refine_before_the_first_point_leaves_room);
+    tcase_add_test(tc, a_clearance_short_of_a_corner_leaves_a_point_there);
     tc = new_tcase(s, "a constant field");
     tcase_add_test(tc, a_constant_field_gives_the_plain_points);
     return s;

@@ -529,6 +529,13 @@ SEEDS = {
     "regress_fixed_constant_map": list(bytes.fromhex(
         "010006747f04060006b0010126061c4f00030d000240005b7406061b990260003e2d067f023702da5c"
         "a9e50a2da98f01406b8e010009040400040b7f000b0f")),
+    # Fixed in 1.7.10: a mask, a radius function and nine fixed points, one at the
+    # origin whose clearance is the box's rounded diagonal: the far corner was left free
+    # by a hair, no draw could reach it, and the run ended "maximal" with no point
+    # (pds_verify: PDS_EINTERNAL). The corner now gets the point (raw bytes).
+    "regress_fixed_short_of_a_corner": list(bytes.fromhex(
+        "010107c1bf000100090400000000007f0229027ba0b18303b07f0407000202f93901ec05580901b304"
+        "05ef070084940294061e680318007e100247021084060426bd01e804820402fd0b0b0c0b0b0b0f")),
     # Fixed in 1.5.2 (found/NOTES): a 4 x 4 square (sides with collinear runs) at
     # 1e15 was PDS_EINVAL "encloses nothing": the side probes, 2^-20 of an edge
     # away, rounded onto the edge.
