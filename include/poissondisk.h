@@ -49,7 +49,7 @@ extern "C" {
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
 #define PDS_VERSION_MINOR 7
-#define PDS_VERSION_PATCH 9
+#define PDS_VERSION_PATCH 10
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
 
@@ -486,7 +486,9 @@ PDS_API int pds_set_mask(pds_sampler *s, size_t w, size_t h, const unsigned char
  * Copied: the arrays may be freed. n == 0 removes them (xy may be NULL).
  * With fixed points a run uses the Jones loop from its first point (no
  * dart throwing): in our measurements about twice the time of a plain run.
- * pds_free_area counts the clearances once a run has started.
+ * pds_free_area counts the clearances once a run has started. Clearances
+ * that cover the domain leave a maximal pattern with no point (pds_run and
+ * pds_verify return PDS_DONE, pds_free_area 0).
  * Returns 0, PDS_EINVAL (s NULL, xy NULL with n > 0, a coordinate not
  * finite, a clearance not finite or < 0, periodic set; the message names
  * the point, from 0), PDS_ENOMEM, PDS_ESTATE (points exist already). A
