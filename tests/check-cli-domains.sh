@@ -164,6 +164,14 @@ run covered --radius 0.05 --fixed "$tmp/cover.txt" --verify --stats
 expect "--fixed with a clearance covering the square: exits 0, no point, coverage 1, maximal and verified (got $rc)" \
     eval '[ "$rc" -eq 0 ] && [ ! -s "$tmp/covered.out" ] &&
           grep -Eq "^poissondisk: N=0 .* coverage=1\.0+ maximal verified " "$tmp/covered.err"'
+# Fixed points on a mask's pixel lines, computed as X1 * i / w: within rounding
+# of the inside pixels' box, they count as on it.
+printf '0.0016460905199999999 0.00502654816\n0.00493827156 0.00502654816\n0.00493827156 0.007539822240000001\n0.0016460905199999999 0.007539822240000001\n' > "$tmp/pixline.txt"
+printf 'P2\n3 5\n255\n255 255 255\n255 255 255\n255 0 0\n255 255 255\n255 255 255\n' > "$tmp/pixline.pgm"
+run pixline --mask "$tmp/pixline.pgm" --domain 0 0 0.00493827156 0.0125663704 --radius 0.000164609052 \
+    --fixed "$tmp/pixline.txt" --verify --stats
+expect "--fixed on a mask's pixel lines (within rounding of its box): exits 0, maximal and verified (got $rc)" \
+    eval '[ "$rc" -eq 0 ] && grep -q " fixed=4 .* maximal verified " "$tmp/pixline.err"'
 # A fixed point given twice: one point, the larger clearance.
 printf '0.3 0.4 0.05\n0.6 0.6\n0.3 0.4 0.1\n' > "$tmp/twice.txt"
 run twice --radius 0.03 --fixed "$tmp/twice.txt" --verify --stats

@@ -5,6 +5,8 @@
 #include "cli_domain.h"
 
 #include <errno.h>
+#include <float.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -194,9 +196,15 @@ int cli_domain_load(const char *prog, struct cli_domain *d, double box[4])
             fprintf(stderr, "%s: --fixed %s\n", prog, msg);
             return CLI_EXIT_LIBRARY;
         }
+        /* Within a few rounding steps of the box counts as on it, as in the
+         * library (a mask's pixel line computed another way). */
+        double slack = fabs(fbox[0]);
+        for (k = 1; k < 4; k++)
+            slack = fabs(fbox[k]) > slack ? fabs(fbox[k]) : slack;
+        slack = 8.0 * DBL_EPSILON * fmax(slack, fmax(fbox[2] - fbox[0], fbox[3] - fbox[1]));
         for (k = 0; k < p->n; k++) {
             double x = p->xy[2 * k], y = p->xy[2 * k + 1];
-            if (x < fbox[0] || x > fbox[2] || y < fbox[1] || y > fbox[3]) {
+            if (x < fbox[0] - slack || x > fbox[2] + slack || y < fbox[1] - slack || y > fbox[3] + slack) {
                 fprintf(stderr, "%s: --fixed %s: %sthe point (%g, %g) lies outside the "
                                 "domain's bounding box [%g,%g]x[%g,%g]\n", prog, d->fixed,
                         where_text(where, sizeof where, d->fixed, k), x, y, fbox[0], fbox[2],

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -45,6 +46,14 @@ MaskPolygon mask_polygon(std::size_t w, std::size_t h, const std::uint8_t* insid
         throw DomainError(std::string("the mask's pixels do not fit the rectangle at double precision (") +
                           e.what() + ")");
     }
+}
+
+// Whether p lies within a few rounding steps of the box [lo, hi] (user units).
+bool within_rounding(const Point& p, const Point& lo, const Point& hi) {
+    const double scale = std::max({std::fabs(lo.x), std::fabs(lo.y), std::fabs(hi.x), std::fabs(hi.y),
+                                   hi.x - lo.x, hi.y - lo.y});
+    const double slack = 8.0 * std::numeric_limits<double>::epsilon() * scale;
+    return p.x >= lo.x - slack && p.x <= hi.x + slack && p.y >= lo.y - slack && p.y <= hi.y + slack;
 }
 
 }  // namespace
@@ -130,11 +139,17 @@ std::size_t Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
     values.reserve(fixed_.size());
     const double rmax = varying_field() ? field_->rmax() : fixed_radius_;
     for (std::size_t k = 0; k < fixed_.size(); ++k) {
-        const Point p = frame_.to_internal(fixed_[k]);
-        if (!frame_.box().contains(p)) {
-            // The box in the user's units: a mask's is its inside pixels', not its rectangle.
-            const Box& b = frame_.box();
-            const Point lo = frame_.to_user(Point{b.x0, b.y0}), hi = frame_.to_user(Point{b.x1, b.y1});
+        Point p = frame_.to_internal(fixed_[k]);
+        const Box& b = frame_.box();
+        // The box in the user's units: a mask's is its inside pixels', not its rectangle.
+        const Point lo = frame_.to_user(Point{b.x0, b.y0}), hi = frame_.to_user(Point{b.x1, b.y1});
+        if (!b.contains(p) && within_rounding(fixed_[k], lo, hi)) {
+            // A point the user put on the box (a mask's pixel line computed
+            // their way) counts as on it: moved there by the rounding it has.
+            p.x = std::min(std::max(p.x, b.x0), b.x1);
+            p.y = std::min(std::max(p.y, b.y0), b.y1);
+        }
+        if (!b.contains(p)) {
             char what[256];
             std::snprintf(what, sizeof what,
                           "fixed point %zu (%g, %g) lies outside the domain's bounding box [%g,%g]x[%g,%g]", k,

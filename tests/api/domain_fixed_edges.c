@@ -10,10 +10,12 @@
  * pds_free_area 0. A refine before the first point is a fresh start at the
  * new radius, where clearances of 0 (the radius) shrink and leave room.
  * Room too thin for any draw at a corner of the domain gets a point on it.
+ * A fixed point within rounding of the domain's bounding box counts as on it.
  * With a constant field the points are the plain sampler's at that radius,
  * byte for byte (pds_set_radius_map), fixed points or not.
  */
 #include <math.h>
+#include <string.h>
 
 #include "helpers.h"
 #include "suites.h"
@@ -128,6 +130,37 @@ START_TEST(a_clearance_short_of_a_corner_leaves_a_point_there)
 }
 END_TEST
 
+/* Fixed points on the corners of a mask's inside pixels, computed the
+ * user's way (X1 * i / w): within rounding of the library's box, they count
+ * as on it (before, 15 of these 38 masks refused one with PDS_EINVAL). A
+ * thousandth of a pixel farther out is refused. */
+START_TEST(fixed_points_on_a_masks_pixel_lines_are_inside)
+{
+    unsigned char pix[40 * 6];
+    int w;
+
+    for (w = 3; w <= 40; w++) {
+        const double X1 = 0.00123456789 * (1 + w % 7), Y1 = 0.0031415926 * (1 + w % 5);
+        const int h = 2 + w % 5, i = w / 3, j = h / 2;
+        const double xy[8] = {X1 * i / w,       Y1 * j / h,       X1 * (i + 2) / w, Y1 * j / h,
+                              X1 * (i + 2) / w, Y1 * (j + 1) / h, X1 * i / w,       Y1 * (j + 1) / h};
+        const double out[2] = {X1 * (i + 2) / w + X1 / w / 1000, Y1 * j / h};
+        pds_sampler *s = sampler_new(X1 / w / 10, 1);
+
+        memset(pix, 0, sizeof pix);
+        pix[j * w + i] = pix[j * w + i + 1] = 1;
+        ck_assert_int_eq(pds_set_domain(s, 0, 0, X1, Y1), 0);
+        ck_assert_int_eq(pds_set_mask(s, (size_t)w, (size_t)h, pix), 0);
+        ck_assert_int_eq(pds_set_fixed(s, out, NULL, 1), 0);
+        ck_assert_int_eq(pds_step(s), PDS_EINVAL);
+        ck_assert_int_eq(pds_set_fixed(s, xy, NULL, 4), 0);
+        ck_assert_msg(pds_run(s, 0, NULL) == 0, "w %d: %s", w, pds_errmsg(s));
+        ck_assert_int_eq(pds_verify(s), 0);
+        pds_destroy(s);
+    }
+}
+END_TEST
+
 /* A uniform map of 0.02, refined before the first point or not: the bytes
  * of a plain sampler created at 0.02 and refined alike. (Interpolated, the
  * map's value at a fixed point may be off by an ulp: the radius is the one
@@ -177,6 +210,8 @@ Suite *domain_fixed_edges_suite(void)
     tcase_add_test(tc, one_clearance_covers_a_polygon_and_a_mask);
     tcase_add_test(tc, a_refine_before_the_first_point_leaves_room);
     tcase_add_test(tc, a_clearance_short_of_a_corner_leaves_a_point_there);
+    tc = new_tcase(s, "the bounding box");
+    tcase_add_test(tc, fixed_points_on_a_masks_pixel_lines_are_inside);
     tc = new_tcase(s, "a constant field");
     tcase_add_test(tc, a_constant_field_gives_the_plain_points);
     return s;

@@ -222,6 +222,16 @@ class MaskTest(TestCase):
         probes = grid_probes(MASK_BOX, 0.05, lambda x, y: in_mask(x, y, L_MASK, MASK_BOX))
         self.assertTrue(covers(pts, 0.15, probes))
 
+    def test_fixed_points_on_pixel_lines(self):
+        # The corners of the inside pixels, computed as X1 * i / w: within
+        # rounding of the library's box, they count as on it.
+        x1, y1, w, h = 0.00493827156, 0.0125663704, 3, 5
+        mask = [[False] * 3, [False] * 3, [False, True, True], [False] * 3, [False] * 3]
+        fixed = [(x1 * 1 / w, y1 * 2 / h), (x1 * 3 / w, y1 * 2 / h), (x1 * 3 / w, y1 * 3 / h), (x1 * 1 / w, y1 * 3 / h)]
+        with Sampler(x1 / w / 10, seed=1, mask=mask, bounds=((0.0, 0.0), (x1, y1)), fixed=fixed) as s:
+            self.assertIs(s.run(), True)
+            self.assertIs(s.verify(), True)
+
     def test_ints_and_arrays(self):
         ints = [[int(v) for v in row] for row in L_MASK]
         a = poissondisk.sample(0.2, seed=4, mask=L_MASK, bounds=MASK_BOX)

@@ -183,6 +183,16 @@ test('count past a clearance that covers the square at the first radius', async 
   s.dispose();
 });
 
+test('fixed points on a mask\'s pixel lines (within rounding of its box) are inside', async () => {
+  const x1 = 0.00493827156, y1 = 0.0125663704, w = 3, h = 5;
+  const mask = [[0, 0, 0], [0, 0, 0], [0, 1, 1], [0, 0, 0], [0, 0, 0]];
+  const fixed = [[x1 * 1 / w, y1 * 2 / h], [x1 * 3 / w, y1 * 2 / h], [x1 * 3 / w, y1 * 3 / h], [x1 * 1 / w, y1 * 3 / h]];
+  const s = await Sampler.create(x1 / w / 10, { seed: 1, mask, bounds: [0, 0, x1, y1], fixed });
+  assert.equal(s.run(), true);
+  assert.equal(s.verify(), true);
+  s.dispose();
+});
+
 test('a clearance that covers the square leaves no point, maximal and verified', async () => {
   const s = await Sampler.create(0.05, { seed: 4, fixed: [[0.5, 0.5, 1.0]] });
   assert.equal(s.run(), true);
