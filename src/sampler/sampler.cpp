@@ -258,16 +258,21 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
     // truly outgrows the index space stops there (PDS_ERANGE, points kept).
     const bool grows = varying_field();
     const std::size_t bound = grows ? field_count_bound() : smallest_frame().count_bound_points();
+    // A pattern already maximal has nothing to reserve: fixed points'
+    // clearances may leave no room at a radius whose bound is past the
+    // index space (asked only then: it draws the next point).
+    const auto maximal = [&] { return started() && count_target_ == 0 && next_point() == nullptr; };
     if (grows) {
         // After the first point a bounded run is not judged either: a bound
         // that refused count + max_new would refuse a maximal pattern.
         const std::size_t asked = n != 0 ? 0 : max_new == 0 ? bound : std::min(max_new, bound);
-        if (asked > Frame::max_points())
+        if (asked > Frame::max_points() && !maximal())
             throw LimitError(Limit::too_many_points, smallest_frame().user_radius(), JudgedRadius::field_smallest);
         prepare(n + 1);
     } else {
         const std::size_t whole = count_target_ != 0 ? std::max(count_target_, n) : std::max(bound, n) + 1;
-        prepare(max_new != 0 && max_new < whole - n ? n + max_new : whole);
+        const std::size_t total = max_new != 0 && max_new < whole - n ? n + max_new : whole;
+        if (!(total > Frame::max_points() && maximal())) prepare(total);
     }
     // The meter reads the clock after every point when each point calls the
     // user's radius function, whose cost the library cannot know.

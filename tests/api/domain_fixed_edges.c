@@ -68,6 +68,26 @@ START_TEST(one_clearance_covers_a_polygon_and_a_mask)
 }
 END_TEST
 
+/* At R 1e-5 an unbounded run is refused before the first point (the bound
+ * is past the index space), a bounded one finds the square covered; after
+ * that every run says maximal (before, an unbounded one said PDS_ERANGE). */
+START_TEST(covered_at_a_radius_past_the_index_space)
+{
+    const double centre[2] = {0.5, 0.5}, c[1] = {1.0};
+    pds_sampler *s = sampler_new(1e-5, 3);
+    size_t added = 7;
+
+    ck_assert_int_eq(pds_set_fixed(s, centre, c, 1), 0);
+    ck_assert_int_eq(pds_run(s, 0, &added), PDS_ERANGE);
+    ck_assert_int_eq(pds_run(s, 10, &added), 0);
+    ck_assert_uint_eq(added, 0);
+    ck_assert_int_eq(pds_run(s, 0, &added), 0);
+    ck_assert_int_eq(pds_step(s), 0);
+    ck_assert_int_eq(pds_verify(s), 0);
+    pds_destroy(s);
+}
+END_TEST
+
 START_TEST(a_refine_before_the_first_point_leaves_room)
 {
     pds_sampler *s = sampler_new(1.0, 3);
@@ -209,6 +229,7 @@ Suite *domain_fixed_edges_suite(void)
     tcase_add_test(tc, corners_cover_the_square);
     tcase_add_test(tc, one_clearance_covers_a_polygon_and_a_mask);
     tcase_add_test(tc, a_refine_before_the_first_point_leaves_room);
+    tcase_add_test(tc, covered_at_a_radius_past_the_index_space);
     tcase_add_test(tc, a_clearance_short_of_a_corner_leaves_a_point_there);
     tc = new_tcase(s, "the bounding box");
     tcase_add_test(tc, fixed_points_on_a_masks_pixel_lines_are_inside);

@@ -536,6 +536,13 @@ SEEDS = {
     "regress_fixed_short_of_a_corner": list(bytes.fromhex(
         "010107c1bf000100090400000000007f0229027ba0b18303b07f0407000202f93901ec05580901b304"
         "05ef070084940294061e680318007e100247021084060426bd01e804820402fd0b0b0c0b0b0b0f")),
+    # Fixed in 1.7.10: twenty fixed points at R 1e-5, two clearances covering the unit
+    # square: a bounded run ends maximal with no point, and an unbounded run after it
+    # said PDS_ERANGE (the bound past the index space) instead of PDS_DONE (raw bytes).
+    "regress_fixed_covered_past_the_index_space": list(bytes.fromhex(
+        "0104f8577f0407000d015b970600b647013503b62500009a4a0701add50606ae1f070322fa060155df01"
+        "a0001a98000159d20006f77101d306f4cf06032a84031101760e011000775d0178059c041a0705a6cf03"
+        "8e051a3d0701405c00047008030c0b6c0b0b0f")),
     # Fixed in 1.5.2 (found/NOTES): a 4 x 4 square (sides with collinear runs) at
     # 1e15 was PDS_EINVAL "encloses nothing": the side probes, 2^-20 of an edge
     # away, rounded onto the edge.
