@@ -488,7 +488,9 @@ PDS_API int pds_set_mask(pds_sampler *s, size_t w, size_t h, const unsigned char
  * dart throwing): in our measurements about twice the time of a plain run.
  * pds_free_area counts the clearances once a run has started. Clearances
  * that cover the domain leave a maximal pattern with no point (pds_run and
- * pds_verify return PDS_DONE, pds_free_area 0).
+ * pds_verify return PDS_DONE, pds_free_area 0); in count mode the radius
+ * goes down with them until points fit (PDS_ERANGE, nothing added, if they
+ * still cover it at the precision limit).
  * Returns 0, PDS_EINVAL (s NULL, xy NULL with n > 0, a coordinate not
  * finite, a clearance not finite or < 0, periodic set; the message names
  * the point, from 0), PDS_ENOMEM, PDS_ESTATE (points exist already). A

@@ -49,6 +49,8 @@ inline const char* judged_text(pds::JudgedRadius judged) {
             return "the field's largest radius";
         case pds::JudgedRadius::count_lowest:
             return "the lowest radius the count may need";
+        case pds::JudgedRadius::count_covered:
+            return "the radius count mode lowered to while the fixed points' clearances covered the domain";
         case pds::JudgedRadius::radius:
             break;
     }

@@ -46,7 +46,9 @@ enum class Limit {
 // Which radius a limit was judged on: the one radius, a field's smallest or
 // largest, or the lowest radius count mode can reach (so a message can name
 // the one at fault).
-enum class JudgedRadius { radius, field_smallest, field_largest, count_lowest };
+// count_covered: count mode lowered it while fixed points' clearances,
+// which shrink with it, still left no room for a point.
+enum class JudgedRadius { radius, field_smallest, field_largest, count_lowest, count_covered };
 
 // Thrown before anything changes when a call asks what the limits forbid.
 class LimitError : public std::runtime_error {

@@ -215,8 +215,15 @@ void Sampler::lower_radius_for_count() {
     const double step = std::min(kSmallestStep, std::max(kLargestStep, guess));
     // With no point yet (fixed points' clearances cover the domain) the
     // stages are kept all the same: the clearances shrink with the radius,
-    // as they do once points exist, until points fit.
-    refine_stages(step * frame_.user_radius());
+    // as they do once points exist, until points fit, or until the radius
+    // meets the precision limit (clearances a hundred million times the
+    // domain): the message then says why it went so low.
+    try {
+        refine_stages(step * frame_.user_radius());
+    } catch (const LimitError& e) {
+        if (count() != 0 || e.judged() != JudgedRadius::radius) throw;
+        throw LimitError(e.limit(), e.radius(), JudgedRadius::count_covered);
+    }
 }
 
 void Sampler::hand_over() {

@@ -88,6 +88,25 @@ START_TEST(covered_at_a_radius_past_the_index_space)
 }
 END_TEST
 
+/* Count mode lowers the radius, and the clearances with it, until points
+ * fit: a clearance of 10^12 still covers the square at the precision limit,
+ * so the run stops there, with nothing added and a message that says why. */
+START_TEST(count_mode_under_a_clearance_past_the_precision_limit)
+{
+    const double centre[2] = {0.5, 0.5}, c[1] = {1e12};
+    pds_sampler *s = sampler_new(0.1, 3);
+    size_t added = 7;
+
+    ck_assert_int_eq(pds_set_count(s, 53), 0);
+    ck_assert_int_eq(pds_set_fixed(s, centre, c, 1), 0);
+    ck_assert_int_eq(pds_run(s, 0, &added), PDS_ERANGE);
+    ck_assert_uint_eq(added, 0);
+    ck_assert_uint_eq(pds_count(s), 0);
+    ck_assert_ptr_nonnull(strstr(pds_errmsg(s), "clearances covered the domain"));
+    pds_destroy(s);
+}
+END_TEST
+
 START_TEST(a_refine_before_the_first_point_leaves_room)
 {
     pds_sampler *s = sampler_new(1.0, 3);
@@ -230,6 +249,7 @@ Suite *domain_fixed_edges_suite(void)
     tcase_add_test(tc, one_clearance_covers_a_polygon_and_a_mask);
     tcase_add_test(tc, a_refine_before_the_first_point_leaves_room);
     tcase_add_test(tc, covered_at_a_radius_past_the_index_space);
+    tcase_add_test(tc, count_mode_under_a_clearance_past_the_precision_limit);
     tcase_add_test(tc, a_clearance_short_of_a_corner_leaves_a_point_there);
     tc = new_tcase(s, "the bounding box");
     tcase_add_test(tc, fixed_points_on_a_masks_pixel_lines_are_inside);

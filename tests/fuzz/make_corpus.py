@@ -543,6 +543,15 @@ SEEDS = {
         "0104f8577f0407000d015b970600b647013503b62500009a4a0701add50606ae1f070322fa060155df01"
         "a0001a98000159d20006f77101d306f4cf06032a84031101760e011000775d0178059c041a0705a6cf03"
         "8e051a3d0701405c00047008030c0b6c0b0b0f")),
+    # Harness, 1.7.10: a fixed point with clearance DBL_MAX, then count mode (53 points):
+    # the radius goes down with the clearance until the precision limit, PDS_ERANGE with
+    # nothing added, which the harness's count-mode model did not allow (raw bytes).
+    "regress_fixed_count_past_precision": list(bytes.fromhex(
+        "010008010007477f010100000000000072616469757320660c5e03367f0401000320d707b2ffffffffff"
+        "ffffffffffffffffffffffffffffffffffffff732066756e6374696f6e00ffffffffffffffffffffffff"
+        "ffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff75"
+        "6e6374696f00800000ae0e092b00010008328f01420202ffffff0400017261646975732066756e637469"
+        "6f6e00153f351c00706000000000000000f8000701f8080b0b000008303c3c0b0f0f")),
     # Fixed in 1.5.2 (found/NOTES): a 4 x 4 square (sides with collinear runs) at
     # 1e15 was PDS_EINVAL "encloses nothing": the side probes, 2^-20 of an edge
     # away, rounded onto the edge.
