@@ -64,6 +64,12 @@ static int work_allowed(const fz_state *st)
     if (st->s == NULL || st->budget == 0) return WORK_NONE;
     /* found/NOTES: polygon_antenna_hang, mask_fine_pixels_verify */
     if ((st->shape.antenna || st->shape.fine) && !fz_strict()) return WORK_NONE;
+    /* found/NOTES, thin_domain_slow: count mode with fixed points lowers the
+     * radius in hundreds of steps, each measuring every cell exactly. */
+    if (st->target != 0 && st->nfix > 0 && !fz_strict()) {
+        const double w = st->dom[2] - st->dom[0], h = st->dom[3] - st->dom[1];
+        if ((w < h ? w : h) < 0x1p-12 * (w < h ? h : w)) return WORK_NONE;
+    }
     fz_lib_bound(st, &lo, &hi);
     /* Count mode ends at n points; the dart stage's grid still follows the bound. */
     if (st->target != 0 && (double)st->target <= FZ_TO_END_MAX &&

@@ -344,12 +344,16 @@ int fz_shape_polygon(fz_shape *sh, const double *xy, const size_t *ends, size_t 
     return verdict;
 }
 
-/* grid line i of n over [lo, hi] */
+/* grid line i of n over [lo, hi], in units of a power of two near the
+ * larger end, so that hi - lo cannot overflow (as the library reads them) */
 static double grid(double lo, double hi, size_t i, size_t n)
 {
+    const double m = fabs(lo) > fabs(hi) ? fabs(lo) : fabs(hi);
+    const int k = m > 0.0 ? ilogb(m) : 0;
+    const double a = ldexp(lo, -k), b = ldexp(hi, -k);
     if (i == 0) return lo;
     if (i == n) return hi;
-    return lo + (hi - lo) * ((double)i / (double)n);
+    return ldexp(a + (b - a) * ((double)i / (double)n), k);
 }
 
 int fz_shape_mask(fz_shape *sh, size_t w, size_t h, const unsigned char *pix, const double rect[4])
