@@ -187,6 +187,9 @@ enum { FZ_FIELD_NONE, FZ_FIELD_MAP, FZ_FIELD_FN };
 #define FZ_OK (FZ_BIT(0))
 #define FZ_MORE (FZ_BIT(1))
 
+/* The largest |d[i]| of a box's four coordinates. */
+double fz_max_abs4(const double d[4]);
+
 /* PDS_FUZZ_STRICT is set in the environment: no tolerance for open bugs of
  * found/NOTES (none open now). */
 int fz_strict(void);

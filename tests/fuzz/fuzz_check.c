@@ -30,6 +30,15 @@ void fz_fail(const char *file, int line, const char *fmt, ...)
     abort();
 }
 
+double fz_max_abs4(const double d[4])
+{
+    double m = 0.0;
+    int i;
+    for (i = 0; i < 4; i++)
+        if (fabs(d[i]) > m) m = fabs(d[i]);
+    return m;
+}
+
 int fz_strict(void)
 {
     static int strict = -1;

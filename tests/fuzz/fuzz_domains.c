@@ -290,18 +290,9 @@ double fz_domain_area(const fz_state *st)
     return st->shape.area_known ? st->shape.frac * w * h : NAN;
 }
 
-static double max_abs4(const double d[4])
-{
-    double m = 0.0;
-    int i;
-    for (i = 0; i < 4; i++)
-        if (fabs(d[i]) > m) m = fabs(d[i]);
-    return m;
-}
-
 int fz_shape_scalable(const fz_state *st)
 {
-    const double m = max_abs4(st->dom);
+    const double m = fz_max_abs4(st->dom);
     size_t i;
     if (st->shape.kind == FZ_SHAPE_NONE) return 1;
     for (i = 0; i < 2 * st->shape.nv; i++)
@@ -318,9 +309,9 @@ void fz_lib_bound(const fz_state *st, double *lo, double *hi)
     double w, h, r, rho, cells, edge;
 
     *lo = *hi = oler;
-    if (sh->kind == FZ_SHAPE_NONE || max_abs4(st->dom) == 0.0) return;
+    if (sh->kind == FZ_SHAPE_NONE || fz_max_abs4(st->dom) == 0.0) return;
     /* In the box's scale: user sides may overflow, scaled ones do not. */
-    e = ilogb(max_abs4(st->dom));
+    e = ilogb(fz_max_abs4(st->dom));
     w = ldexp(st->dom[2], -e) - ldexp(st->dom[0], -e);
     h = ldexp(st->dom[3], -e) - ldexp(st->dom[1], -e);
     r = ldexp(fz_smallest_radius(st), -e);
@@ -398,7 +389,7 @@ void fz_shape_coverage(const fz_state *st)
     for (i = 0; i < st->seen; i++) c.order[i] = i;
     g_pts = st->pts;
     qsort(c.order, st->seen, sizeof *c.order, by_x);
-    c.slack = 8.0 * max_abs4(st->dom) * 0x1p-52;
+    c.slack = 8.0 * fz_max_abs4(st->dom) * 0x1p-52;
     c.probes = 0;
     fz_shape_probes(&st->shape, probe, &c);
     free(c.order);

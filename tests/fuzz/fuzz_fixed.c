@@ -30,17 +30,8 @@
 #define N_OF(a) (sizeof(a) / sizeof((a)[0]))
 #define MAX_FIXED 64
 
-static double max_abs4(const double d[4])
-{
-    double m = 0.0;
-    int i;
-    for (i = 0; i < 4; i++)
-        if (fabs(d[i]) > m) m = fabs(d[i]);
-    return m;
-}
-
 /* A few ulps of the domain's largest coordinate: the library's frame rounds. */
-static double slack(const fz_state *st) { return 16.0 * max_abs4(st->dom) * 0x1p-52; }
+static double slack(const fz_state *st) { return 16.0 * fz_max_abs4(st->dom) * 0x1p-52; }
 
 static const double kClearanceFactor[] = {0.5, 1.0, 2.0, 0.01, 1e-6, 3.0, 0.999, 1.001};
 
@@ -168,7 +159,7 @@ void fz_op_fixed(fz_state *st, fz_reader *r)
 int fz_fixed_outside(const fz_state *st)
 {
     const double *d = st->dom;
-    const double tol = 1e-9 * (max_abs4(d) + (d[2] - d[0]) + (d[3] - d[1]));
+    const double tol = 1e-9 * (fz_max_abs4(d) + (d[2] - d[0]) + (d[3] - d[1]));
     int verdict = 0;
     size_t k;
     if (st->s == NULL || st->count > 0 || st->nfix == 0) return 0;

@@ -17,19 +17,10 @@
 
 #define PI 3.14159265358979323846
 
-static double max_abs4(const double d[4])
-{
-    double m = 0.0;
-    int i;
-    for (i = 0; i < 4; i++)
-        if (fabs(d[i]) > m) m = fabs(d[i]);
-    return m;
-}
-
 /* The domain can be scaled without losing a coordinate (else: PDS_ERANGE). */
 static int scalable(const double d[4])
 {
-    const double m = max_abs4(d);
+    const double m = fz_max_abs4(d);
     int i;
     if (!(m >= 0x1p-890) || !isfinite(m)) return 0;
     for (i = 0; i < 4; i++)
@@ -54,7 +45,7 @@ void fz_set_torus(fz_state *st)
 
     st->q = st->per[0] = st->per[1] = st->per_scaled[0] = st->per_scaled[1] = 0.0;
     if (!st->periodic || !scalable(d)) return; /* no point will exist */
-    e = ilogb(max_abs4(d));
+    e = ilogb(fz_max_abs4(d));
     st->q = ldexp(1.0, e - 50);
     for (a = 0; a < 2; a++) { /* back in the user's scale; inf near DBL_MAX (then lenient) */
         st->per_scaled[a] = grid_floor_difference(ldexp(d[a], -e), ldexp(d[a + 2], -e));
@@ -109,7 +100,7 @@ void fz_count_radius(fz_state *st)
         return;
     }
     if (st->count == 0 && scalable(d)) {
-        const int e = ilogb(max_abs4(d));
+        const int e = ilogb(fz_max_abs4(d));
         /* The area is the torus's: its periods rounded down to the quantum;
          * the sides as given when one rounds to 0 (no point can exist). */
         /* (scaled: periods near 2 DBL_MAX overflow in the user's units) */
