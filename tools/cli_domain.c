@@ -201,7 +201,7 @@ int cli_domain_load(const char *prog, struct cli_domain *d, double box[4])
         double slack = fabs(fbox[0]);
         for (k = 1; k < 4; k++)
             slack = fabs(fbox[k]) > slack ? fabs(fbox[k]) : slack;
-        slack = 8.0 * DBL_EPSILON * fmax(slack, fmax(fbox[2] - fbox[0], fbox[3] - fbox[1]));
+        slack *= 8.0 * DBL_EPSILON;
         for (k = 0; k < p->n; k++) {
             double x = p->xy[2 * k], y = p->xy[2 * k + 1];
             if (x < fbox[0] - slack || x > fbox[2] + slack || y < fbox[1] - slack || y > fbox[3] + slack) {

@@ -50,8 +50,8 @@ MaskPolygon mask_polygon(std::size_t w, std::size_t h, const std::uint8_t* insid
 
 // Whether p lies within a few rounding steps of the box [lo, hi] (user units).
 bool within_rounding(const Point& p, const Point& lo, const Point& hi) {
-    const double scale = std::max({std::fabs(lo.x), std::fabs(lo.y), std::fabs(hi.x), std::fabs(hi.y),
-                                   hi.x - lo.x, hi.y - lo.y});
+    // (The box's sides are at most twice its largest coordinate: no overflow.)
+    const double scale = std::max({std::fabs(lo.x), std::fabs(lo.y), std::fabs(hi.x), std::fabs(hi.y)});
     const double slack = 8.0 * std::numeric_limits<double>::epsilon() * scale;
     return p.x >= lo.x - slack && p.x <= hi.x + slack && p.y >= lo.y - slack && p.y <= hi.y + slack;
 }
