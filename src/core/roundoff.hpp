@@ -7,9 +7,28 @@
 #ifndef PDS_ROUNDOFF_HPP
 #define PDS_ROUNDOFF_HPP
 
+#include <cmath>
+#include <limits>
+
 namespace pds {
 
 constexpr double kUnitRoundoff = 0x1.0p-53;
+
+// x rounded to the nearest multiple of the spacing of doubles at magnitude
+// m (0 stays 0; the result is exact).
+inline double on_grid_of(double x, double m) {
+    if (!(m > 0.0) || !std::isfinite(m)) return x;
+    const double h = std::nextafter(m, std::numeric_limits<double>::infinity()) - m;
+    return h > 0.0 && std::isfinite(h) ? std::nearbyint(x / h) * h : x;
+}
+
+// The double k representable steps from x (k < 0: downwards).
+inline double ulps_from(double x, int k) {
+    const double inf = std::numeric_limits<double>::infinity();
+    for (; k > 0; --k) x = std::nextafter(x, inf);
+    for (; k < 0; ++k) x = std::nextafter(x, -inf);
+    return x;
+}
 
 }  // namespace pds
 

@@ -160,6 +160,9 @@ private:
     void draw_batch_unguarded(std::size_t n, Rng& rng);
     void set_weight(SiteIndex site, double weight);
     void give_up(SiteIndex site);
+    // A representable free point of v's cell within two rounding steps of
+    // one of its piece ends (piece_ends.hpp), if there is one.
+    bool near_piece_end(VertexIndex v, Point* out) const;
     // The free regions' dart process (region_darts.hpp, jones_loop_regions.cpp):
     // the next of its points, or nullptr once it has ended.
     const Point* next_region_point();

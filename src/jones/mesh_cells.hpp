@@ -14,6 +14,7 @@
 
 #include "cells/cell_coverage.hpp"
 #include "cells/outline_clip.hpp"
+#include "cells/piece_ends.hpp"
 #include "cells/polygon_coverage.hpp"
 #include "mesh/delaunay.hpp"
 #include "cells/free_area.hpp"
@@ -60,6 +61,19 @@ public:
         OutlineClip::Stage<cell_stream::CellSink> cut(*clip_, sink, q.site, q.domain, q.radius);
         const bool doubtful = cell_stream::stream_cell(q, ring(v), cut);
         return verdict(sink, doubtful || clip_->doubtful(), q.radius);
+    }
+    // Where a free region too thin for the draws may hold a representable
+    // point (piece_ends.hpp), relative to v's site.
+    PieceEnds piece_ends(VertexIndex v) const {
+        const CellQuery q = query(v);
+        PieceEnds ends(q.radius);
+        if (!clip_) {
+            cell_stream::stream_cell(q, ring(v), ends);
+        } else {
+            OutlineClip::Stage<PieceEnds> cut(*clip_, ends, q.site, q.domain, q.radius);
+            cell_stream::stream_cell(q, ring(v), cut);
+        }
+        return ends;
     }
     // free_area.hpp's select_in_cell for v's cell.
     CellSelection select(VertexIndex v, double target) const {

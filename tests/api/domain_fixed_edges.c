@@ -9,12 +9,14 @@
  * point: pds_run and pds_step return PDS_DONE, pds_verify PDS_DONE, and
  * pds_free_area 0. A refine before the first point is a fresh start at the
  * new radius, where clearances of 0 (the radius) shrink and leave room.
- * Room too thin for any draw at a corner of the domain gets a point on it.
+ * Room too thin for any draw (at a corner of the domain, on a side, between
+ * disks) gets a point: a representable one near its cell's piece ends.
  * A fixed point within rounding of the domain's bounding box counts as on it.
  * With a constant field the points are the plain sampler's at that radius,
  * byte for byte (pds_set_radius_map), fixed points or not.
  */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "helpers.h"
@@ -169,6 +171,49 @@ START_TEST(a_clearance_short_of_a_corner_leaves_a_point_there)
 }
 END_TEST
 
+/* Clearances that each reach a point T but for a hair (1e-16 to 1e-10 of
+ * them): T's neighbourhood is room too thin for any draw, inside the square
+ * or on its side, in the square as a rectangle and as a polygon. Every run
+ * must end maximal and verified (before, some ended "maximal" with T free:
+ * pds_verify PDS_EINTERNAL). */
+START_TEST(room_a_hair_wide_between_clearances_gets_its_point)
+{
+    uint64_t state = 0x9e3779b97f4a7c15u;
+    int trial, side;
+
+    static const double square[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const size_t ends[1] = {4};
+
+    for (side = 0; side < 4; side++) { /* 2, 3: the square as a polygon */
+        for (trial = 0; trial < 200; trial++) {
+            double t[2], xy[12], c[6];
+            int k, nf;
+            pds_sampler *s;
+#define NEXT_U() ((double)((state = state * 6364136223846793005u + 1442695040888963407u) >> 11) * 0x1p-53)
+            t[0] = NEXT_U();
+            t[1] = side % 2 ? 0.0 : NEXT_U();
+            nf = 3 + (int)(NEXT_U() * 3.0);
+            for (k = 0; k < nf; k++) {
+                const double a = 6.283185307179586 * (k + 0.3 * NEXT_U()) / nf, d = 0.2 + 0.6 * NEXT_U();
+                double x = t[0] + d * cos(a), y = t[1] + d * sin(a);
+                x = x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x;
+                y = y < 0.0 ? 0.0 : y > 1.0 ? 1.0 : y;
+                xy[2 * k] = x;
+                xy[2 * k + 1] = y;
+                c[k] = hypot(x - t[0], y - t[1]) * (1.0 - pow(10.0, -16.0 + 6.0 * NEXT_U()));
+            }
+#undef NEXT_U
+            s = sampler_new(0.05, (uint64_t)trial);
+            if (side >= 2) ck_assert_int_eq(pds_set_polygon(s, square, ends, 1), 0);
+            ck_assert_int_eq(pds_set_fixed(s, xy, c, (size_t)nf), 0);
+            ck_assert_int_eq(pds_run(s, 0, NULL), 0);
+            ck_assert_msg(pds_verify(s) == 0, "side %d trial %d: %s", side, trial, pds_errmsg(s));
+            pds_destroy(s);
+        }
+    }
+}
+END_TEST
+
 /* Fixed points on the corners of a mask's inside pixels, computed the
  * user's way (X1 * i / w): within rounding of the library's box, they count
  * as on it (before, 15 of these 38 masks refused one with PDS_EINVAL). A
@@ -251,6 +296,7 @@ Suite *domain_fixed_edges_suite(void)
     tcase_add_test(tc, covered_at_a_radius_past_the_index_space);
     tcase_add_test(tc, count_mode_under_a_clearance_past_the_precision_limit);
     tcase_add_test(tc, a_clearance_short_of_a_corner_leaves_a_point_there);
+    tcase_add_test(tc, room_a_hair_wide_between_clearances_gets_its_point);
     tc = new_tcase(s, "the bounding box");
     tcase_add_test(tc, fixed_points_on_a_masks_pixel_lines_are_inside);
     tc = new_tcase(s, "a constant field");
