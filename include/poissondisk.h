@@ -496,7 +496,8 @@ PDS_API int pds_set_mask(pds_sampler *s, size_t w, size_t h, const unsigned char
  * the point, from 0), PDS_ENOMEM, PDS_ESTATE (points exist already). A
  * fixed point outside the bounding box is PDS_EINVAL at the first point
  * (pds_run or pds_step, nothing added); within a few rounding steps of it
- * (a mask's pixel line computed another way) counts as on it. (1.4)
+ * (a mask's pixel line computed another way) counts as on it. Fixed points
+ * within 2^-40 R of each other count as one, the larger disk. (1.4)
  */
 PDS_API int pds_set_fixed(pds_sampler *s, const double *xy, const double *clearance,
                           size_t n) PDS_NOEXCEPT;

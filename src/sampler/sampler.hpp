@@ -161,6 +161,7 @@ private:
     // many (a position given twice is one point, with its larger clearance).
     std::size_t adopt_fixed(JonesStage& jones, std::size_t room);
     static void drop_repeated_fixed(std::vector<Point>& points, std::vector<double>& values);
+    static void merge_nearly_coincident_fixed(std::vector<Point>& points, std::vector<double>& values, double tol);
     bool use_darts() const;
     // A varying field's bound on the size of any pattern (the smaller of
     // Oler's at rmin and the map's own), saturated as count_bound_points().

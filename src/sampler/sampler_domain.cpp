@@ -162,12 +162,45 @@ std::size_t Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
         points.push_back(p);
     }
     drop_repeated_fixed(points, values);
+    merge_nearly_coincident_fixed(points, values, std::ldexp(frame_.r(), -40));
     std::vector<std::uint32_t> order(points.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
     jones.reserve(room + points.size());
     jones.adopt(points, order.data(), &values, Poll{});
     jones.set_fixed(points.size());
     return points.size();
+}
+
+void Sampler::merge_nearly_coincident_fixed(std::vector<Point>& points, std::vector<double>& values, double tol) {
+    // Two fixed points within tol (2^-40 R) of each other are one: the
+    // larger disk (the first of equal ones) stands for both, the other's
+    // edge moving by tol at most. Closer, the mesh's triangles around them
+    // could be too thin for the floating-point centres of their cells.
+    std::vector<std::uint32_t> by_x(points.size());
+    for (std::size_t k = 0; k < by_x.size(); ++k) by_x[k] = static_cast<std::uint32_t>(k);
+    std::sort(by_x.begin(), by_x.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return points[a].x != points[b].x ? points[a].x < points[b].x : a < b;
+    });
+    std::vector<bool> dropped(points.size(), false);
+    bool any = false;
+    for (std::size_t i = 0; i < by_x.size(); ++i) {
+        const std::uint32_t a = by_x[i];
+        for (std::size_t j = i + 1; j < by_x.size() && !dropped[a] && points[by_x[j]].x - points[a].x <= tol; ++j) {
+            const std::uint32_t b = by_x[j];
+            if (dropped[b] || std::fabs(points[b].y - points[a].y) > tol) continue;
+            const bool keep_a = values[a] > values[b] || (values[a] == values[b] && a < b);
+            dropped[keep_a ? b : a] = any = true;
+        }
+    }
+    if (!any) return;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        if (dropped[k]) continue;
+        points[kept] = points[k];
+        values[kept++] = values[k];
+    }
+    points.resize(kept);
+    values.resize(kept);
 }
 
 void Sampler::drop_repeated_fixed(std::vector<Point>& points, std::vector<double>& values) {

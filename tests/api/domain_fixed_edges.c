@@ -11,7 +11,8 @@
  * new radius, where clearances of 0 (the radius) shrink and leave room.
  * Room too thin for any draw (at a corner of the domain, on a side, between
  * disks) gets a point: a representable one near its cell's piece ends.
- * A fixed point within rounding of the domain's bounding box counts as on it.
+ * A fixed point within rounding of the domain's bounding box counts as on it;
+ * fixed points within 2^-40 R of each other count as one, the larger disk.
  * With a constant field the points are the plain sampler's at that radius,
  * byte for byte (pds_set_radius_map), fixed points or not.
  */
@@ -214,6 +215,24 @@ START_TEST(room_a_hair_wide_between_clearances_gets_its_point)
 }
 END_TEST
 
+/* Three fixed points on the bottom side, 0.3 and 5e-8 apart, in a domain
+ * 1e20 wide at R 5e18: closer than 2^-40 R, they count as one disk (before:
+ * PDS_EINTERNAL, "degenerate Delaunay triangle", the triangles around them
+ * too thin for the floating-point centres). */
+START_TEST(nearly_coincident_fixed_points_count_once)
+{
+    const double xy[6] = {0.4392156862745098, 0.0, 0.12549019607843137, 0.0, 0.12549024607843137, 0.0};
+    const double c[3] = {0.14375, 4.2426406871192857, 1.4142135623730951};
+    pds_sampler *s = sampler_new(5e18, 1);
+
+    ck_assert_int_eq(pds_set_domain(s, -1e20, 0.0, 1e20, 1e20), 0);
+    ck_assert_int_eq(pds_set_fixed(s, xy, c, 3), 0);
+    ck_assert_msg(pds_run(s, 0, NULL) == 0, "%s", pds_errmsg(s));
+    ck_assert_int_eq(pds_verify(s), 0);
+    pds_destroy(s);
+}
+END_TEST
+
 /* Fixed points on the corners of a mask's inside pixels, computed the
  * user's way (X1 * i / w): within rounding of the library's box, they count
  * as on it (before, 15 of these 38 masks refused one with PDS_EINVAL). A
@@ -299,6 +318,8 @@ Suite *domain_fixed_edges_suite(void)
     tcase_add_test(tc, room_a_hair_wide_between_clearances_gets_its_point);
     tc = new_tcase(s, "the bounding box");
     tcase_add_test(tc, fixed_points_on_a_masks_pixel_lines_are_inside);
+    tc = new_tcase(s, "nearly one point");
+    tcase_add_test(tc, nearly_coincident_fixed_points_count_once);
     tc = new_tcase(s, "a constant field");
     tcase_add_test(tc, a_constant_field_gives_the_plain_points);
     return s;

@@ -566,6 +566,14 @@ SEEDS = {
         "8f0165256565656565655374396261645f616c6c6f63656565656565656565656565c1657a4e7f021b02"
         "0906087a6e6374696f6e8f01470101010008055e1c0b0101010008055e1c0b00010061245f616c6c6f63"
         "328f01652565030072067e656565650905ae020a0b")),
+    # Fixed in 1.7.10: three fixed points near (0.3, 0) on the bottom side of a domain
+    # spanning [-DBL_MAX, DBL_MAX]: nearly coincident at that scale, the triangles around
+    # them were too thin for the cell centres (PDS_EINTERNAL); within 2^-40 R they are now
+    # one disk (raw bytes).
+    "regress_fixed_nearly_coincident": list(bytes.fromhex(
+        "01010892317f02080225487f04030004706f696e742038333a055e1c0b0001006103067f03023c7f007f"
+        "245f616c6c6f63338f016525656565656565538f0165256565656565655374396261645f616c6c6f6365"
+        "656565656565654e65657a656565c17f021b020100072e5e03ffffffffffffffff1f7f04")),
     # Fixed in 1.5.2 (found/NOTES): a 4 x 4 square (sides with collinear runs) at
     # 1e15 was PDS_EINVAL "encloses nothing": the side probes, 2^-20 of an edge
     # away, rounded onto the edge.
