@@ -50,7 +50,10 @@
  * function stopping runs (fuzz_field.c). A polygon or mask (1.4): points in
  * the closed domain and a maximal pattern covering it, by the harness's own
  * geometry (fuzz_shape.c), its area as pds_free_area's start, periodic
- * refused (fuzz_domains.c). Before a sampler
+ * refused (fuzz_domains.c). Fixed points (1.4): every point keeps each
+ * clearance (scaled as the radius is), a maximal pattern's coverage counts
+ * their disks, a point outside the box is refused at the first point
+ * (fuzz_fixed.c). Before a sampler
  * is dropped, a second one replays its calls without the splits and the
  * callback and must give the same bytes (fuzz_replay.c); with a constant field,
  * so must a plain sampler at that radius.
