@@ -20,17 +20,18 @@ public:
     static constexpr int kMax = 64;  // a cell has a few dozen at most; the rest are dropped
 
     explicit PieceEnds(double r) : r2_(r * r) {}
-    void vertex(const RelativeCentre& v) { add(Point{v.x, v.y}); }
+    void vertex(const RelativeCentre& v) { add(Point{v.x, v.y}, v.err); }
     void edge(const RelativeCentre& a, const RelativeCentre& b) {
         // Counterclockwise, as the fan's pieces are cut (a clockwise fan
         // triangle is a power cell's shadow: its ends count all the same).
         const Point pa{a.x, a.y}, pb{b.x, b.y};
+        const double err = a.err > b.err ? a.err : b.err;
         Piece pieces[2];
         const int n = cross(pa, pb) >= 0.0 ? split_fan_triangle(pa, pb, r2_, pieces)
                                            : split_fan_triangle(pb, pa, r2_, pieces);
         for (int i = 0; i < n; ++i) {
-            add(pieces[i].p);
-            add(pieces[i].q);
+            add(pieces[i].p, err);
+            add(pieces[i].q, err);
         }
     }
     void finish() {}
@@ -38,14 +39,19 @@ public:
 
     int count() const { return count_; }
     const Point& operator[](int i) const { return points_[i]; }
+    // A bound on the error of end i's cell vertices (their centres').
+    double error(int i) const { return errors_[i]; }
 
 private:
-    void add(const Point& p) {
-        if (count_ < kMax) points_[count_++] = p;
+    void add(const Point& p, double err) {
+        if (count_ == kMax) return;
+        errors_[count_] = err;
+        points_[count_++] = p;
     }
 
     double r2_;
     Point points_[kMax];
+    double errors_[kMax];
     int count_ = 0;
 };
 

@@ -376,7 +376,7 @@ bool JonesLoop<Space, Rule>::near_piece_end(VertexIndex v, Point* out) const {
     // magnitude), so the end is also snapped to the grid of that magnitude,
     // which holds 0 and the domain's coarser lines.
     // A region along a side of the box holds points on that side: an end
-    // within rounding of it is tried on it too.
+    // within its error bound (or rounding) of it is tried on it too.
     constexpr int kSteps = 4;
     const PieceEnds ends = cells().piece_ends(v);
     const Point& c = dt_.point(v);
@@ -389,8 +389,9 @@ bool JonesLoop<Space, Rule>::near_piece_end(VertexIndex v, Point* out) const {
         const double mx = std::max(std::fabs(c.x), std::fabs(ends[k].x));
         const double my = std::max(std::fabs(c.y), std::fabs(ends[k].y));
         const Point snapped{on_grid_of(e.x, mx), on_grid_of(e.y, my)};
-        const Point sided{to_side(e.x, box.x0, box.x1, 16.0 * kUnitRoundoff * mx),
-                          to_side(e.y, box.y0, box.y1, 16.0 * kUnitRoundoff * my)};
+        const double err = 4.0 * ends.error(k);
+        const Point sided{to_side(e.x, box.x0, box.x1, err + 16.0 * kUnitRoundoff * mx),
+                          to_side(e.y, box.y0, box.y1, err + 16.0 * kUnitRoundoff * my)};
         for (const Point& b : {e, snapped, sided}) {
             for (int i = -kSteps; i <= kSteps; ++i) {
                 for (int j = -kSteps; j <= kSteps; ++j) {
