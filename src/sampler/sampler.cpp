@@ -379,8 +379,12 @@ std::size_t Sampler::copy_radii(std::size_t first, std::size_t n, double* r) con
 double Sampler::free_area() const {
     // Adopted fixed points are the stage's own: their clearances count even
     // before the first point (they may leave no room for one).
-    if (count() == 0 && !(started() && adopted_fixed_ > 0)) return frame_.area_to_user(frame_.area());
-    return frame_.area_to_user(stage().free_area());
+    const double whole = frame_.area_to_user(frame_.area());
+    if (count() == 0 && !(started() && adopted_fixed_ > 0)) return whole;
+    // Summed cell by cell, a few points' huge cells (a bounded run in a
+    // domain 10^7 R wide) may pass the domain's area by rounding; the free
+    // area cannot.
+    return std::min(whole, frame_.area_to_user(stage().free_area()));
 }
 
 VerifyReport Sampler::verify() const {

@@ -233,6 +233,30 @@ START_TEST(nearly_coincident_fixed_points_count_once)
 }
 END_TEST
 
+/* A few points and fixed points in a domain 10^7 R wide: their cells are
+ * huge, and summed cell by cell their free areas could pass the domain's
+ * area by rounding (by up to 1e-7 of it); the free area cannot. */
+START_TEST(free_area_never_exceeds_the_domain)
+{
+    double xy[2 * 25];
+    unsigned seed;
+    int k;
+
+    for (k = 0; k < 25; k++) { /* a 5 x 5 grid over the unit square, R/2 apart */
+        xy[2 * k] = 0.05 * (k % 5);
+        xy[2 * k + 1] = 0.05 * (k / 5);
+    }
+    for (seed = 53; seed < 93; seed++) {
+        pds_sampler *s = sampler_new(0.1, seed);
+        ck_assert_int_eq(pds_set_fixed(s, xy, NULL, 25), 0);
+        ck_assert_int_eq(pds_set_domain(s, 0.0, -0.5, 2e6, 999999.5), 0);
+        ck_assert_int_eq(pds_run(s, 75, NULL), PDS_MORE);
+        ck_assert_msg(pds_free_area(s) <= 2e12, "seed %u: %.17g", seed, pds_free_area(s));
+        pds_destroy(s);
+    }
+}
+END_TEST
+
 /* Fixed points on the corners of a mask's inside pixels, computed the
  * user's way (X1 * i / w): within rounding of the library's box, they count
  * as on it (before, 15 of these 38 masks refused one with PDS_EINVAL). A
@@ -318,6 +342,7 @@ Suite *domain_fixed_edges_suite(void)
     tcase_add_test(tc, room_a_hair_wide_between_clearances_gets_its_point);
     tc = new_tcase(s, "the bounding box");
     tcase_add_test(tc, fixed_points_on_a_masks_pixel_lines_are_inside);
+    tcase_add_test(tc, free_area_never_exceeds_the_domain);
     tc = new_tcase(s, "nearly one point");
     tcase_add_test(tc, nearly_coincident_fixed_points_count_once);
     tc = new_tcase(s, "a constant field");

@@ -185,7 +185,7 @@ static void check_field_failure(fz_state *st, const char *fn, int rc, int fails,
     }
     if (fails)
         FZ_CHECK(added == 0 && (rc == PDS_EINVAL || rc == PDS_ERANGE || rc == PDS_ENOMEM ||
-                                (rc == PDS_DONE && st->count > 0)),
+                                (rc == PDS_DONE && (st->count > 0 || st->nfix > 0))),
                  "%s returned %d and added %zu while the radius function returns %.17g "
                  "everywhere (bounds [%.17g, %.17g]): %s", fn, rc, added,
                  st->fns[st->fn_active].bad, st->f_rmin, st->f_rmax, pds_errmsg(st->s));

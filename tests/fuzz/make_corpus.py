@@ -574,6 +574,14 @@ SEEDS = {
         "01010892317f02080225487f04030004706f696e742038333a055e1c0b0001006103067f03023c7f007f"
         "245f616c6c6f63338f016525656565656565538f0165256565656565655374396261645f616c6c6f6365"
         "656565656565654e65657a656565c17f021b020100072e5e03ffffffffffffffff1f7f04")),
+    # Fixed in 1.7.10: forty fixed points near a corner of a domain 2e6 x 1e6 at R 0.1, a
+    # bounded run of 75 points: pds_free_area summed the huge cells to 1e-7 above the
+    # domain's area; it is now capped there (raw bytes).
+    "regress_free_area_above_the_domain": list(bytes.fromhex(
+        "010207357f0407102101db4f029bf501d1a506e89b00909c06d900be93062a3903d7a506696e0319d502"
+        "29fffffffeff01ffffffffffffffffffffffffff0400000000000000ffffffffffffffffffffffffffff"
+        "ffffffffffffffffffffffffffffffffffffffffffff220627c5004c81021fd89b22a100a392002aba06"
+        "f4ec0411370004df0396a304524205e53600c8d702bb5e03e53f0400040b0b0b0f")),
     # Fixed in 1.5.2 (found/NOTES): a 4 x 4 square (sides with collinear runs) at
     # 1e15 was PDS_EINVAL "encloses nothing": the side probes, 2^-20 of an edge
     # away, rounded onto the edge.
