@@ -501,7 +501,7 @@ void fz_op_verify(fz_state *st)
              "pds_verify: room left in a pattern reported maximal");
     fz_sync(st);
     if (rc == 0) {
-        FZ_CHECK(st->count > 0, "pds_verify: maximal without a point");
+        FZ_CHECK(st->count > 0 || st->nfix > 0, "pds_verify: maximal without a point");
         if (st->target == 0 || st->count == st->target) {
             st->maximal = 1;
             fz_check_maximal(st);
