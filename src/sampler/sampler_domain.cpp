@@ -48,6 +48,18 @@ MaskPolygon mask_polygon(std::size_t w, std::size_t h, const std::uint8_t* insid
     }
 }
 
+// Removes the fixed points marked dropped; the others keep their order.
+void erase_dropped(std::vector<Point>& points, std::vector<double>& values, const std::vector<bool>& dropped) {
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        if (dropped[k]) continue;
+        points[kept] = points[k];
+        values[kept++] = values[k];
+    }
+    points.resize(kept);
+    values.resize(kept);
+}
+
 // Whether p lies within a few rounding steps of the box [lo, hi] (user units).
 bool within_rounding(const Point& p, const Point& lo, const Point& hi) {
     // (The box's sides are at most twice its largest coordinate: no overflow.)
@@ -192,15 +204,7 @@ void Sampler::merge_nearly_coincident_fixed(std::vector<Point>& points, std::vec
             dropped[keep_a ? b : a] = any = true;
         }
     }
-    if (!any) return;
-    std::size_t kept = 0;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-        if (dropped[k]) continue;
-        points[kept] = points[k];
-        values[kept++] = values[k];
-    }
-    points.resize(kept);
-    values.resize(kept);
+    if (any) erase_dropped(points, values, dropped);
 }
 
 void Sampler::drop_repeated_fixed(std::vector<Point>& points, std::vector<double>& values) {
@@ -225,15 +229,7 @@ void Sampler::drop_repeated_fixed(std::vector<Point>& points, std::vector<double
             if (k != keep) dropped[by_place[k]] = any = true;
         i = j;
     }
-    if (!any) return;
-    std::size_t kept = 0;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-        if (dropped[k]) continue;
-        points[kept] = points[k];
-        values[kept++] = values[k];
-    }
-    points.resize(kept);
-    values.resize(kept);
+    if (any) erase_dropped(points, values, dropped);
 }
 
 }  // namespace pds
