@@ -72,8 +72,8 @@ void JonesLoop<Space, Rule>::set_radius(double r, const PointRadii* radii) {
 }
 
 template <class Space, class Rule>
-bool JonesLoop<Space, Rule>::measure_cells(SiteIndex first, SiteIndex last) {
-    const MeshCells cells = this->cells();
+bool JonesLoop<Space, Rule>::measure_cells(SiteIndex first, SiteIndex last, unsigned w) {
+    const MeshCells cells = cells_of(w);
     bool valid = true;
     // The rings are walked in step a batch ahead, so their misses overlap.
     constexpr SiteIndex kAhead = 16;
@@ -101,8 +101,8 @@ bool JonesLoop<Space, Rule>::measure_all_cells(const Poll& poll) {
     const SiteIndex sites = dt_.vertex_count() - Delaunay::kGhosts;
     // A block of Poll::kEvery sites a worker between the polls. Each cell
     // is measured from the mesh alone into its own leaf, so the plane's
-    // cells can be measured side by side (a polygon's cutter keeps scratch,
-    // the torus may widen its copies: one worker, the caller).
+    // cells can be measured side by side (in a polygon each worker has its
+    // own cutter; the torus may widen its copies: one worker, the caller).
     const unsigned threads = Space::kMeasuresSideBySide && sites >= 4 * Poll::kEvery ? threads_ : 1;
     WorkerPool pool(threads);
     std::atomic<bool> valid{true};
@@ -111,7 +111,7 @@ bool JonesLoop<Space, Rule>::measure_all_cells(const Poll& poll) {
         poll();
         pool.run([&](unsigned w) {
             const SiteIndex lo = std::min(sites, start + w * per), hi = std::min(sites, lo + per);
-            if (!measure_cells(lo, hi)) valid.store(false, std::memory_order_relaxed);
+            if (!measure_cells(lo, hi, w)) valid.store(false, std::memory_order_relaxed);
         });
     }
     tree_.rebuild();

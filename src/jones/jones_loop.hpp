@@ -97,12 +97,17 @@ public:
     VerifyReport verify() const override;
 
     const Delaunay& mesh() const override { return dt_; }
-    MeshCells cells() const override { return MeshCells(dt_, space_.clip_box(), r_, space_.outline_clip()); }
+    MeshCells cells() const override { return cells_of(0); }
+    // The cells as worker w queries them (its own outline cutter).
+    MeshCells cells_of(unsigned w) const { return MeshCells(dt_, space_.clip_box(), r_, space_.outline_clip(w)); }
     const TorusCopies& torus_copies() const override { return space_.copies(); }
     bool is_copy(VertexIndex v) const override { return space_.is_copy(v); }
     const JonesStats& stats() const override { return stats_; }
     void set_fixed(std::size_t n) override { fixed_ = n; }
-    void set_threads(unsigned n) override { threads_ = n < 1 ? 1 : n; }
+    void set_threads(unsigned n) override {
+        space_.set_workers(n < 1 ? 1 : n);  // may throw std::bad_alloc: nothing changed yet
+        threads_ = n < 1 ? 1 : n;
+    }
     void draw_cut_cells_by_region() override { region_draws_ = true; }
     void set_batch_size(std::size_t n) override { batch_size_ = n < 1 ? 1 : (n > kMaxBatch ? kMaxBatch : n); }
     void carry_darts(std::uint64_t salted_seed, std::size_t epoch) override;
@@ -144,8 +149,8 @@ private:
     // Every cell's exact free area into the tree: O(N), no allocation. On
     // the torus, false when some real cell is not yet its torus cell.
     bool measure_all_cells(const Poll& poll = Poll{});
-    // Sites first..last-1 of them; the rings walked a batch ahead.
-    bool measure_cells(SiteIndex first, SiteIndex last);
+    // Sites first..last-1 of them, by worker w; the rings walked a batch ahead.
+    bool measure_cells(SiteIndex first, SiteIndex last, unsigned w = 0);
     // Mesh vertices (ghosts aside) that `points` points need, copies included.
     std::size_t vertices_for(std::size_t points) const { return space_.vertices_for(points); }
     void adapt_batch_size();

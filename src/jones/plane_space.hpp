@@ -45,7 +45,10 @@ public:
 
     Box mesh_region() const { return domain_.bounds(); }
     Box clip_box() const { return domain_.bounds(); }
-    OutlineClip* outline_clip() const { return nullptr; }
+    // The outline cutter of worker w (none in a rectangle); set_workers
+    // makes room for n workers' cutters.
+    OutlineClip* outline_clip(unsigned /*w*/ = 0) const { return nullptr; }
+    void set_workers(unsigned) {}
     const TorusCopies& copies() const { return no_copies_; }
     bool is_copy(VertexIndex) const { return false; }
     VertexIndex original(VertexIndex v) const { return v; }

@@ -7,7 +7,8 @@
 // Everything else is the rectangle's (plane_space.hpp): a point is one
 // vertex, insertion and hand-over are the same. The outline cutter holds
 // scratch space between a cell's selection and its draws; the loop reaches
-// it through MeshCells, which every cell query goes through.
+// it through MeshCells, which every cell query goes through; workers that
+// measure side by side each have their own.
 #ifndef PDS_POLYGON_SPACE_HPP
 #define PDS_POLYGON_SPACE_HPP
 
@@ -25,12 +26,15 @@ namespace pds {
 
 class PolygonSpace : public PlaneSpace {
 public:
-    static constexpr bool kMeasuresSideBySide = false;  // the outline cutter keeps scratch
+    // Each worker measures with its own cutter (it keeps scratch).
+    static constexpr bool kMeasuresSideBySide = true;
     PolygonSpace(const Rectangle& domain, double r, const Torus& torus, bool weighted,
                  std::shared_ptr<const Polygon> polygon)
         : PlaneSpace(domain, r, torus, weighted, nullptr),
           polygon_(std::move(polygon)),
-          clip_(std::make_unique<OutlineClip>(*polygon_)) {}
+          clips_(1) {
+        clips_[0] = std::make_unique<OutlineClip>(*polygon_);
+    }
 
     Point first_point(Rng& rng) const { return polygon_->uniform_point(rng); }
     bool inside(const Point& p) const { return polygon_->contains(p); }
@@ -46,7 +50,13 @@ public:
         }
         return false;
     }
-    OutlineClip* outline_clip() const { return clip_.get(); }
+    OutlineClip* outline_clip(unsigned w = 0) const { return clips_[w].get(); }
+    // Cutters for n workers, made before they are needed (they reserve
+    // scratch: the loop's measuring must not allocate).
+    void set_workers(unsigned n) {
+        clips_.reserve(n);
+        while (clips_.size() < n) clips_.push_back(std::make_unique<OutlineClip>(*polygon_));
+    }
 
     VerifyReport verify(const Delaunay& dt, double r, const std::vector<std::size_t>* rank, std::size_t fixed) const {
         return verify_pattern(dt, Rectangle(polygon_->bounds()), r, rank, polygon_.get(), fixed);
@@ -54,7 +64,7 @@ public:
 
 private:
     std::shared_ptr<const Polygon> polygon_;
-    std::unique_ptr<OutlineClip> clip_;  // scratch, changed by const queries
+    std::vector<std::unique_ptr<OutlineClip>> clips_;  // one a worker; scratch, changed by const queries
 };
 
 }  // namespace pds

@@ -46,7 +46,8 @@ public:
 
     Box mesh_region() const { return copies_.largest_region(); }
     Box clip_box() const { return copies_.clip_box(); }
-    OutlineClip* outline_clip() const { return nullptr; }
+    OutlineClip* outline_clip(unsigned /*w*/ = 0) const { return nullptr; }
+    void set_workers(unsigned) {}
     const TorusCopies& copies() const { return copies_; }
     bool is_copy(VertexIndex v) const { return is_copy_[v] != 0; }
     // The real vertex v copies (itself if real).
