@@ -61,6 +61,11 @@ public:
         return Cell{runs_[i].lo + (k - before_[i]), runs_[i].row, runs_[i].inside};
     }
     std::size_t runs() const { return runs_.size(); }
+    // Calls fn(row, first column, last column, inside) on each run, by row.
+    template <class Fn>
+    void for_each_run(Fn&& fn) const {
+        for (const Run& run : runs_) fn(run.row, run.lo, run.hi, run.inside);
+    }
 
     // A dart uniform over the runs' cells (requires cells() > 0): a cell,
     // then a point in it; inside when its cell lies wholly inside.

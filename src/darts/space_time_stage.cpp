@@ -10,6 +10,7 @@
 #include "core/prefetch.hpp"
 #include "darts/jones_of_points.hpp"
 #include "darts/space_time_band.hpp"
+#include "darts/sub_square_raster.hpp"
 #include "jones/jones_stage.hpp"
 
 namespace pds {
@@ -37,13 +38,12 @@ enum : std::uint8_t { kUndecided = 0, kAccepted = 1, kRejected = 2 };
 
 }  // namespace
 
-SpaceTimeDartStage::SpaceTimeDartStage(const Rectangle& domain, double radius, std::uint64_t seed)
-    : domain_(domain), r_(radius), seed_(seed), grid_(domain.bounds(), radius) {
+SpaceTimeDartStage::SpaceTimeDartStage(const Rectangle& domain, std::shared_ptr<const Polygon> polygon, double radius,
+                                       std::uint64_t seed)
+    : domain_(domain), polygon_(std::move(polygon)), r_(radius), seed_(seed), grid_(domain.bounds(), radius) {
     curve_ = CurveOrder(domain.bounds(), grid_.side(), grid_.side(), grid_.cols(), grid_.rows());
     const std::size_t cells = grid_.cell_count();
     if (cells >= SpaceTimeGrid::kEpochFlag) throw std::bad_alloc();  // cells are 31-bit ids
-    active_.resize(cells);
-    for (std::size_t c = 0; c < cells; ++c) active_[c] = static_cast<std::uint32_t>(c);
     masks_.assign(cells, 0);
     const Box& box = domain.bounds();
     const std::int64_t last_col = static_cast<std::int64_t>(grid_.cols()) - 1, last_row = static_cast<std::int64_t>(grid_.rows()) - 1;
@@ -51,6 +51,19 @@ SpaceTimeDartStage::SpaceTimeDartStage(const Rectangle& domain, double radius, s
         masks_[static_cast<std::size_t>(row * (last_col + 1) + last_col)] = grid_.outside(last_col, row, box);
     for (std::int64_t col = 0; col <= last_col; ++col)
         masks_[static_cast<std::size_t>(last_row * (last_col + 1) + col)] |= grid_.outside(col, last_row, box);
+    if (polygon_) {
+        inside_.assign(cells, 0);
+        rastered_ = classify_sub_squares(*polygon_, box.x0, box.y0, grid_.side(), grid_.cols(), grid_.rows(), masks_,
+                                         inside_);
+        if (!rastered_) return;
+    }
+    // The active cells: those with a sub-square in the domain.
+    std::size_t active = 0;
+    for (std::size_t c = 0; c < cells; ++c) active += masks_[c] != SpaceTimeGrid::kAllCovered;
+    active_.resize(active);
+    active = 0;
+    for (std::size_t c = 0; c < cells; ++c)
+        if (masks_[c] != SpaceTimeGrid::kAllCovered) active_[active++] = static_cast<std::uint32_t>(c);
 }
 
 SpaceTimeDartStage::~SpaceTimeDartStage() = default;
@@ -179,9 +192,12 @@ void SpaceTimeDartStage::draw(Band& band) {
             const double t = stream.next_double();
             const double u = stream.next_double(), v = stream.next_double();
             const Point p{grid_.cell_x0(col) + u * side, grid_.cell_y0(row) + v * side};
+            // A dart in a sub-square known covered is covered; one known
+            // outside the domain is outside.
+            const unsigned sub = SpaceTimeGrid::sub_square(u, v);
+            if (mask >> sub & 1u) continue;
             if (!domain_.contains(p)) continue;
-            // A dart in a sub-square known covered is covered.
-            if (mask >> SpaceTimeGrid::sub_square(u, v) & 1u) continue;
+            if (polygon_ && !(inside_[cell] >> sub & 1u) && !polygon_->contains(p)) continue;
             // Only the earlier epochs' points are in the grid now, numbered.
             const SpaceTimeGrid::Aim a = grid_.aim_in(p, col, row);  // an active cell holds no point
             const auto covers = [&](int di, int dj) {
@@ -299,6 +315,7 @@ void SpaceTimeDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {
     std::vector<Band>().swap(bands_);
     std::vector<std::uint32_t>().swap(active_);
     std::vector<std::uint16_t>().swap(masks_);
+    std::vector<std::uint16_t>().swap(inside_);
     std::vector<Point>().swap(pending_);
     next_pending_ = 0;
     const std::uint32_t* order = curve_.order(points_, threads_);
@@ -308,11 +325,11 @@ void SpaceTimeDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {
 }
 
 double SpaceTimeDartStage::free_area() const {
-    return jones_of_points(domain_, nullptr, r_, Torus{}, nullptr, points_, nullptr, curve_)->free_area();
+    return jones_of_points(domain_, polygon_, r_, Torus{}, nullptr, points_, nullptr, curve_)->free_area();
 }
 
 VerifyReport SpaceTimeDartStage::verify() const {
-    return jones_of_points(domain_, nullptr, r_, Torus{}, nullptr, points_, nullptr, curve_)->verify();
+    return jones_of_points(domain_, polygon_, r_, Torus{}, nullptr, points_, nullptr, curve_)->verify();
 }
 
 }  // namespace pds

@@ -9,7 +9,8 @@
 // in epoch e (times in [e, e+1)) come from its own stream (space_time_stream.hpp)
 // keyed by (seed, cell, e): the set of darts is fixed by the seed alone.
 //
-// The points. A dart becomes a point iff it lies in the domain and no earlier
+// The points. A dart becomes a point iff it lies in the domain (a rectangle,
+// or a polygon: sub_square_raster.hpp says which sub-squares need no test) and no earlier
 // point lies within R: greedy independent set in order of time. Conditioned
 // on the points before it, the next point is uniform over the free region:
 // random sequential adsorption, the Jones loop's law. A cell certified
@@ -48,14 +49,17 @@
 #include "darts/opening_stage.hpp"
 #include "darts/space_time_grid.hpp"
 #include "core/space_time_stream.hpp"
+#include "domain/polygon.hpp"
 #include "domain/rectangle.hpp"
 
 namespace pds {
 
 class SpaceTimeDartStage final : public OpeningStage {
 public:
-    // The domain and R in the internal frame; throws std::bad_alloc.
-    SpaceTimeDartStage(const Rectangle& domain, double radius, std::uint64_t seed);
+    // The domain and R in the internal frame; polygon: a polygonal domain
+    // inside the rectangle, or nullptr. Throws std::bad_alloc.
+    SpaceTimeDartStage(const Rectangle& domain, std::shared_ptr<const Polygon> polygon, double radius,
+                       std::uint64_t seed);
     ~SpaceTimeDartStage() override;
 
     void set_threads(unsigned n) override { threads_ = n == 0 ? 1 : n; }
@@ -70,6 +74,10 @@ public:
     void add_next() override { points_.push_back(pending_[next_pending_++]); }
     double free_area() const override;
     VerifyReport verify() const override;
+
+    // False when the polygon's outline was too costly to raster over the
+    // sub-squares (sub_square_raster.hpp): the stage must not be used.
+    bool outline_rastered() const { return rastered_; }
 
     // For tests and bench/phases.cpp.
     std::size_t epochs() const { return epoch_; }
@@ -101,6 +109,7 @@ private:
     }
 
     Rectangle domain_;
+    std::shared_ptr<const Polygon> polygon_;
     double r_;
     std::uint64_t seed_;
     SpaceTimeGrid grid_;
@@ -108,12 +117,14 @@ private:
     unsigned threads_ = 1;
     std::vector<Band> bands_;
     std::vector<std::uint32_t> active_;  // active cells, in increasing order
-    std::vector<std::uint16_t> masks_;   // each cell's sub-squares known covered (one disk each)
+    std::vector<std::uint16_t> masks_;   // each cell's sub-squares known covered (one disk each) or outside
+    std::vector<std::uint16_t> inside_;  // each cell's sub-squares wholly inside the polygon (none without)
     std::vector<Point> points_;          // handed out
     std::vector<Point> pending_;         // the last epoch's points, by time
     std::size_t pending_base_ = 0, next_pending_ = 0;
     std::size_t epoch_ = 0;
     bool over_ = false;
+    bool rastered_ = true;
 };
 
 }  // namespace pds

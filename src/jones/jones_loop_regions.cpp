@@ -18,10 +18,12 @@
 namespace pds {
 
 namespace {
-// The plane's one-radius cells only: measured side by side, no copies, no
-// outline (the parallel opening runs in a plain rectangle alone).
+// One radius, in a rectangle or a polygon: cells measured side by side (a
+// polygon's with each worker's own cutter), and no copies (the parallel
+// opening does not run on the torus).
 template <class Space, class Rule>
-constexpr bool kCarriesDarts = std::is_same_v<Space, PlaneSpace>&& std::is_same_v<Rule, OneRadius>;
+constexpr bool kCarriesDarts =
+    (std::is_same_v<Space, PlaneSpace> || std::is_same_v<Space, PolygonSpace>)&&std::is_same_v<Rule, OneRadius>;
 }  // namespace
 
 template <class Space, class Rule>
@@ -87,7 +89,6 @@ bool JonesLoop<Space, Rule>::draw_region_epoch() {
     const double dt = regions_.darts_per_cell() * static_cast<double>(kept) / total;
     const std::size_t nblocks = (kept + RegionDarts::kBlock - 1) / RegionDarts::kBlock;
     std::vector<RegionDarts::Block>& blocks = regions_.blocks(nblocks);
-    const MeshCells cells = this->cells();
     // Blocks are taken in turn by whichever worker is free; each writes its
     // own block, so the joined lists do not depend on who drew them.
     WorkerPool pool(nblocks > 1 ? threads_ : 1);
@@ -102,7 +103,7 @@ bool JonesLoop<Space, Rule>::draw_region_epoch() {
             tree_.populate_for(tree_.size() + ahead);
         }
         for (std::size_t b; (b = next_block.fetch_add(1, std::memory_order_relaxed)) < nblocks;)
-            draw_region_block(cells, b, dt, blocks[b]);
+            draw_region_block(cells_of(w), b, dt, blocks[b]);
     });
     regions_.decide_and_commit(nblocks, r_, [&](SiteIndex site, double w) { tree_.set_leaf_only(site, w); });
     return true;
@@ -171,6 +172,20 @@ void JonesLoop<Space, Rule>::draw_in_region(const MeshCells& cells, SiteIndex si
             // own draws settle such a cell (and count it) at the end.
             if (!sel.fallback()) continue;
         }
+        // A cell the outline cuts is drawn as the loop's own draws draw it
+        // (jones_loop.cpp): from its region's trapezoids once the loop has
+        // turned to them, kept iff the target falls in the free area; else
+        // from its pieces with no retry, a refused draw losing the dart.
+        if (region_draws_ && cells.cut()) {
+            const CellMeasure m = cells.measure(vx);
+            const double free = m.free() > 0.0 ? m.free() : (m.area > 0.0 ? m.floor : 0.0);
+            weight = std::min(weight, free);
+            exact = true;
+            Point p;
+            if (target < free && cells.draw_in_cut_cell(vx, free, rng, [&](const Point& x) { return acceptable(x, vx); }, &p))
+                out.darts.push_back(RegionDarts::Dart{p, rng.next_double(), vx});
+            continue;
+        }
         Point chosen{0.0, 0.0};
         const auto accept = [&](const Point& x, const Piece& piece) {
             chosen = space_.snap(x);
@@ -178,10 +193,12 @@ void JonesLoop<Space, Rule>::draw_in_region(const MeshCells& cells, SiteIndex si
         };
         Point drawn;
         const double piece_u = rng.next_double();
-        if (sample_chunk(q, sel.chunk(), piece_u, rng, accept, kMaxDraws, &drawn, true) == SampleOutcome::placed)
+        const bool retry = !cells.cut();
+        if (sample_chunk(q, sel.chunk(), piece_u, rng, accept, kMaxDraws, &drawn, retry) == SampleOutcome::placed)
             out.darts.push_back(RegionDarts::Dart{chosen, rng.next_double(), vx});
-        // else: 64 refused draws in a healthy piece (never seen); the
-        // dart is lost, and the loop's own draws settle such a cell.
+        // else: a refused draw in a cut cell, or 64 in a healthy piece
+        // (never seen); the dart is lost, and the loop's own draws settle
+        // a cell that keeps losing them.
     }
     if (weight < bound) out.bounds.push_back(RegionDarts::Bound{site, weight});
 }

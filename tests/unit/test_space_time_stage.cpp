@@ -122,7 +122,7 @@ START_TEST(epochs_keep_points_apart_and_carry_most_of_the_pattern) {
     const pds::Rectangle domain(pds::Box{0, 0, 1, 1});
     const double r = 0.004;
     for (unsigned threads : {1u, 3u}) {
-        pds::SpaceTimeDartStage stage(domain, r, 9);
+        pds::SpaceTimeDartStage stage(domain, nullptr, r, 9);
         stage.set_threads(threads);
         stage.reserve(80000);
         pds::Rng unused(0);
