@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/space_time_stream.hpp"
+
 namespace pds {
 
 Sampler::Sampler(double radius, std::uint64_t seed)
@@ -111,6 +113,11 @@ void Sampler::skip_dart_stage() {
     skip_darts_ = true;
 }
 
+void Sampler::carry_region_darts_from_start() {
+    skip_dart_stage();
+    region_darts_from_start_ = true;
+}
+
 void Sampler::draw_cut_cells_by_region() {
     if (count() != 0) throw std::logic_error("draw_cut_cells_by_region after the first point");
     forget_stages();
@@ -165,6 +172,7 @@ void Sampler::prepare(std::size_t points) {
         const std::size_t fixed = has_fixed() ? adopt_fixed(*jones, points) : 0;
         if (region_draws_) jones->draw_cut_cells_by_region();
         if (region_darts_per_cell_ > 0.0) jones->set_region_darts_per_cell(region_darts_per_cell_);
+        if (region_darts_from_start_) jones->carry_darts(SpaceTimeStream::salted(seed_), 0);
         jones_ = std::move(jones);
         darts_ = std::move(darts);
         adopted_fixed_ = fixed;

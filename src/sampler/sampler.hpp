@@ -131,6 +131,10 @@ public:
     // Epochs of the free regions' darts of another mean length
     // (JonesStage::set_region_darts_per_cell); requires count() == 0.
     void set_region_darts_per_cell(double mean) { region_darts_per_cell_ = mean; }
+    // No opening: the free regions' dart process from the second point on,
+    // as after the parallel opening's hand-over (JonesStage::carry_darts);
+    // requires count() == 0.
+    void carry_region_darts_from_start();
     bool in_dart_stage() const { return darts_ != nullptr || (!started() && use_darts()); }
     const Frame& frame() const { return frame_; }
     // The Jones stage; requires a point to have been added.
@@ -197,6 +201,7 @@ private:
     bool skip_darts_ = false;
     bool region_draws_ = false;  // draw_cut_cells_by_region()
     double region_darts_per_cell_ = 0.0;  // set_region_darts_per_cell(); 0: the default
+    bool region_darts_from_start_ = false;  // carry_region_darts_from_start()
     unsigned threads_ = 1;
     bool parallel_ = false;  // set_threads was called: the space-time opening
     std::size_t count_target_ = 0;

@@ -13,7 +13,8 @@
  * two-sample Kolmogorov-Smirnov test (scaled statistic < 1.95, ~1e-3), as
  * the unit tests' law_compare.hpp does. Every pattern on both sides must be
  * maximal by region_covered (coverage.c), which is itself shown to fail on
- * patterns with one point removed.
+ * patterns with one point removed. The same on 1, 2 and 3 threads (the
+ * parallel process). PDS_LAW_PRINT=1 prints the statistics.
  *
  * Measured (1.4.0): N 53.446 against 53.425 (z 0.33), nearest neighbour
  * 0.10637 against 0.10640 (z -0.70), near the outline 37.642 against 37.641
@@ -220,6 +221,10 @@ void law_compare(const law_case *c)
     z[2] = z_score(lib.near, ref.near, runs);
     ks[0] = ks_scaled(lib.count, ref.count, runs);
     ks[1] = ks_scaled(lib.nn, ref.nn, runs);
+    if (getenv("PDS_LAW_PRINT"))
+        printf("%s: N %.3f / %.3f (z %.2f), nn %.5f / %.5f (z %.2f), near %.3f / %.3f (z %.2f), KS %.2f %.2f\n", c->name,
+               mean_of(lib.count, runs), mean_of(ref.count, runs), z[0], mean_of(lib.nn, runs), mean_of(ref.nn, runs),
+               z[1], mean_of(lib.near, runs), mean_of(ref.near, runs), z[2], ks[0], ks[1]);
     ck_assert_msg(fabs(z[0]) < 4.5, "%s: mean N %.3f, reference %.3f (z = %.2f)", c->name,
                   mean_of(lib.count, runs), mean_of(ref.count, runs), z[0]);
     ck_assert_msg(fabs(z[1]) < 4.5, "%s: mean nearest neighbour %.5f, reference %.5f (z = %.2f)",
@@ -235,6 +240,26 @@ void law_compare(const law_case *c)
 
 static const law_case polygon_alone = {"the L alone", NULL, NULL, 0};
 
+/* The parallel process (its opening and the free regions' darts, cut
+ * cells included) on 1, 2 and 3 threads. */
+static void on_1_thread(pds_sampler *s)
+{
+    ck_assert_int_eq(pds_set_threads(s, 1), 0);
+}
+static void on_2_threads(pds_sampler *s)
+{
+    ck_assert_int_eq(pds_set_threads(s, 2), 0);
+}
+static void on_3_threads(pds_sampler *s)
+{
+    ck_assert_int_eq(pds_set_threads(s, 3), 0);
+}
+static const law_case polygon_threads[3] = {
+    {"the L on 1 thread", on_1_thread, NULL, 0},
+    {"the L on 2 threads", on_2_threads, NULL, 0},
+    {"the L on 3 threads", on_3_threads, NULL, 0},
+};
+
 START_TEST(coverage_check_finds_a_removed_point)
 {
     law_removals_found(&polygon_alone, pick(10, 2));
@@ -247,6 +272,12 @@ START_TEST(law_in_the_l)
 }
 END_TEST
 
+START_TEST(law_in_the_l_on_threads)
+{
+    law_compare(&polygon_threads[_i]);
+}
+END_TEST
+
 Suite *domain_law_suite(void)
 {
     Suite *s = suite_create("domain_law");
@@ -254,5 +285,6 @@ Suite *domain_law_suite(void)
     tcase_add_test(tc, coverage_check_finds_a_removed_point);
     tc = new_tcase(s, "random sequential adsorption");
     tcase_add_test(tc, law_in_the_l);
+    tcase_add_loop_test(tc, law_in_the_l_on_threads, 0, 3);
     return s;
 }

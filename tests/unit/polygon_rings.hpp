@@ -28,4 +28,17 @@ inline pds::Polygon rings_of(const std::vector<std::vector<double>>& rings) {
     return pds::Polygon(flat.xy.data(), flat.ends.data(), flat.ends.size());
 }
 
+// The bench's comb: a base 0.1 tall and `teeth` teeth 0.9 long, 0.3 of
+// their period wide.
+inline std::vector<double> comb(int teeth) {
+    const double step = 1.0 / teeth, width = 0.3 / teeth;
+    std::vector<double> xy{0, 0, 1, 0, 1, 0.1};
+    for (int i = teeth - 1; i >= 0; --i) {
+        const double left = i * step, right = left + width;
+        xy.insert(xy.end(), {right, 0.1, right, 1.0, left, 1.0});
+        if (i > 0) xy.insert(xy.end(), {left, 0.1});
+    }
+    return xy;
+}
+
 #endif

@@ -30,19 +30,6 @@ std::vector<double> square(double x0, double y0, double side, bool clockwise) {
     return {ccw[6], ccw[7], ccw[4], ccw[5], ccw[2], ccw[3], ccw[0], ccw[1]};
 }
 
-// The bench's comb: a base 0.1 tall and `teeth` teeth 0.9 long, 0.3 of
-// their period wide.
-std::vector<double> comb(int teeth) {
-    const double step = 1.0 / teeth, width = 0.3 / teeth;
-    std::vector<double> xy{0, 0, 1, 0, 1, 0.1};
-    for (int i = teeth - 1; i >= 0; --i) {
-        const double left = i * step, right = left + width;
-        xy.insert(xy.end(), {right, 0.1, right, 1.0, left, 1.0});
-        if (i > 0) xy.insert(xy.end(), {left, 0.1});
-    }
-    return xy;
-}
-
 START_TEST(a_comb_locates_with_a_finer_index_as_with_its_own) {
     // A triangle traced twice in the base: its edges count in the parity
     // only, which the finer index must know too.
