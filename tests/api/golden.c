@@ -17,13 +17,16 @@
  * for every thread count; re-pinned for 1.6.0, whose hand-over builds the
  * mesh whole (the same mesh, other edge records, so other later draws), and
  * for 1.7.0, whose dart process goes on after the hand-over in the cells'
- * free regions.
+ * free regions. Polygons pinned from 1.8.0 on, whose parallel process runs
+ * in polygons too (before, their threads gave the default process's points,
+ * the first fingerprint below).
  */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "helpers.h"
+#include "region.h"
 #include "suites.h"
 
 struct golden {
@@ -141,6 +144,47 @@ START_TEST(pinned_field_outputs)
 }
 END_TEST
 
+/* The unit L with a hole (shapes.c) at R 0.01, by the default process and
+ * by the parallel one (pds_set_threads), which is the same on 1, 2 and 3
+ * threads, whole and in calls of 97 points. */
+struct golden_polygon {
+    size_t chunk;
+    unsigned threads; /* pds_set_threads(s, threads - 1) first; 0: no call */
+    size_t count;
+    uint64_t hash;
+};
+
+static const struct golden_polygon polygon_cases[] = {
+    {0, 0, 4425, 0x13dfd6af50dd8c00ull},
+    {0, 2, 4425, 0xf5a1a08333968701ull},
+    {97, 3, 4425, 0xf5a1a08333968701ull},
+    {0, 4, 4425, 0xf5a1a08333968701ull},
+};
+
+START_TEST(pinned_polygon_outputs)
+{
+    const struct golden_polygon *g = &polygon_cases[_i];
+    pds_sampler *s = NULL;
+    double *xy;
+    size_t n;
+
+    ck_assert_int_eq(pds_create(&s, 0.01, 3), 0);
+    ck_assert_int_eq(pds_set_polygon(s, UNIT_L.xy, UNIT_L.ends, UNIT_L.nrings), 0);
+    if (g->threads > 0)
+        ck_assert_int_eq(pds_set_threads(s, g->threads - 1), 0);
+    run_all(s, g->chunk);
+    n = pds_count(s);
+    xy = malloc(2 * n * sizeof *xy);
+    ck_assert_ptr_nonnull(xy);
+    ck_assert_uint_eq(pds_points(s, 0, n, xy), n);
+    ck_assert_msg(n == g->count && fingerprint(xy, 2 * n) == g->hash,
+                  "polygon case %d: %zu points, fingerprint 0x%016llx; pinned %zu, 0x%016llx", _i, n,
+                  (unsigned long long)fingerprint(xy, 2 * n), g->count, (unsigned long long)g->hash);
+    free(xy);
+    pds_destroy(s);
+}
+END_TEST
+
 Suite *golden_suite(void)
 {
     Suite *s = suite_create("golden");
@@ -148,6 +192,7 @@ Suite *golden_suite(void)
     tcase_set_timeout(tc, 120);
     tcase_add_loop_test(tc, pinned_outputs, 0, (int)(sizeof cases / sizeof cases[0]));
     tcase_add_loop_test(tc, pinned_field_outputs, 0, (int)(sizeof field_cases / sizeof field_cases[0]));
+    tcase_add_loop_test(tc, pinned_polygon_outputs, 0, (int)(sizeof polygon_cases / sizeof polygon_cases[0]));
     suite_add_tcase(s, tc);
     return s;
 }

@@ -13,8 +13,9 @@
  * at each call.
  *
  * Determinism is checked in every mode a run can be in: the one-radius
- * rectangle (the mode whose dart stage uses the threads), the torus, count
- * mode, a chain of refines, a radius map and a polygon with a hole. Each is
+ * rectangle and the polygon (the modes whose dart stage uses the threads),
+ * the torus, count mode, a chain of refines, a radius map, a polygon with a
+ * hole (one radius, refined, in count mode) and a mask. Each is
  * run once with 1 thread, one pds_run per radius (the reference), then
  *   - with 2, 3, 4, 5 and 8 threads, the same calls;
  *   - split into pds_run calls of 1, 7 and 1000 points in turn, the thread
@@ -63,6 +64,22 @@ static void polygon(pds_sampler *s)
     ck_assert_int_eq(pds_set_polygon(s, xy, ends, 2), 0);
 }
 
+/* A 12 x 9 mask: a disk of pixels with a notch and a lone pixel, on the
+ * box [0,1.5]x[0,1] (pixels 0.125 x 0.111). */
+static void mask(pds_sampler *s)
+{
+    unsigned char inside[12 * 9];
+    size_t i, j;
+    for (j = 0; j < 9; j++)
+        for (i = 0; i < 12; i++) {
+            const double dx = (double)i - 5.5, dy = (double)j - 4.0;
+            inside[j * 12 + i] = dx * dx + dy * dy < 20.0 && !(i == 6 && j < 4);
+        }
+    inside[11] = 1;
+    ck_assert_int_eq(pds_set_domain(s, 0, 0, 1.5, 1), 0);
+    ck_assert_int_eq(pds_set_mask(s, 12, 9, inside), 0);
+}
+
 static const mode modes[] = {
     {"rectangle [0,2]x[0,1]", domain_2x1, {{0.01}, {0.02}}, {0, 0}},
     {"torus", torus, {{0.01}, {0.05}}, {0, 0}},
@@ -70,6 +87,9 @@ static const mode modes[] = {
     {"refine", NULL, {{0.03, 0.02, 0.01}, {0.08, 0.06, 0.04}}, {0, 0}},
     {"radius map", radius_map, {{1.0}, {1.0}}, {0, 0}},
     {"polygon with a hole", polygon, {{0.015}, {0.06}}, {0, 0}},
+    {"polygon, refine", polygon, {{0.03, 0.02}, {0.09, 0.07}}, {0, 0}},
+    {"polygon, pds_set_count", polygon, {{1.0}, {1.0}}, {3000, 1000}},
+    {"mask", mask, {{0.01}, {0.04}}, {0, 0}},
 };
 #define N_MODES (sizeof modes / sizeof modes[0])
 
