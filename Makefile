@@ -464,6 +464,7 @@ check-alloc: $(ALLOC_BIN)
 	$(ALLOC_BIN) mask
 	$(ALLOC_BIN) field
 	$(ALLOC_BIN) threads
+	$(ALLOC_BIN) polygon-threads
 	$(ALLOC_BIN)
 
 # ---- benchmark -----------------------------------------------------------------------

@@ -6,10 +6,11 @@
 #   sh tests/check-cli-threads.sh build/poissondisk
 #
 # The outputs of --threads 1, 2, 4 and 0 (one per core) are compared with
-# cmp, in each mode: the one-radius rectangle (whose dart stage uses the
-# threads), --count, --refine, --periodic, --radius-map and --polygon. Without
-# --threads the one-radius rectangle runs the single-thread process (other
-# points); the other modes run on one thread either way (the same points). Ends with "check-cli-threads: N passed, M failed" and a non-zero
+# cmp, in each mode: the one-radius rectangle, polygon and mask (whose dart
+# stage uses the threads; with --count and --refine too), --periodic and
+# --radius-map. Without --threads the one-radius rectangle, polygon and mask
+# run the single-thread process (other points); the other modes run on one
+# thread either way (the same points). Ends with "check-cli-threads: N passed, M failed" and a non-zero
 # status if anything failed.
 
 set -u
@@ -25,6 +26,8 @@ cli=$program
 # An L-shaped polygon with a square hole, and a 2 x 2 radius map.
 printf '0 0\n2 0\n2 1\n1 1\n1 2\n0 2\n\n0.3 0.3\n0.7 0.3\n0.7 0.7\n0.3 0.7\n' > "$tmp/l.txt"
 printf 'P2\n2 2\n255\n0 255\n128 64\n' > "$tmp/map.pgm"
+# A 6 x 4 mask: dark pixels inside, a notch and a lone pixel.
+printf 'P2\n6 4\n255\n0 0 255 0 0 255\n0 0 0 0 0 255\n0 0 0 0 0 255\n255 0 0 0 255 0\n' > "$tmp/mask.pgm"
 
 # same_for_threads LABEL ARGS...: --threads 1 is the reference; --threads 2,
 # 4 and 0, --threads=4 and no --threads must write the same bytes.
@@ -60,7 +63,11 @@ same_for_threads "one radius: --count 3000" --count 3000 --seed 4
 same_for_threads "one radius: --refine" --radius 0.03 --refine 0.02 --refine 0.01 --seed 5
 same_for_threads "--periodic" --radius 0.01 --periodic --seed 6
 same_for_threads "--radius-map" --radius-map "$tmp/map.pgm" --rmin 0.01 --rmax 0.03 --seed 7
-same_for_threads "--polygon" --polygon "$tmp/l.txt" --radius 0.02 --seed 8
+same_for_threads "one radius: --polygon" --polygon "$tmp/l.txt" --radius 0.02 --seed 8
+same_for_threads "one radius: --polygon --refine" --polygon "$tmp/l.txt" --radius 0.04 --refine 0.02 --seed 9
+same_for_threads "one radius: --polygon --count 2000" --polygon "$tmp/l.txt" --count 2000 --seed 10
+same_for_threads "one radius: --mask" --mask "$tmp/mask.pgm" --domain 0 0 1.5 1 --radius 0.01 --seed 11
+same_for_threads "one radius: --polygon --verify" --polygon "$tmp/l.txt" --radius 0.01 --verify --seed 12
 same_for_threads "one radius: --max-points 5000" --radius 0.01 --max-points 5000 --format bin \
     --output /dev/stdout
 same_for_threads "one radius: --verify" --radius 0.02 --verify

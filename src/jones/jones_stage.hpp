@@ -91,8 +91,8 @@ public:
     virtual void draw_cut_cells_by_region() = 0;
     // After the parallel opening's hand-over: carry its dart process on in
     // the cells' free regions (region_darts.hpp), its streams salted_seed's
-    // from epoch `epoch` on. Only the one-radius rectangle's stage does;
-    // the others ignore it.
+    // from epoch `epoch` on. Only the one-radius stages of the rectangle
+    // and the polygon do; the others ignore it.
     virtual void carry_darts(std::uint64_t /*salted_seed*/, std::size_t /*epoch*/) {}
     virtual const RegionDarts::Stats& region_stats() const = 0;
     // Epochs of another mean length (RegionDarts::set_darts_per_cell): lets

@@ -21,7 +21,8 @@
  * and "field" run the small sequence in a domain users have (1.4): a star
  * with a hole (50 vertices), an 8 x 8 mask, and that star with a radius
  * function; setting the domain (and the field) is one more call whose
- * allocations fail in turn. The default,
+ * allocations fail in turn. "threads" runs the parallel process on 2 threads
+ * in the rectangle, "polygon-threads" in the star. The default,
  * ~7000-point sequence tries every k in calls that make at most 3 * SPAN
  * allocations; in larger ones (pds_verify's exact arithmetic makes tens of
  * thousands) the first SPAN, the last SPAN and SPAN spread evenly in
@@ -62,7 +63,7 @@ struct config {
     int periodic; /* the torus: copies allocate as points are added */
     int shape;    /* the domain: the rectangle, a polygon, a mask, a polygon with a field */
 };
-enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS };
+enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS, POLYGON_THREADS };
 static const struct config kSmall = {"small", 0.05, 0.035, 100, 50, 1, 0, RECTANGLE};
 static const struct config kLarge = {"large", 0.01, 0.007, 2000, 500, 0, 0, RECTANGLE};
 static const struct config kTorus = {"torus", 0.05, 0.035, 100, 50, 1, 1, RECTANGLE};
@@ -76,6 +77,9 @@ static const struct config kField = {"field", 0.06, 0.045, 100, 50, 0, 0, POLYGO
  * allocations made on the worker threads too (a failure there is rethrown
  * in the call; a thread that cannot start is done without). */
 static const struct config kThreads = {"threads", 0.025, 0.02, 300, 100, 0, 0, THREADS};
+/* The same in the star with a hole: its sub-squares rastered, the free
+ * regions' darts drawn by each worker's own outline cutter. */
+static const struct config kPolygonThreads = {"polygon-threads", 0.025, 0.02, 300, 100, 0, 0, POLYGON_THREADS};
 static const struct config *cfg = &kLarge;
 #define RADIUS (cfg->radius)
 #define REFINED (cfg->refined)
@@ -364,10 +368,11 @@ static int set_domain_part(struct trial *t, pds_sampler *s, int part)
 static void do_shape(struct trial *t, pds_sampler *s)
 {
     int rc = 0;
-    if (cfg->shape == POLYGON || cfg->shape == POLYGON_FIELD) rc = set_domain_part(t, s, 0);
+    if (cfg->shape == POLYGON || cfg->shape == POLYGON_FIELD || cfg->shape == POLYGON_THREADS)
+        rc = set_domain_part(t, s, 0);
     if (cfg->shape == MASK) rc = set_domain_part(t, s, 1);
     if (cfg->shape == POLYGON_FIELD && rc == 0) rc = set_domain_part(t, s, 2);
-    if (cfg->shape == THREADS) rc = set_domain_part(t, s, 3);
+    if ((cfg->shape == THREADS || cfg->shape == POLYGON_THREADS) && rc == 0) rc = set_domain_part(t, s, 3);
     outcome(t, s, rc, pds_free_area(s), "pds_set_polygon/mask");
 }
 
@@ -542,11 +547,13 @@ int main(int argc, char **argv)
         cfg = &kField;
     else if (argc > 1 && strcmp(argv[1], "threads") == 0)
         cfg = &kThreads;
+    else if (argc > 1 && strcmp(argv[1], "polygon-threads") == 0)
+        cfg = &kPolygonThreads;
     else if (argc > 1) {
-        printf("usage: alloc_fail [small|torus|polygon|mask|field|threads]\n");
+        printf("usage: alloc_fail [small|torus|polygon|mask|field|threads|polygon-threads]\n");
         return 2;
     }
-    if (cfg->shape == THREADS)
+    if (cfg->shape == THREADS || cfg->shape == POLYGON_THREADS)
         warm_up_threads();
     all = cfg->every_k || (env != NULL && env[0] != '\0' && strcmp(env, "0") != 0);
     printf("alloc-fail: sequence \"%s\": R = %g, refined to %g\n", cfg->name, cfg->radius, cfg->refined);

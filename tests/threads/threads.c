@@ -4,7 +4,8 @@
  *
  * Contract (include/poissondisk.h, DESIGN.md): the library keeps no global
  * state; distinct handles may be used from distinct threads at once. Each of
- * N_THREADS threads runs its own script on its own handle: create, set_domain,
+ * N_THREADS threads runs its own script on its own handle: create, set_domain
+ * (then, for two of them, a polygon with a hole),
  * a bounded run, free_area in the middle of the run, run to the end, refine,
  * run to the end, count/radius/points, verify, free_area, a refused call and
  * its message, destroy. In between it calls the global functions (pds_strerror,
@@ -42,13 +43,14 @@ struct script {
     double x0, y0, x1, y1;  /* the domain */
     size_t first_chunk;     /* max_new of the first, bounded run */
     unsigned threads[2];    /* run at once: its own threads, then after the first run */
+    int polygon;            /* an octagon with a square hole inside the domain */
 };
 
 static const struct script scripts[N_THREADS] = {
-    {1, 0.020, 0.012, 0.0, 0.0, 1.0, 1.0, 100, {1, 2}},
-    {0x9E3779B97F4A7C15u, 0.030, 0.020, -3.0, 10.0, 1.0, 11.0, 1, {2, 1}},
-    {42, 0.004, 0.0035, 0.0, 0.0, 2.0, 0.5, 2000, {3, 0}}, /* several blocks of free cells */
-    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500, {0, 4}},
+    {1, 0.020, 0.012, 0.0, 0.0, 1.0, 1.0, 100, {1, 2}, 0},
+    {0x9E3779B97F4A7C15u, 0.030, 0.020, -3.0, 10.0, 1.0, 11.0, 1, {2, 1}, 1},
+    {42, 0.004, 0.0035, 0.0, 0.0, 2.0, 0.5, 2000, {3, 0}, 1}, /* several blocks of free cells */
+    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500, {0, 4}, 0},
 };
 
 /* A growable byte buffer: everything the calls of one script returned. */
@@ -107,6 +109,28 @@ struct summary {
     double free_area;
 };
 
+/* An octagon with a square hole, centred in sc's domain: outline cells cut
+ * at every angle, for the workers' own outline cutters. */
+static int set_octagon(pds_sampler *s, const struct script *sc)
+{
+    static const double unit[16] = {1, 0.4, 0.4, 1, -0.4, 1, -1, 0.4, -1, -0.4, -0.4, -1, 0.4, -1, 1, -0.4};
+    static const double hole[8] = {-0.2, -0.2, -0.2, 0.2, 0.2, 0.2, 0.2, -0.2};
+    const double cx = (sc->x0 + sc->x1) / 2, cy = (sc->y0 + sc->y1) / 2;
+    const double hx = 0.48 * (sc->x1 - sc->x0), hy = 0.48 * (sc->y1 - sc->y0);
+    const size_t ends[2] = {8, 12};
+    double xy[24];
+    int k;
+    for (k = 0; k < 8; k++) {
+        xy[2 * k] = cx + hx * unit[2 * k];
+        xy[2 * k + 1] = cy + hy * unit[2 * k + 1];
+    }
+    for (k = 0; k < 4; k++) {
+        xy[16 + 2 * k] = cx + hx * hole[2 * k];
+        xy[16 + 2 * k + 1] = cy + hy * hole[2 * k + 1];
+    }
+    return pds_set_polygon(s, xy, ends, 2);
+}
+
 /* alone: on one thread throughout, the reference; else sc->threads. */
 static void run_script(const struct script *sc, int alone, struct transcript *t,
                        struct summary *sum)
@@ -124,6 +148,10 @@ static void run_script(const struct script *sc, int alone, struct transcript *t,
     put_globals(t);
     sum->set_domain = rc = pds_set_domain(s, sc->x0, sc->y0, sc->x1, sc->y1);
     put_int(t, rc);
+    if (sc->polygon && rc == 0) {
+        sum->set_domain = rc = set_octagon(s, sc);
+        put_int(t, rc);
+    }
     put_int(t, pds_set_threads(s, alone ? 1 : sc->threads[0]));
     rc = pds_run(s, sc->first_chunk, &added);
     put_int(t, rc);
