@@ -1,8 +1,9 @@
 """threads= (library 1.5): None (the default) never calls pds_set_threads and
 runs the single-thread process; an int selects the parallel process, whose
 points depend on the seed and settings but never on the count, byte for byte.
-Only the one-radius rectangle has a parallel process: the other domains give
-the same points either way."""
+The one-radius rectangle, polygon and mask (library 1.8 for the last two),
+with count or refine too, have a parallel process; the torus, radius maps and
+fixed points run on one thread and give the same points either way."""
 
 import copy
 import pickle
@@ -20,19 +21,29 @@ except ImportError:  # no numpy: the drop-in cannot load
 Sampler = poissondisk.Sampler
 COUNTS = (2, 3, 8)
 
-# The modes, as Sampler arguments: the rectangle whose dart stage uses the
-# threads, with count and refine too, then the torus and a polygon with a hole.
+# The modes, as Sampler arguments: the rectangle, a polygon with a hole and a
+# mask with a hole, whose dart stages use the threads, with count too; then
+# the torus, a radius map and fixed points, which run on one thread.
 L_SHAPE = [[(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)],
            [(0.3, 0.3), (0.7, 0.3), (0.7, 0.7), (0.3, 0.7)]]
+MASK = [[True] * 4 + [False] * 4,  # row 0 along y1: a ring over a bar
+        [True, False, False, True] + [False] * 4,
+        [True] * 8,
+        [True] * 8]
+MASK_BOX = ((0, 0), (2, 1))
 PARALLEL = {  # the modes with a parallel process of their own
     "rectangle": dict(radius=0.01, bounds=((0, 0), (2, 1))),
     "unit square": dict(radius=0.01),
     "count": dict(radius=None, count=3000),
+    "polygon": dict(radius=0.02, domain=L_SHAPE),
+    "polygon with count": dict(radius=None, count=3000, domain=L_SHAPE),
+    "mask": dict(radius=0.02, mask=MASK, bounds=MASK_BOX),
 }
 ONE_THREAD = {  # the modes that run on one thread whatever was asked
     "torus": dict(radius=0.01, periodic=True),
-    "polygon": dict(radius=0.02, domain=L_SHAPE),
     "radius map": dict(radius=None, radius_map=[[0.01, 0.02, 0.03], [0.02, 0.03, 0.02]]),
+    "polygon with fixed points": dict(radius=0.02, domain=L_SHAPE,
+                                      fixed=[(0.15, 0.15), (1.5, 0.5)]),
 }
 MODES = dict(PARALLEL, **ONE_THREAD)
 
@@ -71,6 +82,11 @@ class ThreadsCase(TestCase):
             got, ref = got[0], ref[0]
         diff = first_difference(got, ref)
         self.assertIsNone(diff, "%s: %s" % (what, diff))
+
+    def assertOtherPattern(self, got, ref, what):
+        """got and ref: bytes of points that must differ (told apart without
+        a repr of either: they are long)."""
+        self.assertIsNotNone(first_difference(got, ref), "%s: the same points" % what)
 
 
 class ArgumentsTest(ThreadsCase):
@@ -159,17 +175,21 @@ class SamePointsTest(ThreadsCase):
     def test_default_is_the_single_thread_process(self):
         for name, kw in PARALLEL.items():
             default, parallel = pattern(3, None, **kw), pattern(3, 1, **kw)
-            self.assertNotEqual(default[0], parallel[0],
-                                "%s: threads=None against threads=1" % name)
+            self.assertOtherPattern(default[0], parallel[0],
+                                    "%s: threads=None against threads=1" % name)
         for name, kw in ONE_THREAD.items():
             self.assertSamePattern(pattern(3, None, **kw), pattern(3, 2, **kw),
                                    "%s: threads=None against threads=2" % name)
 
     def test_refine(self):
-        ref = pattern(4, 1, radius=0.03, refine=(0.02, 0.01))
-        for t in COUNTS:
-            self.assertSamePattern(pattern(4, t, radius=0.03, refine=(0.02, 0.01)), ref,
-                                   "refine: %d threads" % t)
+        for name, kw in (("rectangle", dict(radius=0.03, refine=(0.02, 0.01))),
+                         ("polygon", dict(radius=0.06, domain=L_SHAPE, refine=(0.04, 0.02)))):
+            ref = pattern(4, 1, **kw)
+            for t in COUNTS:
+                self.assertSamePattern(pattern(4, t, **kw), ref,
+                                       "%s refined: %d threads" % (name, t))
+            self.assertOtherPattern(pattern(4, None, **kw)[0], ref[0],
+                                    "%s refined: threads=None against threads=1" % name)
 
     def test_split_runs_changing_the_count(self):
         ref = pattern(5, 1, radius=0.01, bounds=((0, 0), (2, 1)))

@@ -1,12 +1,14 @@
 // The threads option: undefined (the default) never calls pds_set_threads and
 // runs the single-thread process; a number selects the parallel process, whose
 // points depend on the seed and settings but never on the count (the
-// WebAssembly build has one thread, so not the speed either). The native CLI's
-// points at --threads 4 are the same bytes.
+// WebAssembly build has one thread, so not the speed either). The one-radius
+// rectangle, polygon and mask have that process; the torus and fixed points run
+// on one thread either way. The native CLI's points at --threads 4 are the
+// same bytes.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { Sampler, StateError, poissonDisk } from '../src/index.js';
-import { bytesOf, cliPoints } from './cli.js';
+import { bytesOf, cliPoints, writePgm, writePolygon } from './cli.js';
 
 function sameBytes(actual, expected, what) {
   const a = bytesOf(actual);
@@ -17,21 +19,31 @@ function sameBytes(actual, expected, what) {
   assert.equal(first, -1, `${what}: first differing byte at ${first} (point ${Math.floor(first / 16)})`);
 }
 
+// An L with a square hole, and a mask (row 0 at the top) of a ring over a bar.
+const L_SHAPE = [[[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]],
+  [[0.3, 0.3], [0.7, 0.3], [0.7, 0.7], [0.3, 0.7]]];
+const MASK = [[1, 1, 1, 1, 0, 0, 0, 0], [1, 0, 0, 1, 0, 0, 0, 0], [1, 1, 1, 1, 1, 1, 1, 1], [1, 1, 1, 1, 1, 1, 1, 1]];
 const PARALLEL = {  // the modes with a parallel process of their own
   rectangle: [0.01, { bounds: [0, 0, 2, 1] }],
   'unit square': [0.01, {}],
   count: [null, { count: 3000 }],
+  polygon: [0.02, { polygon: L_SHAPE }],
+  'polygon with count': [null, { polygon: L_SHAPE, count: 3000 }],
+  mask: [0.02, { mask: MASK, bounds: [0, 0, 2, 1] }],
 };
 const ONE_THREAD = {  // the modes that run on one thread whatever was asked
   torus: [0.01, { periodic: true }],
-  polygon: [0.02, { polygon: [[[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]]] }],
+  'polygon with fixed points': [0.02, { polygon: L_SHAPE, fixed: [[0.15, 0.15], [1.5, 0.5]] }],
 };
 
-test('threads 1 and 4 give the same points; no threads option gives the single-thread process', async () => {
+test('threads 1, 2, 4 and 8 give the same points; no threads option gives the single-thread process', async () => {
   for (const [name, [radius, options]] of Object.entries({ ...PARALLEL, ...ONE_THREAD })) {
     const one = await poissonDisk(radius, { ...options, seed: 3, threads: 1 });
-    const four = await poissonDisk(radius, { ...options, seed: 3, threads: 4 });
-    sameBytes(four, one, `${name}: threads 4 against 1`);
+    assert.ok(one.length / 2 > 1000, `${name}: ${one.length / 2} points`);
+    for (const threads of [2, 4, 8]) {
+      const other = await poissonDisk(radius, { ...options, seed: 3, threads });
+      sameBytes(other, one, `${name}: threads ${threads} against 1`);
+    }
     const single = await poissonDisk(radius, { ...options, seed: 3 });
     if (name in PARALLEL) {
       assert.notDeepEqual(bytesOf(single), bytesOf(one), `${name}: the default against threads 1`);
@@ -45,6 +57,24 @@ test('threads 1 and 4 give the same points; no threads option gives the single-t
   sameBytes(await poissonDisk(0.01, { seed: 3, bounds: [0, 0, 2, 1] }),
     cliPoints(['--radius', '0.01', '--seed', '3', '--domain', '0', '0', '2', '1']),
     'no threads against the native CLI without --threads');
+});
+
+test('polygon and mask: threads 4 against the native CLI at --threads 4, and without threads', async () => {
+  const polygon = writePolygon(L_SHAPE);
+  sameBytes(await poissonDisk(0.02, { seed: 3, polygon: L_SHAPE, threads: 4 }),
+    cliPoints(['--polygon', polygon, '--radius', '0.02', '--seed', '3', '--threads', '4']),
+    'polygon: threads 4 against the native CLI at --threads 4');
+  sameBytes(await poissonDisk(0.02, { seed: 3, polygon: L_SHAPE }),
+    cliPoints(['--polygon', polygon, '--radius', '0.02', '--seed', '3']),
+    'polygon: no threads against the native CLI without --threads');
+  // The PGM's dark pixels are the mask's, top row first as the rows are.
+  const mask = writePgm(MASK[0].length, MASK.length, MASK.flat().map((v) => (v ? 0 : 255)));
+  sameBytes(await poissonDisk(0.02, { seed: 3, mask: MASK, bounds: [0, 0, 2, 1], threads: 4 }),
+    cliPoints(['--mask', mask, '--domain', '0', '0', '2', '1', '--radius', '0.02', '--seed', '3', '--threads', '4']),
+    'mask: threads 4 against the native CLI at --threads 4');
+  sameBytes(await poissonDisk(0.02, { seed: 3, mask: MASK, bounds: [0, 0, 2, 1] }),
+    cliPoints(['--mask', mask, '--domain', '0', '0', '2', '1', '--radius', '0.02', '--seed', '3']),
+    'mask: no threads against the native CLI without --threads');
 });
 
 test('the count reads back and may change between runs', async () => {
