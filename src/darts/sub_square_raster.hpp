@@ -23,7 +23,8 @@ namespace pds {
 // The grid: corner (x0, y0), square cells of side `side`, cols by rows;
 // bit 4 b + a of a cell's mask is its sub-square in column a, row b. Cell
 // col + row * cols gets outside[...] |= the sub-squares wholly outside and
-// inside[...] = those wholly inside (both sized cols * rows by the caller).
+// inside[...] = those wholly inside (both sized cols * rows by the caller,
+// inside all zeros).
 // False, and nothing written, when the raster would cost more than its
 // budget (raster_band_budget): then the caller tests every dart instead.
 // May throw std::bad_alloc.
