@@ -78,12 +78,25 @@ static void run_all(pds_sampler *s, size_t chunk)
     ck_assert_int_eq(rc, 0);
 }
 
+/* s's points against a pinned count and fingerprint; destroys s. */
+static void assert_pinned(pds_sampler *s, size_t count, uint64_t hash, const char *what, int i)
+{
+    const size_t n = pds_count(s);
+    double *xy = malloc(2 * n * sizeof *xy + 1);
+
+    ck_assert_ptr_nonnull(xy);
+    ck_assert_uint_eq(pds_points(s, 0, n, xy), n);
+    ck_assert_msg(n == count && fingerprint(xy, 2 * n) == hash,
+                  "%s %d: %zu points, fingerprint 0x%016llx; pinned %zu, 0x%016llx", what, i, n,
+                  (unsigned long long)fingerprint(xy, 2 * n), count, (unsigned long long)hash);
+    free(xy);
+    pds_destroy(s);
+}
+
 START_TEST(pinned_outputs)
 {
     const struct golden *g = &cases[_i];
     pds_sampler *s = NULL;
-    double *xy;
-    size_t n;
 
     ck_assert_int_eq(pds_create(&s, g->radius, g->seed), 0);
     if (g->rectangle)
@@ -95,15 +108,7 @@ START_TEST(pinned_outputs)
         ck_assert_int_eq(pds_refine(s, g->refine), 0);
         run_all(s, g->chunk);
     }
-    n = pds_count(s);
-    xy = malloc(2 * n * sizeof *xy);
-    ck_assert_ptr_nonnull(xy);
-    ck_assert_uint_eq(pds_points(s, 0, n, xy), n);
-    ck_assert_msg(n == g->count && fingerprint(xy, 2 * n) == g->hash,
-                  "case %d: %zu points, fingerprint 0x%016llx; pinned %zu, 0x%016llx", _i, n,
-                  (unsigned long long)fingerprint(xy, 2 * n), g->count, (unsigned long long)g->hash);
-    free(xy);
-    pds_destroy(s);
+    assert_pinned(s, g->count, g->hash, "case", _i);
 }
 END_TEST
 
@@ -125,22 +130,12 @@ START_TEST(pinned_field_outputs)
     static const double map[12] = {0.01, 0.012, 0.015, 0.02, 0.013, 0.017, 0.022, 0.027, 0.016, 0.021, 0.026, 0.03};
     const struct golden_field *g = &field_cases[_i];
     pds_sampler *s = NULL;
-    double *xy;
-    size_t n;
 
     ck_assert_int_eq(pds_create(&s, 0.03, 5), 0);
     ck_assert_int_eq(pds_set_domain(s, -1.0, 3.0, 2.0, 4.5), 0);
     ck_assert_int_eq(pds_set_radius_map(s, 4, 3, map), 0);
     run_all(s, g->chunk);
-    n = pds_count(s);
-    xy = malloc(2 * n * sizeof *xy);
-    ck_assert_ptr_nonnull(xy);
-    ck_assert_uint_eq(pds_points(s, 0, n, xy), n);
-    ck_assert_msg(n == g->count && fingerprint(xy, 2 * n) == g->hash,
-                  "field case %d: %zu points, fingerprint 0x%016llx; pinned %zu, 0x%016llx", _i, n,
-                  (unsigned long long)fingerprint(xy, 2 * n), g->count, (unsigned long long)g->hash);
-    free(xy);
-    pds_destroy(s);
+    assert_pinned(s, g->count, g->hash, "field case", _i);
 }
 END_TEST
 
@@ -165,23 +160,13 @@ START_TEST(pinned_polygon_outputs)
 {
     const struct golden_polygon *g = &polygon_cases[_i];
     pds_sampler *s = NULL;
-    double *xy;
-    size_t n;
 
     ck_assert_int_eq(pds_create(&s, 0.01, 3), 0);
     ck_assert_int_eq(pds_set_polygon(s, UNIT_L.xy, UNIT_L.ends, UNIT_L.nrings), 0);
     if (g->threads > 0)
         ck_assert_int_eq(pds_set_threads(s, g->threads - 1), 0);
     run_all(s, g->chunk);
-    n = pds_count(s);
-    xy = malloc(2 * n * sizeof *xy);
-    ck_assert_ptr_nonnull(xy);
-    ck_assert_uint_eq(pds_points(s, 0, n, xy), n);
-    ck_assert_msg(n == g->count && fingerprint(xy, 2 * n) == g->hash,
-                  "polygon case %d: %zu points, fingerprint 0x%016llx; pinned %zu, 0x%016llx", _i, n,
-                  (unsigned long long)fingerprint(xy, 2 * n), g->count, (unsigned long long)g->hash);
-    free(xy);
-    pds_destroy(s);
+    assert_pinned(s, g->count, g->hash, "polygon case", _i);
 }
 END_TEST
 

@@ -19,6 +19,7 @@
 #include "polygon_rings.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
+#include "threaded_runs.hpp"
 
 namespace {
 
@@ -46,37 +47,14 @@ std::vector<std::vector<double>> notched_l() {
     return {{0, 0, 1.2, 0, 1.2, 0.5, 0.5, 0.5, 0.5, 1, 0.3, 1, 0.3, 0.8, 0, 0.8}};
 }
 
-struct Run {
-    std::vector<double> xy;
-};
+using Run = ThreadedRun;
 
-// A sampler in `rings` with the parallel opening on `threads` threads, run
-// in calls of `chunk` points (0: one call), `threads_later` threads from
-// the second call; the pattern must end maximal and verified.
+// A sampler in `rings` with the parallel opening (threaded_runs.hpp).
 Run run(const std::vector<std::vector<double>>& rings, double r, std::uint64_t seed, unsigned threads,
         std::size_t chunk = 0, unsigned threads_later = 0) {
     pds::Sampler s(r, seed);
     s.set_polygon(std::make_shared<const Polygon>(rings_of(rings)));
-    s.set_threads(threads);
-    bool first = true;
-    for (;;) {
-        std::size_t added = 0;
-        const pds::Sampler::RunEnd end = s.run(chunk, &added);
-        if (first && threads_later != 0) s.set_threads(threads_later);
-        first = false;
-        if (end == pds::Sampler::RunEnd::complete) break;
-    }
-    Run out;
-    out.xy.resize(2 * s.count());
-    s.copy_points(0, s.count(), out.xy.data());
-    const pds::VerifyReport rep = s.verify();
-    ck_assert_msg(rep.failure.empty() && rep.maximal, "verify: %s", rep.failure.c_str());
-    return out;
-}
-
-void assert_same(const Run& a, const Run& b, const char* what) {
-    ck_assert_msg(a.xy.size() == b.xy.size(), "%s: %zu points against %zu", what, a.xy.size() / 2, b.xy.size() / 2);
-    ck_assert_msg(std::memcmp(a.xy.data(), b.xy.data(), a.xy.size() * sizeof(double)) == 0, "%s: other points", what);
+    return run_threaded(s, threads, chunk, threads_later);
 }
 
 }  // namespace
@@ -146,22 +124,9 @@ START_TEST(epochs_keep_points_inside_and_apart) {
         while (stage.next(unused) != nullptr) stage.add_next();
         const std::vector<Point>& p = stage.points();
         ck_assert_msg(p.size() > 7500, "the stage placed only %zu points (of about 11500)", p.size());
-        const double side = r;
-        const auto cols = static_cast<std::size_t>(1.0 / side) + 1;
-        std::vector<std::vector<std::uint32_t>> cells(cols * cols);
-        for (std::uint32_t i = 0; i < p.size(); ++i) {
+        for (std::uint32_t i = 0; i < p.size(); ++i)
             if (!polygon.contains(p[i])) ck_abort_msg("point %u outside the polygon", i);
-            cells[static_cast<std::size_t>(p[i].y / side) * cols + static_cast<std::size_t>(p[i].x / side)].push_back(i);
-        }
-        for (std::uint32_t i = 0; i < p.size(); ++i) {
-            const auto cx = static_cast<long>(p[i].x / side), cy = static_cast<long>(p[i].y / side);
-            for (long y = cy - 1; y <= cy + 1; ++y)
-                for (long x = cx - 1; x <= cx + 1; ++x) {
-                    if (x < 0 || y < 0 || x >= static_cast<long>(cols) || y >= static_cast<long>(cols)) continue;
-                    for (std::uint32_t j : cells[static_cast<std::size_t>(y) * cols + static_cast<std::size_t>(x)])
-                        if (j != i && pds::compare_distance(p[i], p[j], r) < 0) ck_abort_msg("points %u and %u closer than R", i, j);
-                }
-        }
+        assert_apart_in_unit_square(p, r);
     }
 }
 END_TEST

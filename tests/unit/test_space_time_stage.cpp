@@ -18,43 +18,18 @@
 #include "core/rng.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
+#include "threaded_runs.hpp"
 
 namespace {
 
-struct Run {
-    std::vector<double> xy;
-    bool maximal = false;
-};
+using Run = ThreadedRun;
 
-// A sampler with the parallel opening on `threads` threads, run in calls of
-// `chunk` points (0: one call), `threads_later` threads from the second call.
+// A sampler in `box` with the parallel opening (threaded_runs.hpp).
 Run run(const pds::Box& box, double r, std::uint64_t seed, unsigned threads, std::size_t chunk = 0,
         unsigned threads_later = 0) {
     pds::Sampler s(r, seed);
     s.set_domain(box);
-    s.set_threads(threads);
-    Run out;
-    bool first = true;
-    for (;;) {
-        std::size_t added = 0;
-        const pds::Sampler::RunEnd end = s.run(chunk, &added);
-        if (first && threads_later != 0) s.set_threads(threads_later);
-        first = false;
-        if (end == pds::Sampler::RunEnd::complete) {
-            out.maximal = true;
-            break;
-        }
-    }
-    out.xy.resize(2 * s.count());
-    s.copy_points(0, s.count(), out.xy.data());
-    const pds::VerifyReport rep = s.verify();
-    ck_assert_msg(rep.failure.empty(), "verify: %s", rep.failure.c_str());
-    return out;
-}
-
-void assert_same(const Run& a, const Run& b, const char* what) {
-    ck_assert_msg(a.xy.size() == b.xy.size(), "%s: %zu points against %zu", what, a.xy.size() / 2, b.xy.size() / 2);
-    ck_assert_msg(std::memcmp(a.xy.data(), b.xy.data(), a.xy.size() * sizeof(double)) == 0, "%s: other points", what);
+    return run_threaded(s, threads, chunk, threads_later);
 }
 
 }  // namespace
@@ -130,20 +105,7 @@ START_TEST(epochs_keep_points_apart_and_carry_most_of_the_pattern) {
         const std::vector<pds::Point>& p = stage.points();
         ck_assert_msg(p.size() > 30000, "the stage placed only %zu points (of about 43500)", p.size());
         ck_assert(stage.epochs() > 3);
-        const double side = r;
-        const auto cols = static_cast<std::size_t>(1.0 / side) + 1;
-        std::vector<std::vector<std::uint32_t>> cells(cols * cols);
-        for (std::uint32_t i = 0; i < p.size(); ++i)
-            cells[static_cast<std::size_t>(p[i].y / side) * cols + static_cast<std::size_t>(p[i].x / side)].push_back(i);
-        for (std::uint32_t i = 0; i < p.size(); ++i) {
-            const auto cx = static_cast<long>(p[i].x / side), cy = static_cast<long>(p[i].y / side);
-            for (long y = cy - 1; y <= cy + 1; ++y)
-                for (long x = cx - 1; x <= cx + 1; ++x) {
-                    if (x < 0 || y < 0 || x >= static_cast<long>(cols) || y >= static_cast<long>(cols)) continue;
-                    for (std::uint32_t j : cells[static_cast<std::size_t>(y) * cols + static_cast<std::size_t>(x)])
-                        ck_assert_msg(j == i || pds::compare_distance(p[i], p[j], r) >= 0, "points %u and %u closer than R", i, j);
-                }
-        }
+        assert_apart_in_unit_square(p, r);
     }
 }
 END_TEST
