@@ -485,7 +485,7 @@ bench: $(B)/bench $(B)/bench-domains
 # A polygonal domain's cost per point against its bounding rectangle
 # (bench/domains/domains.c): outlines of 10^3 and 10^5 vertices with a hole and a comb,
 # about 10^6 points each, and the verification of one run of each. DOMAINS_ARGS:
-# [--repeats K] [--points N].
+# [--repeats K] [--points N] [--threads T] (the parallel process on T threads).
 $(B)/bench-domains: bench/domains/domains.c include/poissondisk.h $(LIB_A)
 	$(CC) $(PDS_CFLAGS) -O2 $(CFLAGS) -o $@ bench/domains/domains.c $(LIB_A) -lstdc++ -lm
 

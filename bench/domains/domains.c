@@ -3,7 +3,7 @@
  * maximal pattern in an outline with a hole, against its bounding rectangle
  * in the same process, runs interleaved (make bench-domains).
  *
- *   bench-domains [--repeats K] [--points N]
+ *   bench-domains [--repeats K] [--points N] [--threads T]
  *
  * Outlines (the first three with a 64-vertex circular hole of radius 0.08 at
  * the centre):
@@ -16,7 +16,9 @@
  * rectangle is the outline's bounding box at the same R. The first run of
  * each outline is verified (pds_verify), timed apart. Prints the median of K
  * runs (default 3) of each, the ratio of the medians, and the verification's
- * time per point in the outline.
+ * time per point in the outline. With --threads every run, outline and
+ * rectangle, selects the parallel process on T threads (pds_set_threads; 0:
+ * one per core); without it, the default single-thread process.
  */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
@@ -29,6 +31,8 @@
 #define HOLE 64
 #define PI 3.14159265358979323846
 #define MAX_REPEATS 15
+
+static int threads = -1; /* --threads, or -1: pds_set_threads is not called */
 
 static double now(void) {
     struct timespec t;
@@ -115,6 +119,10 @@ static double run(const struct outline *o, int polygon, double r, unsigned long 
                   double *verified) {
     pds_sampler *s;
     if (pds_create(&s, r, seed) != 0) exit(1);
+    if (threads >= 0 && pds_set_threads(s, (unsigned)threads) != 0) {
+        fprintf(stderr, "%s\n", pds_errmsg(s));
+        exit(1);
+    }
     const double t0 = now();
     if (polygon ? pds_set_polygon(s, o->xy, o->ends, o->rings)
                 : pds_set_domain(s, o->box[0], o->box[1], o->box[2], o->box[3])) {
@@ -151,12 +159,13 @@ int main(int argc, char **argv) {
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--repeats") && i + 1 < argc) repeats = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--points") && i + 1 < argc) target = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atoi(argv[++i]);
         else {
-            fprintf(stderr, "usage: bench-domains [--repeats K] [--points N]\n");
+            fprintf(stderr, "usage: bench-domains [--repeats K] [--points N] [--threads T]\n");
             return 2;
         }
     }
-    if (repeats < 1 || repeats > MAX_REPEATS || !(target >= 100)) return 2;
+    if (repeats < 1 || repeats > MAX_REPEATS || !(target >= 100) || threads > 1024) return 2;
     struct outline outlines[4];
     memset(outlines, 0, sizeof outlines);
     const char *names[4] = {"star1k", "star100k", "spiky1k", "comb64"};
