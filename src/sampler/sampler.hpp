@@ -142,6 +142,9 @@ public:
 
 private:
     bool started() const { return jones_ != nullptr; }
+    // Points the stage answers for: sampled ones, or fixed points adopted
+    // (their clearances count before the first point; they may leave no room).
+    bool stage_holds_points() const { return count() != 0 || (started() && adopted_fixed_ > 0); }
     // The expected size of a maximal pattern (for progress reports); for a
     // field, nothing when the meter was asked to stop while the field's
     // mean was being estimated (the estimate so far is kept).
