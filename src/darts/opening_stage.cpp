@@ -57,15 +57,14 @@ Opening opening_for(const Frame& frame, double count_bound, const RadiusField* f
     // darts go to a sparse grid whose memory follows the points: the Jones
     // loop alone would start from a sparse mesh whose cells span the domain
     // (on a torus, with copies across whole periods).
-    // Asked for, in a rectangle or a polygon: the space-time process (its
-    // darts tied to space, so threads share its work). On the torus, the
-    // dart grid that handles its copies.
+    // Asked for: the space-time process (its darts tied to space, so
+    // threads share its work), in a rectangle, a polygon or on the torus.
     // A polygon that fills little of its box draws its darts among the grid
     // cells it meets (polygon_raster.hpp); its grid keeps only its taken
     // cells once the whole grid would have over kSparseFrom cells for each
     // point the polygon can hold (islands far apart: more than memory).
     if (!fits || spread_thin(frame, frame.r(), count_bound)) return Opening::sparse;
-    return space_time && !frame.torus().on() ? Opening::space_time : Opening::dense;
+    return space_time ? Opening::space_time : Opening::dense;
 }
 
 }  // namespace
@@ -78,7 +77,8 @@ std::unique_ptr<OpeningStage> make_opening_stage(const Frame& frame, double coun
                                                 std::optional<std::uint64_t> space_time) {
     switch (opening_for(frame, count_bound, field, space_time.has_value())) {
     case Opening::space_time: {
-        auto stage = std::make_unique<SpaceTimeDartStage>(frame.domain(), frame.shared_polygon(), frame.r(), *space_time);
+        auto stage = std::make_unique<SpaceTimeDartStage>(frame.domain(), frame.shared_polygon(), frame.r(), *space_time,
+                                                          frame.torus());
         if (stage->outline_rastered()) return stage;
         // An outline too costly to raster over the sub-squares: the dart
         // grid that tests each dart against it.

@@ -6,19 +6,34 @@
 
 namespace pds {
 
-SpaceTimeGrid::SpaceTimeGrid(const Box& box, double radius) : box_(box), r_(radius) {
+SpaceTimeGrid::SpaceTimeGrid(const Box& box, double radius, const Torus& torus) : box_(box), torus_(torus), r_(radius) {
     using namespace darts;
-    side_ = cell_side(radius);
-    cols_ = cells_along(box.width(), side_);
-    rows_ = cells_along(box.height(), side_);
-    inv_side_ = 1.0 / side_;
-    step_ = side_ / kOffsetSteps;
-    reach_ = radius * inv_side_ + kReachSlack;
+    const double side = cell_side(radius);
+    cols_ = cells_along(box.width(), side);
+    rows_ = cells_along(box.height(), side);
+    side_x_ = side_y_ = side;
+    if (torus_.on()) {
+        // As dart_grid.hpp's: cells that divide the periods put a copy one
+        // period away exactly cols_ (rows_) cells away; with R at most half
+        // a period they stay wider than R / 2, so the 5 x 5 block still
+        // holds every point within R.
+        box_ = Box{torus_.x0, torus_.y0, torus_.x0 + torus_.px, torus_.y0 + torus_.py};
+        cols_ = cells_along(torus_.px, side);
+        rows_ = cells_along(torus_.py, side);
+        side_x_ = torus_.px / static_cast<double>(cols_);
+        side_y_ = torus_.py / static_cast<double>(rows_);
+    }
+    inv_side_x_ = 1.0 / side_x_;
+    inv_side_y_ = 1.0 / side_y_;
+    step_x_ = side_x_ / kOffsetSteps;
+    step_y_ = side_y_ / kOffsetSteps;
+    reach_x_ = radius * inv_side_x_ + kReachSlack;
+    reach_y_ = radius * inv_side_y_ + kReachSlack;
     r2_low_ = radius * radius * (1.0 - kFilterSlack);
     r2_high_ = radius * radius * (1.0 + kFilterSlack);
     // A sub-square is certified when its farthest corner lies this far
     // inside R: far above the rounding of the corners and distances.
-    const double cover = radius - 4.0 * step_;
+    const double cover = radius - 4.0 * std::max(step_x_, step_y_);
     r2_cover_ = cover * cover;
     stride_ = cols_ + 2 * kPad;
     const std::size_t padded_rows = rows_ + 2 * kPad;
@@ -29,26 +44,41 @@ SpaceTimeGrid::SpaceTimeGrid(const Box& box, double radius) : box_(box), r_(radi
 SpaceTimeGrid::Aim SpaceTimeGrid::aim_in(const Point& p, std::int64_t col, std::int64_t row) const {
     using darts::kPad;
     Aim a;
-    const double fx = (p.x - box_.x0) * inv_side_, fy = (p.y - box_.y0) * inv_side_;
+    const double fx = (p.x - box_.x0) * inv_side_x_, fy = (p.y - box_.y0) * inv_side_y_;
     a.col = col;
     a.row = row;
     a.cell = padded(col, row);
-    a.x_lo = block_offset(fx - reach_, a.col, kPad);
-    a.x_hi = block_offset(fx + reach_, a.col, kPad);
-    a.y_lo = block_offset(fy - reach_, a.row, kPad);
-    a.y_hi = block_offset(fy + reach_, a.row, kPad);
+    a.x_lo = block_offset(fx - reach_x_, a.col, kPad);
+    a.x_hi = block_offset(fx + reach_x_, a.col, kPad);
+    a.y_lo = block_offset(fy - reach_y_, a.row, kPad);
+    a.y_hi = block_offset(fy + reach_y_, a.row, kPad);
     return a;
+}
+
+void SpaceTimeGrid::store_with_copies(std::int64_t col, std::int64_t row, Word w) {
+    using darts::kPad;
+    cells_.store(padded(col, row), w);
+    if (!torus_.on()) return;
+    // The copies one period away that fall in the padding (with few cells
+    // along an axis, a cell has copies on both sides).
+    const auto cols = static_cast<std::int64_t>(cols_), rows = static_cast<std::int64_t>(rows_);
+    for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i) {
+            if (i == 0 && j == 0) continue;
+            const std::int64_t x = col + i * cols, y = row + j * rows;
+            if (x < -kPad || x >= cols + kPad || y < -kPad || y >= rows + kPad) continue;
+            cells_.store(padded(x, y), w);
+        }
 }
 
 namespace {
 
 // The sides of a cell's 4 x 4 sub-squares, clipped to the domain: an empty
 // interval is the part of an edge cell beyond it.
-void sub_square_sides(double x0, double y0, double side, const Box& domain, double* xs, double* ys) {
-    const double quarter = side / 4.0;
+void sub_square_sides(double x0, double y0, double side_x, double side_y, const Box& domain, double* xs, double* ys) {
     for (int k = 0; k <= 4; ++k) {
-        xs[k] = std::min(std::max(x0 + k * quarter, domain.x0), domain.x1);
-        ys[k] = std::min(std::max(y0 + k * quarter, domain.y0), domain.y1);
+        xs[k] = std::min(std::max(x0 + k * (side_x / 4.0), domain.x0), domain.x1);
+        ys[k] = std::min(std::max(y0 + k * (side_y / 4.0), domain.y0), domain.y1);
     }
 }
 
@@ -56,7 +86,7 @@ void sub_square_sides(double x0, double y0, double side, const Box& domain, doub
 
 std::uint16_t SpaceTimeGrid::outside(std::int64_t col, std::int64_t row, const Box& domain) const {
     double xs[5], ys[5];
-    sub_square_sides(cell_x0(col), cell_y0(row), side_, domain, xs, ys);
+    sub_square_sides(cell_x0(col), cell_y0(row), side_x_, side_y_, domain, xs, ys);
     std::uint16_t mask = 0;
     for (int b = 0; b < 4; ++b)
         for (int a = 0; a < 4; ++a)
@@ -80,12 +110,12 @@ std::uint16_t SpaceTimeGrid::covered_by(std::int64_t col, std::int64_t row, cons
     // A sub-square's farthest corner is no nearer than its centre: none is
     // covered when every centre lies beyond R (the usual case for the
     // cells at the block's corners).
-    const double quarter = side_ / 4.0, half_span = 1.5 * quarter;
-    const double cx = cell_x0(col) + 2.0 * quarter, cy = cell_y0(row) + 2.0 * quarter;
-    const double ex = std::max(std::fabs(q.x - cx) - half_span, 0.0), ey = std::max(std::fabs(q.y - cy) - half_span, 0.0);
+    const double qx = side_x_ / 4.0, qy = side_y_ / 4.0;
+    const double cx = cell_x0(col) + 2.0 * qx, cy = cell_y0(row) + 2.0 * qy;
+    const double ex = std::max(std::fabs(q.x - cx) - 1.5 * qx, 0.0), ey = std::max(std::fabs(q.y - cy) - 1.5 * qy, 0.0);
     if (ex * ex + ey * ey >= r_ * r_) return 0;
     double xs[5], ys[5];
-    sub_square_sides(cell_x0(col), cell_y0(row), side_, domain, xs, ys);
+    sub_square_sides(cell_x0(col), cell_y0(row), side_x_, side_y_, domain, xs, ys);
     // A sub-square lies in the disk iff its farthest corner does: the
     // farther side along x and along y, apart.
     double fx[4], fy[4];

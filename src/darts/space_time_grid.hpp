@@ -1,7 +1,11 @@
 // space_time_grid.hpp - the background grid of the space-time dart process
-// (space_time_stage.hpp): one radius R on the plane, cells of side
-// 0.99 R / sqrt 2 (no two points share one), a word per cell as in
+// (space_time_stage.hpp): one radius R on the plane or the torus, cells of
+// side 0.99 R / sqrt 2 (no two points share one), a word per cell as in
 // dart_grid.hpp (the point's index plus one, its offset in 16 bits a side).
+// On the torus, as in dart_grid.hpp, the cells divide the periods (so they
+// are rectangles, a little narrower) and the padding holds copies: of the
+// points, and during an epoch of the candidate lists; a word read in the
+// padding stands for its source shifted by the periods (copy_shift()).
 //
 // Differences from DartGrid, for bands of rows resolved by several threads:
 // - words are read and written with relaxed atomics (a thread reads the rows
@@ -18,6 +22,7 @@
 #include <cstdint>
 
 #include "core/point.hpp"
+#include "core/torus.hpp"
 #include "darts/dart_constants.hpp"
 #include "darts/grid_arithmetic.hpp"
 #include "darts/grid_storage.hpp"
@@ -39,15 +44,19 @@ public:
     };
 
     SpaceTimeGrid() = default;
-    // box: the domain's bounds (internal frame); throws std::bad_alloc.
-    SpaceTimeGrid(const Box& box, double radius);
+    // box: the domain's bounds (internal frame), or on the torus its
+    // fundamental domain; throws std::bad_alloc.
+    SpaceTimeGrid(const Box& box, double radius, const Torus& torus = Torus{});
 
     std::size_t cols() const { return cols_; }
     std::size_t rows() const { return rows_; }
     std::size_t cell_count() const { return cols_ * rows_; }
-    double side() const { return side_; }
-    double cell_x0(std::int64_t col) const { return box_.x0 + static_cast<double>(col) * side_; }
-    double cell_y0(std::int64_t row) const { return box_.y0 + static_cast<double>(row) * side_; }
+    double side_x() const { return side_x_; }
+    double side_y() const { return side_y_; }
+    const Torus& torus() const { return torus_; }
+    const Box& box() const { return box_; }  // the cells' span (on the torus, the fundamental domain)
+    double cell_x0(std::int64_t col) const { return box_.x0 + static_cast<double>(col) * side_x_; }
+    double cell_y0(std::int64_t row) const { return box_.y0 + static_cast<double>(row) * side_y_; }
     std::size_t padded(std::int64_t col, std::int64_t row) const {
         return static_cast<std::size_t>(row + darts::kPad) * stride_ + static_cast<std::size_t>(col + darts::kPad);
     }
@@ -66,6 +75,17 @@ public:
         }
     }
     void store(std::size_t cell, Word w) { cells_.store(cell, w); }
+    // Stores w in the cell in column col, row row and, on the torus, in its
+    // copies in the padding.
+    void store_with_copies(std::int64_t col, std::int64_t row, Word w);
+    // The periods (i, j) by which the source of a word read in the cell
+    // col + dj, row + di (relative to the cell in column col, row row) is
+    // shifted: 0 but in the torus's padding.
+    void copy_shift(std::int64_t col, std::int64_t row, int dj, int di, int* i, int* j) const {
+        const auto shift = [](std::int64_t k, std::size_t n) { return k < 0 ? -1 : k >= static_cast<std::int64_t>(n) ? 1 : 0; };
+        *i = shift(col + dj, cols_);
+        *j = shift(row + di, rows_);
+    }
     // An epoch's list of candidates in a cell: `count` of them from `first`
     // in band `band`'s array.
     static Word list_word(std::uint32_t band, std::uint32_t first, std::uint32_t count) {
@@ -75,18 +95,18 @@ public:
     static std::uint32_t list_band(Word w) { return static_cast<std::uint32_t>(w >> 40) & 0xFF; }
     static std::uint32_t list_first(Word w) { return static_cast<std::uint32_t>(w) & ~kEpochFlag; }
     static std::uint32_t list_count(Word w) { return static_cast<std::uint32_t>(w >> 32) & 0xFF; }
-    // Point `index` (possibly flagged) at p, in column col, row row.
+    // Point `index` at p, in column col, row row (and its copies).
     void write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index) {
-        const std::uint64_t sx = offset_steps(p.x - cell_x0(col), step_);
-        const std::uint64_t sy = offset_steps(p.y - cell_y0(row), step_);
-        cells_.store(padded(col, row), (sy << 48) | (sx << 32) | (std::uint64_t{index} + 1));
+        const std::uint64_t sx = offset_steps(p.x - cell_x0(col), step_x_);
+        const std::uint64_t sy = offset_steps(p.y - cell_y0(row), step_y_);
+        store_with_copies(col, row, (sy << 48) | (sx << 32) | (std::uint64_t{index} + 1));
     }
     static std::uint32_t index_of(Word w) { return static_cast<std::uint32_t>(w) - 1; }
     // The point a word holds, from its rounded offsets (within 2^-17 of a
-    // cell of the exact point a side).
+    // cell of the exact point, or of its copy in the padding, a side).
     Point rounded(Word w, std::int64_t col, std::int64_t row) const {
-        return Point{cell_x0(col) + (static_cast<double>((w >> 32) & 0xFFFF) + 0.5) * step_,
-                     cell_y0(row) + (static_cast<double>(w >> 48) + 0.5) * step_};
+        return Point{cell_x0(col) + (static_cast<double>((w >> 32) & 0xFFFF) + 0.5) * step_x_,
+                     cell_y0(row) + (static_cast<double>(w >> 48) + 0.5) * step_y_};
     }
     // Whether q, read rounded from a word, lies within R of p: -1 surely
     // not, 1 surely, 0 too close to R to say from the rounding.
@@ -117,7 +137,9 @@ public:
 
 private:
     Box box_{0, 0, 1, 1};
-    double r_ = 1.0, side_ = 1.0, inv_side_ = 1.0, step_ = 1.0, reach_ = 1.0;
+    Torus torus_;
+    double r_ = 1.0, side_x_ = 1.0, side_y_ = 1.0, inv_side_x_ = 1.0, inv_side_y_ = 1.0;
+    double step_x_ = 1.0, step_y_ = 1.0, reach_x_ = 1.0, reach_y_ = 1.0;
     double r2_low_ = 1.0, r2_high_ = 1.0, r2_cover_ = 1.0;
     std::size_t cols_ = 0, rows_ = 0, stride_ = 0;
     DenseCells cells_;

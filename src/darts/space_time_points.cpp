@@ -59,7 +59,7 @@ void SpaceTimeDartStage::write_points(Band& band) {
     // Each cell that listed candidates gets its point (at most one: a cell's
     // diagonal is under R), or is empty again.
     const auto cols = static_cast<std::uint32_t>(grid_.cols());
-    for (const Candidate& c : band.cands) grid_.store(grid_.padded(c.cell % cols, c.cell / cols), 0);
+    for (const Candidate& c : band.cands) grid_.store_with_copies(c.cell % cols, c.cell / cols, 0);
     for (const Band::Accepted& x : band.accepted) {
         const Candidate& c = band.cands[x.k];
         pending_[x.number - pending_base_] = c.p;

@@ -39,21 +39,30 @@ enum : std::uint8_t { kUndecided = 0, kAccepted = 1, kRejected = 2 };
 }  // namespace
 
 SpaceTimeDartStage::SpaceTimeDartStage(const Rectangle& domain, std::shared_ptr<const Polygon> polygon, double radius,
-                                       std::uint64_t seed)
-    : domain_(domain), polygon_(std::move(polygon)), r_(radius), seed_(seed), grid_(domain.bounds(), radius) {
-    curve_ = CurveOrder(domain.bounds(), grid_.side(), grid_.side(), grid_.cols(), grid_.rows());
+                                       std::uint64_t seed, const Torus& torus)
+    : domain_(domain),
+      polygon_(std::move(polygon)),
+      r_(radius),
+      seed_(seed),
+      torus_(torus),
+      grid_(domain.bounds(), radius, torus) {
+    const Box& box = grid_.box();
+    curve_ = CurveOrder(box, grid_.side_x(), grid_.side_y(), grid_.cols(), grid_.rows());
     const std::size_t cells = grid_.cell_count();
     if (cells >= SpaceTimeGrid::kEpochFlag) throw std::bad_alloc();  // cells are 31-bit ids
     masks_.assign(cells, 0);
-    const Box& box = domain.bounds();
     const std::int64_t last_col = static_cast<std::int64_t>(grid_.cols()) - 1, last_row = static_cast<std::int64_t>(grid_.rows()) - 1;
-    for (std::int64_t row = 0; row <= last_row; ++row)
-        masks_[static_cast<std::size_t>(row * (last_col + 1) + last_col)] = grid_.outside(last_col, row, box);
-    for (std::int64_t col = 0; col <= last_col; ++col)
-        masks_[static_cast<std::size_t>(last_row * (last_col + 1) + col)] |= grid_.outside(col, last_row, box);
+    if (!torus_.on()) {
+        // The last column's and row's parts beyond the box (on the torus the
+        // cells divide the periods).
+        for (std::int64_t row = 0; row <= last_row; ++row)
+            masks_[static_cast<std::size_t>(row * (last_col + 1) + last_col)] = grid_.outside(last_col, row, box);
+        for (std::int64_t col = 0; col <= last_col; ++col)
+            masks_[static_cast<std::size_t>(last_row * (last_col + 1) + col)] |= grid_.outside(col, last_row, box);
+    }
     if (polygon_) {
         inside_.assign(cells, 0);
-        rastered_ = classify_sub_squares(*polygon_, box.x0, box.y0, grid_.side(), grid_.cols(), grid_.rows(), masks_,
+        rastered_ = classify_sub_squares(*polygon_, box.x0, box.y0, grid_.side_x(), grid_.cols(), grid_.rows(), masks_,
                                          inside_);
         if (!rastered_) return;
     }
@@ -172,9 +181,9 @@ void SpaceTimeDartStage::draw(Band& band) {
         band.darting.push_back(Band::Darting{stream, active_[i], darts});
     }
     const auto cols = static_cast<std::uint32_t>(grid_.cols());
-    const double side = grid_.side();
+    const double side_x = grid_.side_x(), side_y = grid_.side_y();
     const auto stride = static_cast<std::ptrdiff_t>(grid_.stride());
-    const Box& box = domain_.bounds();
+    const Box& box = grid_.box();
     const std::size_t darting = band.darting.size();
     for (std::size_t i = 0; i < darting; ++i) {
         // Late in the stage these cells are scattered: their blocks' cache
@@ -191,12 +200,20 @@ void SpaceTimeDartStage::draw(Band& band) {
         for (unsigned k = 0; k < darts; ++k) {
             const double t = stream.next_double();
             const double u = stream.next_double(), v = stream.next_double();
-            const Point p{grid_.cell_x0(col) + u * side, grid_.cell_y0(row) + v * side};
+            Point p{grid_.cell_x0(col) + u * side_x, grid_.cell_y0(row) + v * side_y};
             // A dart in a sub-square known covered is covered; one known
             // outside the domain is outside.
             const unsigned sub = SpaceTimeGrid::sub_square(u, v);
             if (mask >> sub & 1u) continue;
-            if (!domain_.contains(p)) continue;
+            if (torus_.on()) {
+                // On the torus grid (torus.hpp), in the fundamental domain:
+                // one rounded onto its far side is dropped, as the near side
+                // already holds that place.
+                p = Point{Torus::snap(p.x), Torus::snap(p.y)};
+                if (!(p.x < box.x1 && p.y < box.y1)) continue;
+            } else if (!domain_.contains(p)) {
+                continue;
+            }
             if (polygon_ && !(inside_[cell] >> sub & 1u) && !polygon_->contains(p)) continue;
             // Only the earlier epochs' points are in the grid now, numbered.
             const SpaceTimeGrid::Aim a = grid_.aim_in(p, col, row);  // an active cell holds no point
@@ -205,7 +222,9 @@ void SpaceTimeDartStage::draw(Band& band) {
                 if (w == 0) return false;
                 const int near = grid_.rounded_within(p, grid_.rounded(w, a.col + dj, a.row + di));
                 if (near != 0) return near > 0;
-                return compare_distance(p, numbered_point(SpaceTimeGrid::index_of(w)), r_) < 0;
+                int si, sj;  // a point read in the torus's padding is its copy
+                grid_.copy_shift(a.col, a.row, dj, di, &si, &sj);
+                return compare_distance(p, torus_.shifted(numbered_point(SpaceTimeGrid::index_of(w)), si, sj), r_) < 0;
             };
             if (block_covers(a.x_lo, a.x_hi, a.y_lo, a.y_hi, covers)) {
                 // Covered: the disks that cover this dart may cover whole
@@ -239,10 +258,10 @@ void SpaceTimeDartStage::list_candidates(Band& band, std::uint32_t band_index, b
         const std::uint32_t cell = band.cands[i].cell;
         std::size_t j = i + 1;
         while (j < band.cands.size() && band.cands[j].cell == cell) ++j;
-        const std::size_t padded = grid_.padded(cell % cols, cell / cols);
-        grid_.store(padded, write ? SpaceTimeGrid::list_word(band_index, static_cast<std::uint32_t>(i),
-                                                              static_cast<std::uint32_t>(j - i))
-                                  : 0);
+        grid_.store_with_copies(cell % cols, cell / cols,
+                                write ? SpaceTimeGrid::list_word(band_index, static_cast<std::uint32_t>(i),
+                                                                 static_cast<std::uint32_t>(j - i))
+                                      : 0);
         i = j;
     }
 }
@@ -283,9 +302,11 @@ bool SpaceTimeDartStage::decide(std::size_t b0, std::size_t k0, std::vector<std:
                 if (!SpaceTimeGrid::is_list(w)) continue;
                 const std::uint32_t ob = SpaceTimeGrid::list_band(w), first = SpaceTimeGrid::list_first(w);
                 const std::uint32_t last = first + SpaceTimeGrid::list_count(w);
+                int si, sj;  // a list read in the torus's padding is its cell's, shifted
+                grid_.copy_shift(a.col, a.row, dj, di, &si, &sj);
                 for (std::uint32_t q = first; q < last; ++q) {
                     const Candidate& o = bands_[ob].cands[q];
-                    if (!earlier(o, c) || compare_distance(c.p, o.p, r_) >= 0) continue;
+                    if (!earlier(o, c) || compare_distance(c.p, torus_.shifted(o.p, si, sj), r_) >= 0) continue;
                     const std::uint8_t s = state(ob, q).load(std::memory_order_acquire);
                     if (s == kAccepted) {
                         covered = true;
@@ -325,11 +346,11 @@ void SpaceTimeDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {
 }
 
 double SpaceTimeDartStage::free_area() const {
-    return jones_of_points(domain_, polygon_, r_, Torus{}, nullptr, points_, nullptr, curve_)->free_area();
+    return jones_of_points(domain_, polygon_, r_, torus_, nullptr, points_, nullptr, curve_)->free_area();
 }
 
 VerifyReport SpaceTimeDartStage::verify() const {
-    return jones_of_points(domain_, polygon_, r_, Torus{}, nullptr, points_, nullptr, curve_)->verify();
+    return jones_of_points(domain_, polygon_, r_, torus_, nullptr, points_, nullptr, curve_)->verify();
 }
 
 }  // namespace pds

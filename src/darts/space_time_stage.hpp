@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "core/point.hpp"
+#include "core/torus.hpp"
 #include "core/worker_pool.hpp"
 #include "darts/curve_order.hpp"
 #include "darts/opening_stage.hpp"
@@ -57,9 +58,10 @@ namespace pds {
 class SpaceTimeDartStage final : public OpeningStage {
 public:
     // The domain and R in the internal frame; polygon: a polygonal domain
-    // inside the rectangle, or nullptr. Throws std::bad_alloc.
+    // inside the rectangle, or nullptr; torus: the periods, or off (no
+    // polygon on the torus). Throws std::bad_alloc.
     SpaceTimeDartStage(const Rectangle& domain, std::shared_ptr<const Polygon> polygon, double radius,
-                       std::uint64_t seed);
+                       std::uint64_t seed, const Torus& torus = Torus{});
     ~SpaceTimeDartStage() override;
 
     void set_threads(unsigned n) override { threads_ = n == 0 ? 1 : n; }
@@ -112,6 +114,7 @@ private:
     std::shared_ptr<const Polygon> polygon_;
     double r_;
     std::uint64_t seed_;
+    Torus torus_;
     SpaceTimeGrid grid_;
     CurveOrder curve_;
     unsigned threads_ = 1;

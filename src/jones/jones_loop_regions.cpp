@@ -18,19 +18,19 @@
 namespace pds {
 
 namespace {
-// One radius, in a rectangle or a polygon: cells measured side by side (a
-// polygon's with each worker's own cutter), and no copies (the parallel
-// opening does not run on the torus).
+// One radius, in a rectangle, a polygon or on the torus: the runs the
+// parallel opening hands over.
 template <class Space, class Rule>
-constexpr bool kCarriesDarts =
-    (std::is_same_v<Space, PlaneSpace> || std::is_same_v<Space, PolygonSpace>)&&std::is_same_v<Rule, OneRadius>;
+constexpr bool kCarriesDarts = std::is_same_v<Rule, OneRadius>;
 }  // namespace
 
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::carry_darts(std::uint64_t salted_seed, std::size_t epoch) {
     if constexpr (kCarriesDarts<Space, Rule>) {
         // Another salt: these streams share nothing with the opening's.
-        regions_.start(mix64(salted_seed ^ 0x6A09E667F3BCC909ull), epoch, space_.clip_box(), r_);
+        Torus torus;
+        if constexpr (Space::kPeriodic) torus = space_.copies().torus();
+        regions_.start(mix64(salted_seed ^ 0x6A09E667F3BCC909ull), epoch, space_.clip_box(), r_, torus);
     }
 }
 

@@ -44,6 +44,7 @@
 
 #include "core/indices.hpp"
 #include "core/point.hpp"
+#include "core/torus.hpp"
 
 namespace pds {
 
@@ -76,8 +77,11 @@ public:
     static constexpr std::size_t kBlock = 4096;  // active sites per block
 
     // Starts the process, its streams keyed from epoch `epoch` on (the
-    // opening's epochs come before), for points in `domain` at radius r.
-    void start(std::uint64_t salted_seed, std::size_t epoch, const Box& domain, double r);
+    // opening's epochs come before), for points in `domain` at radius r;
+    // on the torus (torus.on()) `domain` is ignored: the darts, drawn in
+    // unclipped cells, are decided by their distances across the periods.
+    void start(std::uint64_t salted_seed, std::size_t epoch, const Box& domain, double r,
+               const Torus& torus = Torus{});
     void stop();
     bool on() const { return on_; }
     // Another mean for the tests: longer epochs, whose darts meet often.
@@ -127,6 +131,12 @@ public:
 
 private:
     void decide(std::size_t nblocks, double r);
+    // Dart i is free of the accepted darts in the grid (the plane's, and
+    // the torus's, whose cells wrap around and divide the periods).
+    bool free_in_plane(std::uint32_t i, double r) const;
+    bool free_on_torus(std::uint32_t i, double r) const;
+    std::size_t column_of(double x) const;
+    std::size_t row_of(double y) const;
 
     bool on_ = false;
     bool ending_ = false;
@@ -139,9 +149,11 @@ private:
     std::vector<Dart> darts_;             // the epoch's darts, in order of time
     std::vector<std::uint32_t> chain_;    // accepted darts of one grid cell
     std::vector<std::uint32_t> bucket_;   // the time sort's buckets
-    std::vector<std::uint32_t> grid_;     // per cell of side 2R: its last accepted dart
+    std::vector<std::uint32_t> grid_;     // per cell of side 2R (at least): its last accepted dart
     double grid_x0_ = 0, grid_y0_ = 0;    // the grid's corner
+    double side_x_ = 0, side_y_ = 0;      // its cells' sides
     std::size_t grid_columns_ = 0, grid_rows_ = 0;
+    Torus torus_;                         // off in the plane
     std::vector<Dart> pending_;           // accepted, in order of time
     std::size_t next_ = 0;
     Stats stats_;

@@ -39,7 +39,7 @@ namespace pds {
 class TorusSpace {
 public:
     static constexpr bool kPeriodic = true;
-    static constexpr bool kMeasuresSideBySide = false;  // measuring may widen the copies
+    static constexpr bool kMeasuresSideBySide = true;
 
     TorusSpace(const Rectangle& domain, double r, const Torus& torus, bool weighted,
                const std::shared_ptr<const Polygon>& polygon);
@@ -80,7 +80,7 @@ public:
 
     template <class Loop>
     void adopt(Loop& loop, const std::vector<Point>& points, const std::uint32_t* order,
-               const std::vector<double>* values, const Poll& poll, MeshBuild /*inserted on the torus*/);
+               const std::vector<double>* values, const Poll& poll, MeshBuild build);
     template <class Loop>
     void insert_point(Loop& loop, const Point& p, VertexIndex near, double value);
     // Whether the triangles around real vertex v, measured as m, keep the

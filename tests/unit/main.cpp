@@ -25,6 +25,7 @@ int main() {
     srunner_add_suite(runner, time_order_suite());
     srunner_add_suite(runner, space_time_stage_suite());
     srunner_add_suite(runner, space_time_polygon_suite());
+    srunner_add_suite(runner, space_time_torus_suite());
     srunner_add_suite(runner, region_darts_suite());
     srunner_add_suite(runner, sampler_suite());
     srunner_add_suite(runner, law_suite());

@@ -25,6 +25,7 @@ Suite* field_dart_stage_suite();
 Suite* curve_order_suite();
 Suite* space_time_stage_suite();
 Suite* space_time_polygon_suite();
+Suite* space_time_torus_suite();
 Suite* worker_pool_suite();
 Suite* time_order_suite();
 Suite* region_darts_suite();

@@ -6,7 +6,8 @@
 //
 // The statistics and thresholds are law_compare.hpp's, as in the plane. A
 // sampler that treats the seam as a wall packs extra points along it (about
-// 0.23 per R of perimeter): N moves by many standard errors.
+// 0.23 per R of perimeter): N moves by many standard errors. The parallel
+// process (set_threads) is held to the same law on 1, 2 and 3 threads.
 #include <vector>
 
 #include "dart_throwing.hpp"
@@ -55,6 +56,27 @@ START_TEST(law_of_the_jones_loop_alone_on_the_torus) {
 }
 END_TEST
 
+START_TEST(law_of_the_parallel_process_on_the_torus) {
+    // The space-time dart process, its free regions' darts and the Jones
+    // loop on 1, 2 and 3 threads (3 oversubscribes a 2-core machine). The
+    // torus is long enough for four bands of rows: the first and the last
+    // meet across the seam.
+    law::Config c = torus(pds::Box{0, 0, 0.6, 2.4}, 0.1, test_light() ? 50 : 2000, Stages::darts_then_jones);
+    c.threads = static_cast<unsigned>(_i);
+    law::compare(c);
+}
+END_TEST
+
+START_TEST(law_of_long_region_epochs_on_the_torus) {
+    // Epochs 40 times as long as the default: darts of one epoch often fall
+    // within R of one another, across the seams too.
+    law::Config c = torus(pds::Box{0, 0, 0.6, 2.4}, 0.1, test_light() ? 50 : 2000, Stages::darts_then_jones);
+    c.threads = static_cast<unsigned>(_i);
+    c.region_darts_per_cell = 4.0;
+    law::compare(c);
+}
+END_TEST
+
 Suite* law_torus_suite() {
     Suite* s = suite_create("law_torus");
     TCase* t = tcase_create("random sequential adsorption on the torus");
@@ -63,6 +85,8 @@ Suite* law_torus_suite() {
     tcase_add_test(t, law_on_the_unit_torus);
     tcase_add_test(t, law_on_a_rectangular_torus);
     tcase_add_test(t, law_of_the_jones_loop_alone_on_the_torus);
+    tcase_add_loop_test(t, law_of_the_parallel_process_on_the_torus, 1, 4);
+    tcase_add_loop_test(t, law_of_long_region_epochs_on_the_torus, 2, 4);
     suite_add_tcase(s, t);
     return s;
 }

@@ -113,31 +113,43 @@ END_TEST
 START_TEST(certified_sub_squares_lie_in_the_disk) {
     // Every sub-square covered_by() certifies has its 4 corners and a dense
     // set of inner points within R of the point; and a point far off
-    // certifies none.
+    // certifies none. In the plane (square cells) and on a torus whose
+    // periods the cells divide (rectangles, narrower along y).
     const pds::Box box{0, 0, 1, 1};
-    const pds::SpaceTimeGrid grid(box, 0.05);
-    pds::Rng rng(4);
-    int certified = 0;
-    for (int trial = 0; trial < 4000; ++trial) {
-        const std::int64_t col = 3 + static_cast<std::int64_t>(rng.next_double() * 8), row = 3 + static_cast<std::int64_t>(rng.next_double() * 8);
-        const double s = grid.side();
-        const pds::Point q{grid.cell_x0(col) + (rng.next_double() * 5 - 2) * s, grid.cell_y0(row) + (rng.next_double() * 5 - 2) * s};
-        const std::uint16_t mask = grid.covered_by(col, row, q, box);
-        for (int b = 0; b < 4; ++b)
-            for (int a = 0; a < 4; ++a) {
-                if (!(mask >> (4 * b + a) & 1)) continue;
-                ++certified;
-                for (int i = 0; i <= 4; ++i)
-                    for (int j = 0; j <= 4; ++j) {
-                        const pds::Point x{grid.cell_x0(col) + (a + i / 4.0) * s / 4, grid.cell_y0(row) + (b + j / 4.0) * s / 4};
-                        ck_assert_msg(pds::compare_distance(x, q, 0.05) < 0, "a certified sub-square leaves the disk");
-                    }
-            }
+    const pds::Torus torus{1.0, 0.71, 0.0, 0.0};
+    for (const pds::Torus& t : {pds::Torus{}, torus}) {
+        const pds::SpaceTimeGrid grid(box, 0.05, t);
+        const pds::Box span = grid.box();
+        const double sx = grid.side_x(), sy = grid.side_y();
+        ck_assert(sx <= pds::darts::cell_side(0.05) && sy <= pds::darts::cell_side(0.05));
+        if (t.on()) {
+            ck_assert_double_eq_tol(sx * static_cast<double>(grid.cols()), 1.0, 1e-12);
+            ck_assert_double_eq_tol(sy * static_cast<double>(grid.rows()), 0.71, 1e-12);
+            ck_assert(sy < sx);
+        }
+        pds::Rng rng(4);
+        int certified = 0;
+        for (int trial = 0; trial < 4000; ++trial) {
+            const std::int64_t col = 3 + static_cast<std::int64_t>(rng.next_double() * 8), row = 3 + static_cast<std::int64_t>(rng.next_double() * 8);
+            const pds::Point q{grid.cell_x0(col) + (rng.next_double() * 5 - 2) * sx, grid.cell_y0(row) + (rng.next_double() * 5 - 2) * sy};
+            const std::uint16_t mask = grid.covered_by(col, row, q, span);
+            for (int b = 0; b < 4; ++b)
+                for (int a = 0; a < 4; ++a) {
+                    if (!(mask >> (4 * b + a) & 1)) continue;
+                    ++certified;
+                    for (int i = 0; i <= 4; ++i)
+                        for (int j = 0; j <= 4; ++j) {
+                            const pds::Point x{grid.cell_x0(col) + (a + i / 4.0) * sx / 4, grid.cell_y0(row) + (b + j / 4.0) * sy / 4};
+                            if (pds::compare_distance(x, q, 0.05) >= 0) ck_abort_msg("a certified sub-square leaves the disk");
+                        }
+                }
+        }
+        ck_assert_msg(certified > 1000, "only %d sub-squares certified", certified);
+        ck_assert_int_eq(grid.covered_by(3, 3, pds::Point{grid.cell_x0(7), grid.cell_y0(3)}, span), 0);
     }
-    ck_assert_msg(certified > 1000, "only %d sub-squares certified", certified);
-    ck_assert_int_eq(grid.covered_by(3, 3, pds::Point{grid.cell_x0(7), grid.cell_y0(3)}, box), 0);
     // The part of an edge cell beyond the domain counts as covered.
-    const pds::Box narrow{0, 0, 1.3 * grid.side(), 1};
+    const double side = pds::darts::cell_side(0.05);
+    const pds::Box narrow{0, 0, 1.3 * side, 1};
     const pds::SpaceTimeGrid edge(narrow, 0.05);
     ck_assert_int_ne(edge.outside(1, 0, narrow), 0);
     ck_assert_int_eq(edge.outside(0, 0, narrow), 0);
