@@ -465,6 +465,7 @@ check-alloc: $(ALLOC_BIN)
 	$(ALLOC_BIN) field
 	$(ALLOC_BIN) threads
 	$(ALLOC_BIN) polygon-threads
+	$(ALLOC_BIN) torus-threads
 	$(ALLOC_BIN)
 
 # ---- benchmark -----------------------------------------------------------------------

@@ -6,11 +6,11 @@
 #   sh tests/check-cli-threads.sh build/poissondisk
 #
 # The outputs of --threads 1, 2, 4 and 0 (one per core) are compared with
-# cmp, in each mode: the one-radius rectangle, polygon and mask (whose dart
-# stage uses the threads; with --count and --refine too), --periodic and
-# --radius-map. Without --threads the one-radius rectangle, polygon and mask
-# run the single-thread process (other points); the other modes run on one
-# thread either way (the same points). Ends with "check-cli-threads: N passed, M failed" and a non-zero
+# cmp, in each mode: the one-radius rectangle, polygon, mask and torus
+# (--periodic), whose dart stage uses the threads (with --count and --refine
+# too), and --radius-map. Without --threads the one-radius modes run the
+# single-thread process (other points); --radius-map runs on one thread
+# either way (the same points). Ends with "check-cli-threads: N passed, M failed" and a non-zero
 # status if anything failed.
 
 set -u
@@ -61,7 +61,10 @@ same_for_threads() {
 same_for_threads "one radius: rectangle R 0.01" --radius 0.01 --domain 0 0 2 1 --seed 3
 same_for_threads "one radius: --count 3000" --count 3000 --seed 4
 same_for_threads "one radius: --refine" --radius 0.03 --refine 0.02 --refine 0.01 --seed 5
-same_for_threads "--periodic" --radius 0.01 --periodic --seed 6
+same_for_threads "one radius: --periodic" --radius 0.01 --periodic --seed 6
+same_for_threads "one radius: --periodic --refine" --radius 0.03 --refine 0.012 --periodic --domain -0.4 0.2 0.9 0.9 --seed 13
+same_for_threads "one radius: --periodic --count 3000" --count 3000 --periodic --seed 14
+same_for_threads "one radius: --periodic --verify" --radius 0.005 --periodic --domain 0 0 3 0.7 --verify --seed 15
 same_for_threads "--radius-map" --radius-map "$tmp/map.pgm" --rmin 0.01 --rmax 0.03 --seed 7
 same_for_threads "one radius: --polygon" --polygon "$tmp/l.txt" --radius 0.02 --seed 8
 same_for_threads "one radius: --polygon --refine" --polygon "$tmp/l.txt" --radius 0.04 --refine 0.02 --seed 9

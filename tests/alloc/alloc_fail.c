@@ -22,7 +22,8 @@
  * with a hole (50 vertices), an 8 x 8 mask, and that star with a radius
  * function; setting the domain (and the field) is one more call whose
  * allocations fail in turn. "threads" runs the parallel process on 2 threads
- * in the rectangle, "polygon-threads" in the star. The default,
+ * in the rectangle, "polygon-threads" in the star, "torus-threads" on the
+ * torus. The default,
  * ~7000-point sequence tries every k in calls that make at most 3 * SPAN
  * allocations; in larger ones (pds_verify's exact arithmetic makes tens of
  * thousands) the first SPAN, the last SPAN and SPAN spread evenly in
@@ -80,6 +81,9 @@ static const struct config kThreads = {"threads", 0.025, 0.02, 300, 100, 0, 0, T
 /* The same in the star with a hole: its sub-squares rastered, the free
  * regions' darts drawn by each worker's own outline cutter. */
 static const struct config kPolygonThreads = {"polygon-threads", 0.025, 0.02, 300, 100, 0, 0, POLYGON_THREADS};
+/* The same on the torus: the grid's copies in its padding, the free
+ * regions' darts decided across the seams, the mesh built whole. */
+static const struct config kTorusThreads = {"torus-threads", 0.025, 0.02, 300, 100, 0, 1, THREADS};
 static const struct config *cfg = &kLarge;
 #define RADIUS (cfg->radius)
 #define REFINED (cfg->refined)
@@ -549,8 +553,10 @@ int main(int argc, char **argv)
         cfg = &kThreads;
     else if (argc > 1 && strcmp(argv[1], "polygon-threads") == 0)
         cfg = &kPolygonThreads;
+    else if (argc > 1 && strcmp(argv[1], "torus-threads") == 0)
+        cfg = &kTorusThreads;
     else if (argc > 1) {
-        printf("usage: alloc_fail [small|torus|polygon|mask|field|threads|polygon-threads]\n");
+        printf("usage: alloc_fail [small|torus|polygon|mask|field|threads|polygon-threads|torus-threads]\n");
         return 2;
     }
     if (cfg->shape == THREADS || cfg->shape == POLYGON_THREADS)

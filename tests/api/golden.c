@@ -19,7 +19,7 @@
  * for 1.7.0, whose dart process goes on after the hand-over in the cells'
  * free regions. Polygons pinned from 1.8.0 on, whose parallel process runs
  * in polygons too (before, their threads gave the default process's points,
- * the first fingerprint below).
+ * the first fingerprint below). The torus pinned from 1.9.0 on, likewise.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -170,6 +170,31 @@ START_TEST(pinned_polygon_outputs)
 }
 END_TEST
 
+/* The torus [0,1.5)x[0,1) at R 0.01, seed 4, by the default process and by
+ * the parallel one, the same on 1, 2 and 3 threads, whole and in calls of
+ * 97 points. */
+static const struct golden_polygon torus_cases[] = {
+    {0, 0, 10454, 0x08bf749a26c343acull},
+    {0, 2, 10420, 0x90a5b45a96979b57ull},
+    {97, 3, 10420, 0x90a5b45a96979b57ull},
+    {0, 4, 10420, 0x90a5b45a96979b57ull},
+};
+
+START_TEST(pinned_torus_outputs)
+{
+    const struct golden_polygon *g = &torus_cases[_i];
+    pds_sampler *s = NULL;
+
+    ck_assert_int_eq(pds_create(&s, 0.01, 4), 0);
+    ck_assert_int_eq(pds_set_domain(s, 0.0, 0.0, 1.5, 1.0), 0);
+    ck_assert_int_eq(pds_set_periodic(s, 1), 0);
+    if (g->threads > 0)
+        ck_assert_int_eq(pds_set_threads(s, g->threads - 1), 0);
+    run_all(s, g->chunk);
+    assert_pinned(s, g->count, g->hash, "torus case", _i);
+}
+END_TEST
+
 Suite *golden_suite(void)
 {
     Suite *s = suite_create("golden");
@@ -178,6 +203,7 @@ Suite *golden_suite(void)
     tcase_add_loop_test(tc, pinned_outputs, 0, (int)(sizeof cases / sizeof cases[0]));
     tcase_add_loop_test(tc, pinned_field_outputs, 0, (int)(sizeof field_cases / sizeof field_cases[0]));
     tcase_add_loop_test(tc, pinned_polygon_outputs, 0, (int)(sizeof polygon_cases / sizeof polygon_cases[0]));
+    tcase_add_loop_test(tc, pinned_torus_outputs, 0, (int)(sizeof torus_cases / sizeof torus_cases[0]));
     suite_add_tcase(s, tc);
     return s;
 }

@@ -13,9 +13,9 @@
  * at each call.
  *
  * Determinism is checked in every mode a run can be in: the one-radius
- * rectangle and the polygon (the modes whose dart stage uses the threads),
- * the torus, count mode, a chain of refines, a radius map, a polygon with a
- * hole (one radius, refined, in count mode) and a mask. Each is
+ * rectangle, the torus (square; wider than tall, refined; in count mode),
+ * count mode, a chain of refines, a radius map, a polygon with a hole (one
+ * radius, refined, in count mode) and a mask. Each is
  * run once with 1 thread, one pds_run per radius (the reference), then
  *   - with 2, 3, 4, 5 and 8 threads, the same calls;
  *   - split into pds_run calls of 1, 7 and 1000 points in turn, the thread
@@ -46,6 +46,12 @@ typedef struct mode {
 static void domain_2x1(pds_sampler *s) { ck_assert_int_eq(pds_set_domain(s, 0, 0, 2, 1), 0); }
 
 static void torus(pds_sampler *s) { ck_assert_int_eq(pds_set_periodic(s, 1), 0); }
+
+static void wide_torus(pds_sampler *s)
+{
+    ck_assert_int_eq(pds_set_domain(s, -0.4, 0.2, 0.9, 0.9), 0);
+    ck_assert_int_eq(pds_set_periodic(s, 1), 0);
+}
 
 /* Radii from 0.01 (0.03 light) at the bottom left to three times that. */
 static void radius_map(pds_sampler *s)
@@ -83,6 +89,8 @@ static void mask(pds_sampler *s)
 static const mode modes[] = {
     {"rectangle [0,2]x[0,1]", domain_2x1, {{0.01}, {0.02}}, {0, 0}},
     {"torus", torus, {{0.01}, {0.05}}, {0, 0}},
+    {"torus 1.3 x 0.7, refine", wide_torus, {{0.03, 0.012}, {0.09, 0.06}}, {0, 0}},
+    {"torus, pds_set_count", torus, {{1.0}, {1.0}}, {3000, 1000}},
     {"pds_set_count", NULL, {{1.0}, {1.0}}, {3000, 1000}},
     {"refine", NULL, {{0.03, 0.02, 0.01}, {0.08, 0.06, 0.04}}, {0, 0}},
     {"radius map", radius_map, {{1.0}, {1.0}}, {0, 0}},

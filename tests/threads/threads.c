@@ -5,7 +5,7 @@
  * Contract (include/poissondisk.h, DESIGN.md): the library keeps no global
  * state; distinct handles may be used from distinct threads at once. Each of
  * N_THREADS threads runs its own script on its own handle: create, set_domain
- * (then, for two of them, a polygon with a hole),
+ * (then, for two of them, a polygon with a hole; for one, the torus),
  * a bounded run, free_area in the middle of the run, run to the end, refine,
  * run to the end, count/radius/points, verify, free_area, a refused call and
  * its message, destroy. In between it calls the global functions (pds_strerror,
@@ -44,13 +44,14 @@ struct script {
     size_t first_chunk;     /* max_new of the first, bounded run */
     unsigned threads[2];    /* run at once: its own threads, then after the first run */
     int polygon;            /* an octagon with a square hole inside the domain */
+    int periodic;           /* the domain made a torus */
 };
 
 static const struct script scripts[N_THREADS] = {
-    {1, 0.020, 0.012, 0.0, 0.0, 1.0, 1.0, 100, {1, 2}, 0},
-    {0x9E3779B97F4A7C15u, 0.030, 0.020, -3.0, 10.0, 1.0, 11.0, 1, {2, 1}, 1},
-    {42, 0.004, 0.0035, 0.0, 0.0, 2.0, 0.5, 2000, {3, 0}, 1}, /* several blocks of free cells */
-    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500, {0, 4}, 0},
+    {1, 0.020, 0.012, 0.0, 0.0, 1.0, 1.0, 100, {1, 2}, 0, 0},
+    {0x9E3779B97F4A7C15u, 0.030, 0.020, -3.0, 10.0, 1.0, 11.0, 1, {2, 1}, 1, 0},
+    {42, 0.004, 0.0035, 0.0, 0.0, 2.0, 0.5, 2000, {3, 0}, 1, 0}, /* several blocks of free cells */
+    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500, {0, 4}, 0, 1},
 };
 
 /* A growable byte buffer: everything the calls of one script returned. */
@@ -150,6 +151,10 @@ static void run_script(const struct script *sc, int alone, struct transcript *t,
     put_int(t, rc);
     if (sc->polygon && rc == 0) {
         sum->set_domain = rc = set_octagon(s, sc);
+        put_int(t, rc);
+    }
+    if (sc->periodic && rc == 0) {
+        sum->set_domain = rc = pds_set_periodic(s, 1);
         put_int(t, rc);
     }
     put_int(t, pds_set_threads(s, alone ? 1 : sc->threads[0]));

@@ -2,9 +2,9 @@
 // runs the single-thread process; a number selects the parallel process, whose
 // points depend on the seed and settings but never on the count (the
 // WebAssembly build has one thread, so not the speed either). The one-radius
-// rectangle, polygon and mask have that process; the torus and fixed points run
-// on one thread either way. The native CLI's points at --threads 4 are the
-// same bytes.
+// rectangle, polygon, mask and torus have that process; fixed points run on one
+// thread either way. The native CLI's points at --threads 4 are the same
+// bytes.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { Sampler, StateError, poissonDisk } from '../src/index.js';
@@ -30,9 +30,10 @@ const PARALLEL = {  // the modes with a parallel process of their own
   polygon: [0.02, { polygon: L_SHAPE }],
   'polygon with count': [null, { polygon: L_SHAPE, count: 3000 }],
   mask: [0.02, { mask: MASK, bounds: [0, 0, 2, 1] }],
+  torus: [0.01, { periodic: true }],
+  'torus with count': [null, { periodic: true, bounds: [0, 0, 2, 1], count: 3000 }],
 };
 const ONE_THREAD = {  // the modes that run on one thread whatever was asked
-  torus: [0.01, { periodic: true }],
   'polygon with fixed points': [0.02, { polygon: L_SHAPE, fixed: [[0.15, 0.15], [1.5, 0.5]] }],
 };
 
@@ -59,7 +60,7 @@ test('threads 1, 2, 4 and 8 give the same points; no threads option gives the si
     'no threads against the native CLI without --threads');
 });
 
-test('polygon and mask: threads 4 against the native CLI at --threads 4, and without threads', async () => {
+test('polygon, mask and torus: threads 4 against the native CLI at --threads 4, and without threads', async () => {
   const polygon = writePolygon(L_SHAPE);
   sameBytes(await poissonDisk(0.02, { seed: 3, polygon: L_SHAPE, threads: 4 }),
     cliPoints(['--polygon', polygon, '--radius', '0.02', '--seed', '3', '--threads', '4']),
@@ -75,6 +76,12 @@ test('polygon and mask: threads 4 against the native CLI at --threads 4, and wit
   sameBytes(await poissonDisk(0.02, { seed: 3, mask: MASK, bounds: [0, 0, 2, 1] }),
     cliPoints(['--mask', mask, '--domain', '0', '0', '2', '1', '--radius', '0.02', '--seed', '3']),
     'mask: no threads against the native CLI without --threads');
+  sameBytes(await poissonDisk(0.01, { seed: 3, periodic: true, bounds: [0, 0, 2, 1], threads: 4 }),
+    cliPoints(['--periodic', '--domain', '0', '0', '2', '1', '--radius', '0.01', '--seed', '3', '--threads', '4']),
+    'torus: threads 4 against the native CLI at --threads 4');
+  sameBytes(await poissonDisk(0.01, { seed: 3, periodic: true, bounds: [0, 0, 2, 1] }),
+    cliPoints(['--periodic', '--domain', '0', '0', '2', '1', '--radius', '0.01', '--seed', '3']),
+    'torus: no threads against the native CLI without --threads');
 });
 
 test('the count reads back and may change between runs', async () => {
