@@ -48,7 +48,7 @@ extern "C" {
 
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
-#define PDS_VERSION_MINOR 8
+#define PDS_VERSION_MINOR 9
 #define PDS_VERSION_PATCH 0
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
@@ -507,24 +507,25 @@ PDS_API int pds_set_fixed(pds_sampler *s, const double *xy, const double *cleara
  *   n  1 to 1024; 0 means one per online core (as
  *      std::thread::hardware_concurrency() counts them; 1 if it cannot tell).
  * The first call, before the first point, selects the parallel opening: in a
- * one-radius rectangle, polygon or mask (with or without pds_set_count or
- * pds_refine) the run opens with darts tied to space (each cell its own
- * random stream), decided in order of time by the threads together, and
- * goes on with such darts in the free regions left. Its points depend on the
- * seed and the settings, never on n: the same seed gives the same points,
- * byte for byte, for every n and whatever n was at each call; threads change
- * only the speed. They are not the points of a sampler that never called
- * pds_set_threads, which runs the single-thread process of 1.4 (the faster
- * one on one core). The torus, fixed points and variable radii run on one
- * thread either way, as do a polygon spread thin over its box (islands far
- * apart) and an outline too large to raster over the dart grid; polygons and
- * masks had the single-thread process's points before 1.8. The default is that process:
- * the library starts no thread unless asked. Once selected, n may change at
- * any time, also between the calls of one run (from the next call that adds
- * points). Threads start and end inside the calls that add points; the
- * progress callback and the radius function are called only from the
- * caller's thread. A thread that cannot be started is done without: the run
- * goes on with fewer, and the same points.
+ * one-radius rectangle, polygon, mask or torus (with or without
+ * pds_set_count or pds_refine) the run opens with darts tied to space (each
+ * cell its own random stream), decided in order of time by the threads
+ * together, and goes on with such darts in the free regions left. Its points
+ * depend on the seed and the settings, never on n: the same seed gives the
+ * same points, byte for byte, for every n and whatever n was at each call;
+ * threads change only the speed. They are not the points of a sampler that
+ * never called pds_set_threads, which runs the single-thread process of 1.4
+ * (the faster one on one core). Fixed points and variable radii (a field
+ * on the torus too) run on one thread either way, as do a polygon spread
+ * thin over its box (islands far apart) and an outline too large to raster
+ * over the dart grid; polygons and masks had the single-thread process's
+ * points before 1.8, the torus before 1.9. The default is the single-thread
+ * process: the library starts no thread unless asked. Once selected, n may
+ * change at any time, also between the calls of one run (from the next call
+ * that adds points). Threads start and end inside the calls that add
+ * points; the progress callback and the radius function are called only
+ * from the caller's thread. A thread that cannot be started is done
+ * without: the run goes on with fewer, and the same points.
  * Returns 0, PDS_EINVAL (s NULL, n > 1024), PDS_ESTATE (points exist already
  * from the single-thread process; called from inside the progress callback
  * or the radius function, or after an earlier PDS_EINTERNAL). (1.5)

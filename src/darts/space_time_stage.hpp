@@ -1,6 +1,6 @@
-// space_time_stage.hpp - the opening of a one-radius run in a rectangle:
-// dart throwing as a space-time process, resolved by several threads with
-// the same points on any number of them.
+// space_time_stage.hpp - the opening of a one-radius run in a rectangle, a
+// polygon or on the torus: dart throwing as a space-time process, resolved
+// by several threads with the same points on any number of them.
 //
 // The darts. Every cell of the grid (space_time_grid.hpp) receives darts as
 // a Poisson process in time, uniform over the cell, all cells at the same
@@ -10,8 +10,10 @@
 // keyed by (seed, cell, e): the set of darts is fixed by the seed alone.
 //
 // The points. A dart becomes a point iff it lies in the domain (a rectangle,
-// or a polygon: sub_square_raster.hpp says which sub-squares need no test) and no earlier
-// point lies within R: greedy independent set in order of time. Conditioned
+// or a polygon: sub_square_raster.hpp says which sub-squares need no test;
+// on the torus, snapped to its grid) and no earlier point lies within R (on
+// the torus, no copy: the grid's padding holds them, space_time_grid.hpp):
+// greedy independent set in order of time. Conditioned
 // on the points before it, the next point is uniform over the free region:
 // random sequential adsorption, the Jones loop's law. A cell certified
 // covered (it holds a point, or each of its 4 x 4 sub-squares lies in one

@@ -100,9 +100,10 @@ template <class Space, class Rule>
 bool JonesLoop<Space, Rule>::measure_all_cells(const Poll& poll) {
     const SiteIndex sites = dt_.vertex_count() - Delaunay::kGhosts;
     // A block of Poll::kEvery sites a worker between the polls. Each cell
-    // is measured from the mesh alone into its own leaf, so the plane's
-    // cells can be measured side by side (in a polygon each worker has its
-    // own cutter; the torus may widen its copies: one worker, the caller).
+    // is measured from the mesh alone into its own leaf, so the cells can
+    // be measured side by side (in a polygon each worker has its own
+    // cutter; on the torus only reading the mesh: a margin too narrow is
+    // widened afterwards, on the caller's thread).
     const unsigned threads = Space::kMeasuresSideBySide && sites >= 4 * Poll::kEvery ? threads_ : 1;
     WorkerPool pool(threads);
     std::atomic<bool> valid{true};
