@@ -55,10 +55,8 @@ SpaceTimeGrid::Aim SpaceTimeGrid::aim_in(const Point& p, std::int64_t col, std::
     return a;
 }
 
-void SpaceTimeGrid::store_with_copies(std::int64_t col, std::int64_t row, Word w) {
+void SpaceTimeGrid::store_copies(std::int64_t col, std::int64_t row, Word w) {
     using darts::kPad;
-    cells_.store(padded(col, row), w);
-    if (!torus_.on()) return;
     // The copies one period away that fall in the padding (with few cells
     // along an axis, a cell has copies on both sides).
     const auto cols = static_cast<std::int64_t>(cols_), rows = static_cast<std::int64_t>(rows_);

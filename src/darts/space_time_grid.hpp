@@ -77,7 +77,10 @@ public:
     void store(std::size_t cell, Word w) { cells_.store(cell, w); }
     // Stores w in the cell in column col, row row and, on the torus, in its
     // copies in the padding.
-    void store_with_copies(std::int64_t col, std::int64_t row, Word w);
+    void store_with_copies(std::int64_t col, std::int64_t row, Word w) {
+        cells_.store(padded(col, row), w);
+        if (torus_.on()) store_copies(col, row, w);
+    }
     // The periods (i, j) by which the source of a word read in the cell
     // col + dj, row + di (relative to the cell in column col, row row) is
     // shifted: 0 but in the torus's padding.
@@ -136,6 +139,8 @@ public:
     void release() { cells_.release(); }
 
 private:
+    void store_copies(std::int64_t col, std::int64_t row, Word w);
+
     Box box_{0, 0, 1, 1};
     Torus torus_;
     double r_ = 1.0, side_x_ = 1.0, side_y_ = 1.0, inv_side_x_ = 1.0, inv_side_y_ = 1.0;
