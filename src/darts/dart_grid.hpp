@@ -149,26 +149,20 @@ DartGrid<Cells>::DartGrid(const Box& domain, double radius, const Torus& torus)
       r2_high_(radius * radius * (1.0 + darts::kFilterSlack)),
       torus_(torus) {
     using namespace darts;
-    const double side = cell_side(radius);
-    cols_ = cells_along(domain.width(), side);
-    rows_ = cells_along(domain.height(), side);
-    side_x_ = side_y_ = side;
-    if (torus_.on()) {
-        // Cells divide the periods: then a copy one period away sits exactly
-        // cols_ (rows_) cells away. With R at most half a period the cells
-        // stay wider than R/2 (at least 0.518 R), so the 5 x 5 block still
-        // holds every point within R.
-        cols_ = cells_along(torus_.px, side);
-        rows_ = cells_along(torus_.py, side);
-        side_x_ = torus_.px / static_cast<double>(cols_);
-        side_y_ = torus_.py / static_cast<double>(rows_);
-    }
-    inv_side_x_ = 1.0 / side_x_;
-    inv_side_y_ = 1.0 / side_y_;
-    step_x_ = side_x_ / kOffsetSteps;
-    step_y_ = side_y_ / kOffsetSteps;
-    reach_x_ = radius * inv_side_x_ + kReachSlack;
-    reach_y_ = radius * inv_side_y_ + kReachSlack;
+    // On the torus the cells divide the periods (grid_axis).
+    const bool on = torus_.on();
+    const GridAxis x = grid_axis(on ? torus_.px : domain.width(), cell_side(radius), radius, on);
+    const GridAxis y = grid_axis(on ? torus_.py : domain.height(), cell_side(radius), radius, on);
+    cols_ = x.count;
+    rows_ = y.count;
+    side_x_ = x.side;
+    side_y_ = y.side;
+    inv_side_x_ = x.inv;
+    inv_side_y_ = y.inv;
+    step_x_ = x.step;
+    step_y_ = y.step;
+    reach_x_ = x.reach;
+    reach_y_ = y.reach;
     stride_ = GridCell{cols_} + 2 * kPad;
     const GridCell padded_rows = GridCell{rows_} + 2 * kPad;
     if (padded_rows > static_cast<GridCell>(-1) / stride_) throw std::bad_alloc();

@@ -8,12 +8,35 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "darts/dart_constants.hpp"
+
 namespace pds {
 
 // Cells of `side` needed to cover `length`, at least one.
 inline std::size_t cells_along(double length, double side) {
     const double n = std::ceil(length / side);
     return n < 1.0 ? 1 : static_cast<std::size_t>(n);
+}
+
+// One axis of a one-radius dart grid (dart_grid.hpp, space_time_grid.hpp):
+// ceil(span / side) cells of side `side`; along a torus's period divided
+// evenly instead (span / count wide), so a copy one period away sits exactly
+// `count` cells away (with R at most half a period the cells stay wider
+// than R / 2, at least 0.518 R: the 5 x 5 block still holds every point
+// within R). With the side's inverse, an offset step (side / kOffsetSteps)
+// and R in cells, with a little slack.
+struct GridAxis {
+    std::size_t count;
+    double side, inv, step, reach;
+};
+inline GridAxis grid_axis(double span, double side, double radius, bool period) {
+    GridAxis a;
+    a.count = cells_along(span, side);
+    a.side = period ? span / static_cast<double>(a.count) : side;
+    a.inv = 1.0 / a.side;
+    a.step = a.side / darts::kOffsetSteps;
+    a.reach = radius * a.inv + darts::kReachSlack;
+    return a;
 }
 
 // Cell f (a coordinate in cells) clamped into 0..n-1: rounding may put a

@@ -8,32 +8,19 @@ namespace pds {
 
 SpaceTimeGrid::SpaceTimeGrid(const Box& box, double radius, const Torus& torus) : box_(box), torus_(torus), r_(radius) {
     using namespace darts;
-    const double side = cell_side(radius);
-    cols_ = cells_along(box.width(), side);
-    rows_ = cells_along(box.height(), side);
-    side_x_ = side_y_ = side;
-    if (torus_.on()) {
-        // As dart_grid.hpp's: cells that divide the periods put a copy one
-        // period away exactly cols_ (rows_) cells away; with R at most half
-        // a period they stay wider than R / 2, so the 5 x 5 block still
-        // holds every point within R.
-        box_ = Box{torus_.x0, torus_.y0, torus_.x0 + torus_.px, torus_.y0 + torus_.py};
-        cols_ = cells_along(torus_.px, side);
-        rows_ = cells_along(torus_.py, side);
-        side_x_ = torus_.px / static_cast<double>(cols_);
-        side_y_ = torus_.py / static_cast<double>(rows_);
-    }
-    inv_side_x_ = 1.0 / side_x_;
-    inv_side_y_ = 1.0 / side_y_;
-    step_x_ = side_x_ / kOffsetSteps;
-    step_y_ = side_y_ / kOffsetSteps;
-    reach_x_ = radius * inv_side_x_ + kReachSlack;
-    reach_y_ = radius * inv_side_y_ + kReachSlack;
+    // On the torus, as dart_grid.hpp's: the cells divide the periods
+    // (grid_axis), and span the fundamental domain.
+    const bool on = torus_.on();
+    if (on) box_ = Box{torus_.x0, torus_.y0, torus_.x0 + torus_.px, torus_.y0 + torus_.py};
+    x_ = grid_axis(on ? torus_.px : box_.width(), cell_side(radius), radius, on);
+    y_ = grid_axis(on ? torus_.py : box_.height(), cell_side(radius), radius, on);
+    cols_ = x_.count;
+    rows_ = y_.count;
     r2_low_ = radius * radius * (1.0 - kFilterSlack);
     r2_high_ = radius * radius * (1.0 + kFilterSlack);
     // A sub-square is certified when its farthest corner lies this far
     // inside R: far above the rounding of the corners and distances.
-    const double cover = radius - 4.0 * std::max(step_x_, step_y_);
+    const double cover = radius - 4.0 * std::max(x_.step, y_.step);
     r2_cover_ = cover * cover;
     stride_ = cols_ + 2 * kPad;
     const std::size_t padded_rows = rows_ + 2 * kPad;
@@ -44,14 +31,14 @@ SpaceTimeGrid::SpaceTimeGrid(const Box& box, double radius, const Torus& torus) 
 SpaceTimeGrid::Aim SpaceTimeGrid::aim_in(const Point& p, std::int64_t col, std::int64_t row) const {
     using darts::kPad;
     Aim a;
-    const double fx = (p.x - box_.x0) * inv_side_x_, fy = (p.y - box_.y0) * inv_side_y_;
+    const double fx = (p.x - box_.x0) * x_.inv, fy = (p.y - box_.y0) * y_.inv;
     a.col = col;
     a.row = row;
     a.cell = padded(col, row);
-    a.x_lo = block_offset(fx - reach_x_, a.col, kPad);
-    a.x_hi = block_offset(fx + reach_x_, a.col, kPad);
-    a.y_lo = block_offset(fy - reach_y_, a.row, kPad);
-    a.y_hi = block_offset(fy + reach_y_, a.row, kPad);
+    a.x_lo = block_offset(fx - x_.reach, a.col, kPad);
+    a.x_hi = block_offset(fx + x_.reach, a.col, kPad);
+    a.y_lo = block_offset(fy - y_.reach, a.row, kPad);
+    a.y_hi = block_offset(fy + y_.reach, a.row, kPad);
     return a;
 }
 
@@ -84,7 +71,7 @@ void sub_square_sides(double x0, double y0, double side_x, double side_y, const 
 
 std::uint16_t SpaceTimeGrid::outside(std::int64_t col, std::int64_t row, const Box& domain) const {
     double xs[5], ys[5];
-    sub_square_sides(cell_x0(col), cell_y0(row), side_x_, side_y_, domain, xs, ys);
+    sub_square_sides(cell_x0(col), cell_y0(row), x_.side, y_.side, domain, xs, ys);
     std::uint16_t mask = 0;
     for (int b = 0; b < 4; ++b)
         for (int a = 0; a < 4; ++a)
@@ -108,12 +95,12 @@ std::uint16_t SpaceTimeGrid::covered_by(std::int64_t col, std::int64_t row, cons
     // A sub-square's farthest corner is no nearer than its centre: none is
     // covered when every centre lies beyond R (the usual case for the
     // cells at the block's corners).
-    const double qx = side_x_ / 4.0, qy = side_y_ / 4.0;
+    const double qx = x_.side / 4.0, qy = y_.side / 4.0;
     const double cx = cell_x0(col) + 2.0 * qx, cy = cell_y0(row) + 2.0 * qy;
     const double ex = std::max(std::fabs(q.x - cx) - 1.5 * qx, 0.0), ey = std::max(std::fabs(q.y - cy) - 1.5 * qy, 0.0);
     if (ex * ex + ey * ey >= r_ * r_) return 0;
     double xs[5], ys[5];
-    sub_square_sides(cell_x0(col), cell_y0(row), side_x_, side_y_, domain, xs, ys);
+    sub_square_sides(cell_x0(col), cell_y0(row), x_.side, y_.side, domain, xs, ys);
     // A sub-square lies in the disk iff its farthest corner does: the
     // farther side along x and along y, apart.
     double fx[4], fy[4];

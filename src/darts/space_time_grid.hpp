@@ -51,12 +51,12 @@ public:
     std::size_t cols() const { return cols_; }
     std::size_t rows() const { return rows_; }
     std::size_t cell_count() const { return cols_ * rows_; }
-    double side_x() const { return side_x_; }
-    double side_y() const { return side_y_; }
+    double side_x() const { return x_.side; }
+    double side_y() const { return y_.side; }
     const Torus& torus() const { return torus_; }
     const Box& box() const { return box_; }  // the cells' span (on the torus, the fundamental domain)
-    double cell_x0(std::int64_t col) const { return box_.x0 + static_cast<double>(col) * side_x_; }
-    double cell_y0(std::int64_t row) const { return box_.y0 + static_cast<double>(row) * side_y_; }
+    double cell_x0(std::int64_t col) const { return box_.x0 + static_cast<double>(col) * x_.side; }
+    double cell_y0(std::int64_t row) const { return box_.y0 + static_cast<double>(row) * y_.side; }
     std::size_t padded(std::int64_t col, std::int64_t row) const {
         return static_cast<std::size_t>(row + darts::kPad) * stride_ + static_cast<std::size_t>(col + darts::kPad);
     }
@@ -100,16 +100,16 @@ public:
     static std::uint32_t list_count(Word w) { return static_cast<std::uint32_t>(w >> 32) & 0xFF; }
     // Point `index` at p, in column col, row row (and its copies).
     void write(std::int64_t col, std::int64_t row, const Point& p, std::uint32_t index) {
-        const std::uint64_t sx = offset_steps(p.x - cell_x0(col), step_x_);
-        const std::uint64_t sy = offset_steps(p.y - cell_y0(row), step_y_);
+        const std::uint64_t sx = offset_steps(p.x - cell_x0(col), x_.step);
+        const std::uint64_t sy = offset_steps(p.y - cell_y0(row), y_.step);
         store_with_copies(col, row, (sy << 48) | (sx << 32) | (std::uint64_t{index} + 1));
     }
     static std::uint32_t index_of(Word w) { return static_cast<std::uint32_t>(w) - 1; }
     // The point a word holds, from its rounded offsets (within 2^-17 of a
     // cell of the exact point, or of its copy in the padding, a side).
     Point rounded(Word w, std::int64_t col, std::int64_t row) const {
-        return Point{cell_x0(col) + (static_cast<double>((w >> 32) & 0xFFFF) + 0.5) * step_x_,
-                     cell_y0(row) + (static_cast<double>(w >> 48) + 0.5) * step_y_};
+        return Point{cell_x0(col) + (static_cast<double>((w >> 32) & 0xFFFF) + 0.5) * x_.step,
+                     cell_y0(row) + (static_cast<double>(w >> 48) + 0.5) * y_.step};
     }
     // Whether q, read rounded from a word, lies within R of p: -1 surely
     // not, 1 surely, 0 too close to R to say from the rounding.
@@ -143,8 +143,8 @@ private:
 
     Box box_{0, 0, 1, 1};
     Torus torus_;
-    double r_ = 1.0, side_x_ = 1.0, side_y_ = 1.0, inv_side_x_ = 1.0, inv_side_y_ = 1.0;
-    double step_x_ = 1.0, step_y_ = 1.0, reach_x_ = 1.0, reach_y_ = 1.0;
+    double r_ = 1.0;
+    GridAxis x_{1, 1.0, 1.0, 1.0, 1.0}, y_{1, 1.0, 1.0, 1.0, 1.0};  // grid_axis()
     double r2_low_ = 1.0, r2_high_ = 1.0, r2_cover_ = 1.0;
     std::size_t cols_ = 0, rows_ = 0, stride_ = 0;
     DenseCells cells_;

@@ -139,59 +139,45 @@ START_TEST(pinned_field_outputs)
 }
 END_TEST
 
-/* The unit L with a hole (shapes.c) at R 0.01, by the default process and
- * by the parallel one (pds_set_threads), which is the same on 1, 2 and 3
- * threads, whole and in calls of 97 points. */
-struct golden_polygon {
+/* Domains users have: the unit L with a hole (shapes.c) at R 0.01, seed 3,
+ * and the torus [0,1.5)x[0,1) at R 0.01, seed 4; each by the default
+ * process and by the parallel one (pds_set_threads), which is the same on
+ * 1, 2 and 3 threads, whole and in calls of 97 points. */
+struct golden_domain {
+    int torus;        /* the torus, else the L */
     size_t chunk;
     unsigned threads; /* pds_set_threads(s, threads - 1) first; 0: no call */
     size_t count;
     uint64_t hash;
 };
 
-static const struct golden_polygon polygon_cases[] = {
-    {0, 0, 4425, 0x13dfd6af50dd8c00ull},
-    {0, 2, 4425, 0xf5a1a08333968701ull},
-    {97, 3, 4425, 0xf5a1a08333968701ull},
-    {0, 4, 4425, 0xf5a1a08333968701ull},
+static const struct golden_domain domain_cases[] = {
+    {0, 0, 0, 4425, 0x13dfd6af50dd8c00ull},
+    {0, 0, 2, 4425, 0xf5a1a08333968701ull},
+    {0, 97, 3, 4425, 0xf5a1a08333968701ull},
+    {0, 0, 4, 4425, 0xf5a1a08333968701ull},
+    {1, 0, 0, 10454, 0x08bf749a26c343acull},
+    {1, 0, 2, 10420, 0x90a5b45a96979b57ull},
+    {1, 97, 3, 10420, 0x90a5b45a96979b57ull},
+    {1, 0, 4, 10420, 0x90a5b45a96979b57ull},
 };
 
-START_TEST(pinned_polygon_outputs)
+START_TEST(pinned_domain_outputs)
 {
-    const struct golden_polygon *g = &polygon_cases[_i];
+    const struct golden_domain *g = &domain_cases[_i];
     pds_sampler *s = NULL;
 
-    ck_assert_int_eq(pds_create(&s, 0.01, 3), 0);
-    ck_assert_int_eq(pds_set_polygon(s, UNIT_L.xy, UNIT_L.ends, UNIT_L.nrings), 0);
+    ck_assert_int_eq(pds_create(&s, 0.01, g->torus ? 4 : 3), 0);
+    if (g->torus) {
+        ck_assert_int_eq(pds_set_domain(s, 0.0, 0.0, 1.5, 1.0), 0);
+        ck_assert_int_eq(pds_set_periodic(s, 1), 0);
+    } else {
+        ck_assert_int_eq(pds_set_polygon(s, UNIT_L.xy, UNIT_L.ends, UNIT_L.nrings), 0);
+    }
     if (g->threads > 0)
         ck_assert_int_eq(pds_set_threads(s, g->threads - 1), 0);
     run_all(s, g->chunk);
-    assert_pinned(s, g->count, g->hash, "polygon case", _i);
-}
-END_TEST
-
-/* The torus [0,1.5)x[0,1) at R 0.01, seed 4, by the default process and by
- * the parallel one, the same on 1, 2 and 3 threads, whole and in calls of
- * 97 points. */
-static const struct golden_polygon torus_cases[] = {
-    {0, 0, 10454, 0x08bf749a26c343acull},
-    {0, 2, 10420, 0x90a5b45a96979b57ull},
-    {97, 3, 10420, 0x90a5b45a96979b57ull},
-    {0, 4, 10420, 0x90a5b45a96979b57ull},
-};
-
-START_TEST(pinned_torus_outputs)
-{
-    const struct golden_polygon *g = &torus_cases[_i];
-    pds_sampler *s = NULL;
-
-    ck_assert_int_eq(pds_create(&s, 0.01, 4), 0);
-    ck_assert_int_eq(pds_set_domain(s, 0.0, 0.0, 1.5, 1.0), 0);
-    ck_assert_int_eq(pds_set_periodic(s, 1), 0);
-    if (g->threads > 0)
-        ck_assert_int_eq(pds_set_threads(s, g->threads - 1), 0);
-    run_all(s, g->chunk);
-    assert_pinned(s, g->count, g->hash, "torus case", _i);
+    assert_pinned(s, g->count, g->hash, g->torus ? "torus case" : "polygon case", _i);
 }
 END_TEST
 
@@ -202,8 +188,7 @@ Suite *golden_suite(void)
     tcase_set_timeout(tc, 120);
     tcase_add_loop_test(tc, pinned_outputs, 0, (int)(sizeof cases / sizeof cases[0]));
     tcase_add_loop_test(tc, pinned_field_outputs, 0, (int)(sizeof field_cases / sizeof field_cases[0]));
-    tcase_add_loop_test(tc, pinned_polygon_outputs, 0, (int)(sizeof polygon_cases / sizeof polygon_cases[0]));
-    tcase_add_loop_test(tc, pinned_torus_outputs, 0, (int)(sizeof torus_cases / sizeof torus_cases[0]));
+    tcase_add_loop_test(tc, pinned_domain_outputs, 0, (int)(sizeof domain_cases / sizeof domain_cases[0]));
     suite_add_tcase(s, tc);
     return s;
 }
