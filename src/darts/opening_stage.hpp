@@ -9,7 +9,9 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
+#include "core/point.hpp"
 #include "core/poll.hpp"
 #include "jones/stage.hpp"
 
@@ -17,6 +19,7 @@ namespace pds {
 
 class Frame;
 class JonesStage;
+class PointRadii;
 class RadiusField;
 
 class OpeningStage : public Stage {
@@ -33,6 +36,15 @@ public:
     // Threads the stage may use from its next step on (at least 1); a stage
     // that runs on one thread ignores it. Never changes the points.
     virtual void set_threads(unsigned) {}
+    // Fixed points (internal frame) with their values, before the first
+    // point: the stage holds them as its first points, keeps its darts out
+    // of their clearance disks (radii.radius_of(value)), gives its own
+    // points new_value and hands all over. False when the stage cannot
+    // (only the space-time process can), and it must then not be used.
+    virtual bool hold_fixed(const std::vector<Point>& /*points*/, const std::vector<double>& /*values*/,
+                            const PointRadii& /*radii*/, double /*new_value*/) {
+        return false;
+    }
 };
 
 // Whether a run with these settings opens with darts: frame at the radius in

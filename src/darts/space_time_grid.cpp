@@ -92,13 +92,24 @@ std::uint16_t SpaceTimeGrid::covered_by_disks_at(const Point& p, const Aim& a, c
 }
 
 std::uint16_t SpaceTimeGrid::covered_by(std::int64_t col, std::int64_t row, const Point& q, const Box& domain) const {
+    return covered_within(col, row, q, r_, r2_cover_, domain);
+}
+
+std::uint16_t SpaceTimeGrid::covered_by_disk(std::int64_t col, std::int64_t row, const Point& q, double radius,
+                                             const Box& domain) const {
+    const double cover = radius - 4.0 * std::max(x_.step, y_.step);
+    return cover > 0.0 ? covered_within(col, row, q, radius, cover * cover, domain) : 0;
+}
+
+std::uint16_t SpaceTimeGrid::covered_within(std::int64_t col, std::int64_t row, const Point& q, double radius,
+                                            double cover2, const Box& domain) const {
     // A sub-square's farthest corner is no nearer than its centre: none is
     // covered when every centre lies beyond R (the usual case for the
     // cells at the block's corners).
     const double qx = x_.side / 4.0, qy = y_.side / 4.0;
     const double cx = cell_x0(col) + 2.0 * qx, cy = cell_y0(row) + 2.0 * qy;
     const double ex = std::max(std::fabs(q.x - cx) - 1.5 * qx, 0.0), ey = std::max(std::fabs(q.y - cy) - 1.5 * qy, 0.0);
-    if (ex * ex + ey * ey >= r_ * r_) return 0;
+    if (ex * ex + ey * ey >= radius * radius) return 0;
     double xs[5], ys[5];
     sub_square_sides(cell_x0(col), cell_y0(row), x_.side, y_.side, domain, xs, ys);
     // A sub-square lies in the disk iff its farthest corner does: the
@@ -113,7 +124,7 @@ std::uint16_t SpaceTimeGrid::covered_by(std::int64_t col, std::int64_t row, cons
     std::uint16_t mask = 0;
     for (int b = 0; b < 4; ++b)
         for (int a = 0; a < 4; ++a)
-            if (fx[a] + fy[b] < r2_cover_) mask = static_cast<std::uint16_t>(mask | 1u << (4 * b + a));
+            if (fx[a] + fy[b] < cover2) mask = static_cast<std::uint16_t>(mask | 1u << (4 * b + a));
     return mask;
 }
 

@@ -128,6 +128,9 @@ public:
     // margin far above every rounding, so a bit set is a sub-square covered.
     // The sub-squares are clipped to `domain` (darts never land outside it).
     std::uint16_t covered_by(std::int64_t col, std::int64_t row, const Point& q, const Box& domain) const;
+    // The same for the disk of `radius` around q (a fixed point's clearance).
+    std::uint16_t covered_by_disk(std::int64_t col, std::int64_t row, const Point& q, double radius,
+                                  const Box& domain) const;
     // The sub-squares of p's cell (aimed at by a) that lie in one of the
     // disks around p, from the grid's points not surely beyond R of p.
     std::uint16_t covered_by_disks_at(const Point& p, const Aim& a, const Box& domain) const;
@@ -139,6 +142,10 @@ public:
     void release() { cells_.release(); }
 
 private:
+    // The sub-squares whose farthest corner lies within sqrt(cover2) of q
+    // (none when every centre lies beyond radius).
+    std::uint16_t covered_within(std::int64_t col, std::int64_t row, const Point& q, double radius, double cover2,
+                                 const Box& domain) const;
     void store_copies(std::int64_t col, std::int64_t row, Word w);
 
     Box box_{0, 0, 1, 1};

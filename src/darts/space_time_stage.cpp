@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include "core/predicates.hpp"
 #include "core/prefetch.hpp"
@@ -66,7 +67,12 @@ SpaceTimeDartStage::SpaceTimeDartStage(const Rectangle& domain, std::shared_ptr<
                                          inside_);
         if (!rastered_) return;
     }
-    // The active cells: those with a sub-square in the domain.
+    list_active_cells();
+}
+
+void SpaceTimeDartStage::list_active_cells() {
+    // The active cells: those with a sub-square in the domain, not known covered.
+    const std::size_t cells = grid_.cell_count();
     std::size_t active = 0;
     for (std::size_t c = 0; c < cells; ++c) active += masks_[c] != SpaceTimeGrid::kAllCovered;
     active_.resize(active);
@@ -75,16 +81,36 @@ SpaceTimeDartStage::SpaceTimeDartStage(const Rectangle& domain, std::shared_ptr<
         if (masks_[c] != SpaceTimeGrid::kAllCovered) active_[active++] = static_cast<std::uint32_t>(c);
 }
 
+bool SpaceTimeDartStage::hold_fixed(const std::vector<Point>& points, const std::vector<double>& values,
+                                    const PointRadii& radii, double new_value) {
+    if (epoch_ != 0 || !points_.empty()) throw std::logic_error("hold_fixed after the first epoch");
+    std::vector<double> clearances(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) clearances[k] = radii.radius_of(values[k]);
+    // The disks' bounding boxes may span a few times the grid (one covering
+    // the domain spans it once); beyond, the Jones loop alone is cheaper.
+    if (!fixed_disks_.build(grid_, points, clearances, masks_, 4 * grid_.cell_count() + (std::size_t{1} << 20)))
+        return false;
+    list_active_cells();
+    points_ = points;
+    values_ = values;
+    fixed_ = points.size();
+    new_value_ = new_value;
+    radii_.emplace(radii);
+    return true;
+}
+
 SpaceTimeDartStage::~SpaceTimeDartStage() = default;
 
 void SpaceTimeDartStage::reserve(std::size_t points) {
     points_.reserve(points);
+    if (fixed_ != 0) values_.reserve(points);
     curve_.reserve(points);
     grid_.reserve(points);
 }
 
 bool SpaceTimeDartStage::has_room_for(std::size_t points) const {
-    return points_.capacity() >= points && curve_.has_room_for(points);
+    return points_.capacity() >= points && (fixed_ == 0 || values_.capacity() >= points) &&
+           curve_.has_room_for(points);
 }
 
 const Point* SpaceTimeDartStage::next(Rng&) {
@@ -215,6 +241,7 @@ void SpaceTimeDartStage::draw(Band& band) {
                 continue;
             }
             if (polygon_ && !(inside_[cell] >> sub & 1u) && !polygon_->contains(p)) continue;
+            if (fixed_disks_.listed(cell) && fixed_disks_.covers(p, cell)) continue;
             // Only the earlier epochs' points are in the grid now, numbered.
             const SpaceTimeGrid::Aim a = grid_.aim_in(p, col, row);  // an active cell holds no point
             const auto covers = [&](int di, int dj) {
@@ -338,19 +365,23 @@ void SpaceTimeDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {
     std::vector<std::uint16_t>().swap(masks_);
     std::vector<std::uint16_t>().swap(inside_);
     std::vector<Point>().swap(pending_);
+    fixed_disks_ = FixedDisks{};
     next_pending_ = 0;
     const std::uint32_t* order = curve_.order(points_, threads_);
     poll();
-    jones.adopt(points_, order, nullptr, poll, MeshBuild::whole);
+    jones.adopt(points_, order, fixed_ != 0 ? &values_ : nullptr, poll, MeshBuild::whole);
     jones.carry_darts(SpaceTimeStream::salted(seed_), epoch_);
 }
 
-double SpaceTimeDartStage::free_area() const {
-    return jones_of_points(domain_, polygon_, r_, torus_, nullptr, points_, nullptr, curve_)->free_area();
+std::unique_ptr<JonesStage> SpaceTimeDartStage::jones_of_points() const {
+    std::unique_ptr<JonesStage> jones = pds::jones_of_points(domain_, polygon_, r_, torus_, radii_ ? &*radii_ : nullptr,
+                                                             points_, fixed_ != 0 ? &values_ : nullptr, curve_);
+    jones->set_fixed(fixed_);
+    return jones;
 }
 
-VerifyReport SpaceTimeDartStage::verify() const {
-    return jones_of_points(domain_, polygon_, r_, torus_, nullptr, points_, nullptr, curve_)->verify();
-}
+double SpaceTimeDartStage::free_area() const { return jones_of_points()->free_area(); }
+
+VerifyReport SpaceTimeDartStage::verify() const { return jones_of_points()->verify(); }
 
 }  // namespace pds

@@ -43,17 +43,20 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/point.hpp"
 #include "core/torus.hpp"
 #include "core/worker_pool.hpp"
 #include "darts/curve_order.hpp"
+#include "darts/fixed_disks.hpp"
 #include "darts/opening_stage.hpp"
 #include "darts/space_time_grid.hpp"
 #include "core/space_time_stream.hpp"
 #include "domain/polygon.hpp"
 #include "domain/rectangle.hpp"
+#include "radius/point_radii.hpp"
 
 namespace pds {
 
@@ -66,6 +69,15 @@ public:
                        std::uint64_t seed, const Torus& torus = Torus{});
     ~SpaceTimeDartStage() override;
 
+    // Fixed points, before the first epoch: they become the stage's first
+    // points (as they are the Jones stage's after the hand-over), with
+    // their values (radii.radius_of(value): the clearance), and the new
+    // points get new_value. A dart inside a clearance disk is covered
+    // (fixed_disks.hpp). False, and the stage must not be used, when the
+    // disks would take too long to lay over the grid. Throws std::bad_alloc.
+    bool hold_fixed(const std::vector<Point>& points, const std::vector<double>& values, const PointRadii& radii,
+                    double new_value) override;
+
     void set_threads(unsigned n) override { threads_ = n == 0 ? 1 : n; }
     void reserve(std::size_t points) override;
     bool has_room_for(std::size_t points) const override;
@@ -73,9 +85,12 @@ public:
 
     std::size_t count() const override { return points_.size(); }
     const Point& point(PointIndex k) const override { return points_[k]; }
-    double value(PointIndex) const override { return 0.0; }
+    double value(PointIndex k) const override { return fixed_ != 0 ? values_[k] : 0.0; }
     const Point* next(Rng& rng) override;
-    void add_next() override { points_.push_back(pending_[next_pending_++]); }
+    void add_next() override {
+        points_.push_back(pending_[next_pending_++]);
+        if (fixed_ != 0) values_.push_back(new_value_);
+    }
     double free_area() const override;
     VerifyReport verify() const override;
 
@@ -107,6 +122,8 @@ private:
     void merge();
     void write_points(Band& band);
     void drop_covered(Band& band);
+    void list_active_cells();
+    std::unique_ptr<JonesStage> jones_of_points() const;
     const Point& numbered_point(std::uint32_t index) const {
         // Point k of the last epoch is points_[k] once handed out.
         return index < points_.size() ? points_[index] : pending_[index - pending_base_];
@@ -124,7 +141,12 @@ private:
     std::vector<std::uint32_t> active_;  // active cells, in increasing order
     std::vector<std::uint16_t> masks_;   // each cell's sub-squares known covered (one disk each) or outside
     std::vector<std::uint16_t> inside_;  // each cell's sub-squares wholly inside the polygon (none without)
-    std::vector<Point> points_;          // handed out
+    std::vector<Point> points_;          // the fixed ones, then those handed out
+    std::size_t fixed_ = 0;              // fixed points (hold_fixed)
+    std::vector<double> values_;         // with fixed points: each point's value
+    double new_value_ = 0.0;
+    std::optional<PointRadii> radii_;    // with fixed points
+    FixedDisks fixed_disks_;
     std::vector<Point> pending_;         // the last epoch's points, by time
     std::size_t pending_base_ = 0, next_pending_ = 0;
     std::size_t epoch_ = 0;

@@ -5,7 +5,6 @@
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
-#include <type_traits>
 
 #include "core/space_time_stream.hpp"
 #include "core/worker_pool.hpp"
@@ -18,15 +17,15 @@
 namespace pds {
 
 namespace {
-// One radius, in a rectangle, a polygon or on the torus: the runs the
-// parallel opening hands over.
-template <class Space, class Rule>
-constexpr bool kCarriesDarts = std::is_same_v<Rule, OneRadius>;
 }  // namespace
 
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::carry_darts(std::uint64_t salted_seed, std::size_t epoch) {
-    if constexpr (kCarriesDarts<Space, Rule>) {
+    // The runs the parallel opening hands over: one radius for every new
+    // point (with fixed points, whose clearances are power disks, too), in
+    // a rectangle, a polygon or on the torus. Their darts are decided
+    // against one another by that radius.
+    if (rule_.new_radius_is(r_)) {
         // Another salt: these streams share nothing with the opening's.
         Torus torus;
         if constexpr (Space::kPeriodic) torus = space_.copies().torus();
@@ -152,6 +151,11 @@ void JonesLoop<Space, Rule>::draw_in_region(const MeshCells& cells, SiteIndex si
     const double bound = tree_.weight(site);
     Rng rng(seed);
     const VertexIndex vx = vertex_of(site);
+    if (rule_.hidden(dt_, vx)) {
+        // A disk whose power cell later, larger ones took: no ring, no area.
+        out.bounds.push_back(RegionDarts::Bound{site, 0.0});
+        return;
+    }
     const CellQuery q = cells.query(vx);
     double weight = bound;
     bool exact = false;  // weight is the cell's exact free area
@@ -193,7 +197,7 @@ void JonesLoop<Space, Rule>::draw_in_region(const MeshCells& cells, SiteIndex si
         };
         Point drawn;
         const double piece_u = rng.next_double();
-        const bool retry = !cells.cut();
+        const bool retry = rule_.retry_in_piece(dt_, vx) && !cells.cut();
         if (sample_chunk(q, sel.chunk(), piece_u, rng, accept, kMaxDraws, &drawn, retry) == SampleOutcome::placed)
             out.darts.push_back(RegionDarts::Dart{chosen, rng.next_double(), vx});
         // else: a refused draw in a cut cell, or 64 in a healthy piece

@@ -61,6 +61,8 @@ public:
         return ok;
     }
     bool retry_in_piece(const Delaunay&, VertexIndex) const { return true; }
+    // Every new point's radius is r (the free regions' darts decide theirs by it).
+    bool new_radius_is(double) const { return true; }
     template <class Loop>
     void rescale(Loop&, const PointRadii*) {}
 };
@@ -104,6 +106,9 @@ public:
     // Whether v's site lies in its own power cell; if not, its fan's pieces
     // reach outside the cell (free_area.hpp) and a draw outside rejects the
     // whole selection.
+    // Every new point's radius is r: a constant field (one radius with
+    // fixed points, whose clearances are the other disks).
+    bool new_radius_is(double r) const { return radii_.constant() && radii_.rmin() == r; }
     bool retry_in_piece(const Delaunay& dt, VertexIndex v) const {
         const Point& c = dt.point(v);
         const double rc = dt.radius(v);

@@ -15,7 +15,9 @@ Sampler::Sampler(double radius, std::uint64_t seed)
     : frame_(Box{0.0, 0.0, 1.0, 1.0}, radius), seed_(seed), rng_(seed) {}
 
 bool Sampler::use_darts() const {
-    return !skip_darts_ && !has_fixed() &&
+    // Fixed points: only the parallel process with one radius opens with
+    // darts (it keeps them out of the clearances); else the Jones loop alone.
+    return !skip_darts_ && (!has_fixed() || (parallel_ && !varying_field())) &&
            opening_stage_suits(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr);
 }
 
@@ -169,7 +171,20 @@ void Sampler::prepare(std::size_t points) {
         if (use_darts())
             darts = make_opening_stage(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr,
                                        parallel_ ? std::optional<std::uint64_t>(seed_) : std::nullopt);
-        const std::size_t fixed = has_fixed() ? adopt_fixed(*jones, points) : 0;
+        std::size_t fixed = 0;
+        if (has_fixed()) {
+            std::vector<Point> at;
+            std::vector<double> values;
+            prepare_fixed(at, values);
+            const Point corner{frame_.box().x0, frame_.box().y0};  // the radius is one: any point's value
+            if (darts && !darts->hold_fixed(at, values, *radii, radii->value_at(corner))) darts.reset();
+            if (!darts) {
+                jones->reserve(points + at.size());
+                jones->adopt(at, identity_order(at.size()).data(), &values, Poll{});
+                jones->set_fixed(at.size());
+            }
+            fixed = at.size();
+        }
         if (region_draws_) jones->draw_cut_cells_by_region();
         if (region_darts_per_cell_ > 0.0) jones->set_region_darts_per_cell(region_darts_per_cell_);
         if (region_darts_from_start_) jones->carry_darts(SpaceTimeStream::salted(seed_), 0);
@@ -185,13 +200,13 @@ void Sampler::prepare(std::size_t points) {
         jones_->set_threads(threads_);
         if (darts_) darts_->set_threads(threads_);
     }
-    const bool room = jones_->has_room_for(points + adopted_fixed_) && (!darts_ || darts_->has_room_for(points));
+    const bool room = jones_->has_room_for(points + adopted_fixed_) && (!darts_ || darts_->has_room_for(points + adopted_fixed_));
     if (room) return;
     const std::size_t cap = std::min(smallest_frame().count_bound_points(), Frame::max_points());
     constexpr std::size_t kFirstRoom = 64;  // points reserved at the first growth, at least
     const std::size_t want = std::max(points, std::min(2 * count() + kFirstRoom, cap));
     jones_->reserve(want + adopted_fixed_);
-    if (darts_) darts_->reserve(want);
+    if (darts_) darts_->reserve(want + adopted_fixed_);
 }
 
 const Point* Sampler::next_point() {
@@ -249,6 +264,7 @@ void Sampler::hand_over() {
     }
     darts_->hand_over_to(*jones_, poll);
     darts_.reset();
+    jones_->set_fixed(adopted_fixed_);  // the opening held them first
 }
 
 bool Sampler::step() {

@@ -166,7 +166,11 @@ private:
     }
     // Makes the fixed points the Jones stage's first vertices; returns how
     // many (a position given twice is one point, with its larger clearance).
-    std::size_t adopt_fixed(JonesStage& jones, std::size_t room);
+    // The fixed points in the internal frame, with their values (the
+    // clearance, or the radius at the point), repeats dropped and near ones
+    // merged. Throws DomainError (a point outside the box).
+    void prepare_fixed(std::vector<Point>& points, std::vector<double>& values) const;
+    static std::vector<std::uint32_t> identity_order(std::size_t n);
     static void drop_repeated_fixed(std::vector<Point>& points, std::vector<double>& values);
     static void merge_nearly_coincident_fixed(std::vector<Point>& points, std::vector<double>& values, double tol);
     bool use_darts() const;

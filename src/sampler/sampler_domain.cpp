@@ -143,10 +143,10 @@ void Sampler::set_fixed(std::vector<Point> points, std::vector<double> clearance
     fixed_clearance_ = std::move(clearances);
 }
 
-std::size_t Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
+void Sampler::prepare_fixed(std::vector<Point>& points, std::vector<double>& values) const {
     const PointRadii radii = *point_radii(frame_);
-    std::vector<Point> points;
-    std::vector<double> values;
+    points.clear();
+    values.clear();
     points.reserve(fixed_.size());
     values.reserve(fixed_.size());
     const double rmax = varying_field() ? field_->rmax() : fixed_radius_;
@@ -175,12 +175,12 @@ std::size_t Sampler::adopt_fixed(JonesStage& jones, std::size_t room) {
     }
     drop_repeated_fixed(points, values);
     merge_nearly_coincident_fixed(points, values, std::ldexp(frame_.r(), -40));
-    std::vector<std::uint32_t> order(points.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
-    jones.reserve(room + points.size());
-    jones.adopt(points, order.data(), &values, Poll{});
-    jones.set_fixed(points.size());
-    return points.size();
+}
+
+std::vector<std::uint32_t> Sampler::identity_order(std::size_t n) {
+    std::vector<std::uint32_t> order(n);
+    for (std::size_t k = 0; k < n; ++k) order[k] = static_cast<std::uint32_t>(k);
+    return order;
 }
 
 void Sampler::merge_nearly_coincident_fixed(std::vector<Point>& points, std::vector<double>& values, double tol) {

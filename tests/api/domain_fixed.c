@@ -12,7 +12,8 @@
  * from its fixed point; fixed points count for coverage, may lie outside the
  * polygon, and are neither returned nor counted. Runs split, canceled,
  * counted and refined behave as without them (domain_runs.c), and the law is
- * random sequential adsorption conditioned on them (domain_law.c).
+ * random sequential adsorption conditioned on them (domain_law.c), by the
+ * default process and by the parallel one on 1, 2 and 3 threads.
  *
  * The law measured (1.4.0, 2000 patterns each side, R 0.1): N 45.913 against
  * the reference's 45.930 (z -0.27), nearest neighbour z 0.34, near the
@@ -370,6 +371,37 @@ START_TEST(law_conditioned_on_fixed_points)
 }
 END_TEST
 
+/* The parallel process (its opening keeps the darts out of the clearance
+ * disks; the free regions' darts run in the power cells) on 1, 2 and 3
+ * threads. */
+static void set_fixed_on_1_thread(pds_sampler *s)
+{
+    set_fixed(s);
+    ck_assert_int_eq(pds_set_threads(s, 1), 0);
+}
+static void set_fixed_on_2_threads(pds_sampler *s)
+{
+    set_fixed(s);
+    ck_assert_int_eq(pds_set_threads(s, 2), 0);
+}
+static void set_fixed_on_3_threads(pds_sampler *s)
+{
+    set_fixed(s);
+    ck_assert_int_eq(pds_set_threads(s, 3), 0);
+}
+static const law_case law_with_fixed_threads[3] = {
+    {"the L with 3 fixed points on 1 thread", set_fixed_on_1_thread, law_disks, 3},
+    {"the L with 3 fixed points on 2 threads", set_fixed_on_2_threads, law_disks, 3},
+    {"the L with 3 fixed points on 3 threads", set_fixed_on_3_threads, law_disks, 3},
+};
+
+START_TEST(law_conditioned_on_fixed_points_on_threads)
+{
+    fixed_disks(LAW_R, LAW_R, law_disks);
+    law_compare(&law_with_fixed_threads[_i]);
+}
+END_TEST
+
 Suite *domain_fixed_suite(void)
 {
     Suite *s = suite_create("domain_fixed");
@@ -395,5 +427,6 @@ Suite *domain_fixed_suite(void)
     tc = new_tcase(s, "law");
     tcase_add_test(tc, coverage_check_finds_a_removed_point);
     tcase_add_test(tc, law_conditioned_on_fixed_points);
+    tcase_add_loop_test(tc, law_conditioned_on_fixed_points_on_threads, 0, 3);
     return s;
 }

@@ -1,0 +1,213 @@
+// test_space_time_fixed.cpp - the parallel process with fixed points: the
+// opening keeps its darts out of the clearance disks (fixed_disks.hpp) and
+// the free regions' darts run in the power cells. The disks' marked
+// sub-squares lie inside them and every point inside one is marked or its
+// cell lists the disk; no point lands inside a clearance; the points never
+// depend on the threads or the calls; disks too costly to lay over the grid
+// leave the run to the Jones loop alone, as without threads.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "core/predicates.hpp"
+#include "core/rng.hpp"
+#include "darts/fixed_disks.hpp"
+#include "darts/space_time_grid.hpp"
+#include "sampler/sampler.hpp"
+#include "suites.hpp"
+#include "threaded_runs.hpp"
+
+namespace {
+
+// Clearances of every kind: 0 (the radius), small, large, one disk inside
+// another (its power cell empty: hidden), one on the box's edge.
+const std::vector<pds::Point> kFixed = {{0.3, 0.3}, {0.7, 0.25}, {0.72, 0.27}, {0.5, 0.8}, {1.0, 0.5}, {0.1, 0.9}};
+const std::vector<double> kClearance = {0.0, 0.002, 0.004, 0.15, 0.08, 0.3};
+
+pds::Sampler with_fixed(double r, std::uint64_t seed, bool polygon) {
+    pds::Sampler s(r, seed);
+    if (polygon) {
+        // An L with a square hole, as the API's tests use.
+        const double xy[] = {0, 0, 1, 0, 1, 0.5, 0.5, 0.5, 0.5, 1, 0, 1, 0.15, 0.15, 0.35, 0.15, 0.35, 0.35, 0.15, 0.35};
+        const std::size_t ends[] = {6, 10};
+        s.set_polygon(xy, ends, 2);
+    }
+    s.set_fixed(kFixed, kClearance);
+    return s;
+}
+
+// No point strictly inside a clearance at radius r, the run having started
+// at r0 (the clearances scale with the radius; the domain is the unit
+// square, the internal units are the user's).
+void assert_clear(const ThreadedRun& run, double r, double r0) {
+    for (std::size_t i = 0; i < run.xy.size() / 2; ++i)
+        for (std::size_t k = 0; k < kFixed.size(); ++k) {
+            const double c = kClearance[k] > 0.0 ? kClearance[k] * (r / r0) : r;
+            if (pds::compare_distance(pds::Point{run.xy[2 * i], run.xy[2 * i + 1]}, kFixed[k], c) < 0)
+                ck_abort_msg("point %zu inside fixed point %zu's clearance", i, k);
+        }
+}
+
+}  // namespace
+
+START_TEST(same_points_with_fixed_points_on_any_number_of_threads) {
+    const unsigned most = test_light() ? 3 : 8;
+    for (int polygon = 0; polygon < 2; ++polygon) {
+        pds::Sampler first = with_fixed(0.01, 7, polygon != 0);
+        const ThreadedRun one = run_threaded(first, 1);
+        ck_assert(one.maximal);
+        assert_clear(one, 0.01, 0.01);
+        // The opening and the free regions' darts placed most points.
+        ck_assert_msg(first.jones().region_stats().points > one.xy.size() / 2 / 20, "%zu region points of %zu",
+                      first.jones().region_stats().points, one.xy.size() / 2);
+        for (unsigned t = 2; t <= most; ++t) {
+            pds::Sampler s = with_fixed(0.01, 7, polygon != 0);
+            assert_same(one, run_threaded(s, t), "threads");
+        }
+        pds::Sampler split = with_fixed(0.01, 7, polygon != 0);
+        assert_same(one, run_threaded(split, 3, 777, 1), "777 a call, then 1 thread");
+        // Another process than the default one (the Jones loop alone).
+        pds::Sampler plain = with_fixed(0.01, 7, polygon != 0);
+        std::size_t added = 0;
+        plain.run(0, &added);
+        std::vector<double> xy(2 * plain.count());
+        plain.copy_points(0, plain.count(), xy.data());
+        ck_assert(xy.size() != one.xy.size() || std::memcmp(xy.data(), one.xy.data(), xy.size() * 8) != 0);
+    }
+}
+END_TEST
+
+// Count mode: exactly n points, stopped short of maximal (maximal at the
+// radius before the last step, pds_set_count), apart and clear.
+std::vector<double> counted(unsigned threads, std::size_t n) {
+    pds::Sampler s = with_fixed(0.02, 9, false);
+    s.set_count(n);
+    const double r0 = s.radius();
+    s.set_threads(threads);
+    std::size_t added = 0;
+    while (s.run(777, &added) != pds::Sampler::RunEnd::complete) {
+    }
+    std::vector<double> xy(2 * s.count());
+    s.copy_points(0, s.count(), xy.data());
+    ck_assert_uint_eq(s.count(), n);
+    ThreadedRun run;
+    run.xy = xy;
+    assert_clear(run, s.radius(), r0);
+    return xy;
+}
+
+START_TEST(count_mode_and_refine_with_fixed_points_on_threads) {
+    // Count mode lowers the radius (the clearances scale with it), a refine
+    // hands the opening over: the same on 1 and 3 threads.
+    const std::vector<double> one = counted(1, 3000), three = counted(3, 3000);
+    ck_assert(one.size() == three.size() && std::memcmp(one.data(), three.data(), one.size() * 8) == 0);
+    ThreadedRun refined[2];
+    for (int k = 0; k < 2; ++k) {
+        pds::Sampler u = with_fixed(0.02, 9, true);
+        std::size_t added = 0;
+        u.set_threads(k == 0 ? 1 : 3);
+        u.run(500, &added);
+        u.refine(0.012);
+        refined[k] = run_threaded(u, k == 0 ? 1 : 3);
+        ck_assert(refined[k].maximal);
+    }
+    assert_same(refined[0], refined[1], "refined");
+}
+END_TEST
+
+START_TEST(fixed_disks_mark_and_list_the_cells_they_meet) {
+    // Sub-squares marked lie inside a disk (corners and inner points); a
+    // random point strictly inside a disk is in a marked sub-square or in a
+    // cell that lists the disk, and covers() says so.
+    const pds::Box box{0, 0, 1, 0.8};
+    const pds::SpaceTimeGrid grid(box, 0.02);
+    pds::Rng rng(5);
+    std::vector<pds::Point> centres;
+    std::vector<double> radii;
+    for (int k = 0; k < 40; ++k) {
+        centres.push_back(pds::Point{rng.next_double(), 0.8 * rng.next_double()});
+        radii.push_back(k % 4 == 0 ? 0.3 * rng.next_double() : 0.04 * rng.next_double());
+    }
+    std::vector<std::uint16_t> masks(grid.cell_count(), 0);
+    pds::FixedDisks disks;
+    ck_assert(disks.build(grid, centres, radii, masks, 1u << 24));
+    const double sx = grid.side_x(), sy = grid.side_y();
+    std::size_t marked = 0;
+    for (std::size_t cell = 0; cell < grid.cell_count(); ++cell)
+        for (unsigned bit = 0; bit < 16; ++bit) {
+            if (!(masks[cell] >> bit & 1u)) continue;
+            ++marked;
+            const auto col = static_cast<std::int64_t>(cell % grid.cols()), row = static_cast<std::int64_t>(cell / grid.cols());
+            const double x0 = grid.cell_x0(col) + (bit % 4) * sx / 4, y0 = grid.cell_y0(row) + (bit / 4) * sy / 4;
+            bool inside_one = false;
+            for (std::size_t k = 0; k < centres.size() && !inside_one; ++k) {
+                bool all = true;
+                for (int i = 0; i <= 4 && all; ++i)
+                    for (int j = 0; j <= 4 && all; ++j)
+                        // (clipped to the box, as the grid's edge cells are)
+                        all = pds::compare_distance(pds::Point{std::min(x0 + i * sx / 16, box.x1), std::min(y0 + j * sy / 16, box.y1)},
+                                                    centres[k], radii[k]) < 0;
+                inside_one = all;
+            }
+            if (!inside_one) ck_abort_msg("cell %zu sub-square %u marked, in no disk whole", cell, bit);
+        }
+    ck_assert_msg(marked > 1000, "only %zu sub-squares marked", marked);
+    for (int trial = 0; trial < 200000; ++trial) {
+        const pds::Point p{rng.next_double(), 0.8 * rng.next_double()};
+        bool inside = false;
+        for (std::size_t k = 0; k < centres.size() && !inside; ++k) inside = pds::compare_distance(p, centres[k], radii[k]) < 0;
+        const auto col = std::min<std::size_t>(grid.cols() - 1, static_cast<std::size_t>(p.x / sx));
+        const auto row = std::min<std::size_t>(grid.rows() - 1, static_cast<std::size_t>(p.y / sy));
+        const auto cell = static_cast<std::uint32_t>(row * grid.cols() + col);
+        const unsigned bit = pds::SpaceTimeGrid::sub_square((p.x - grid.cell_x0(static_cast<std::int64_t>(col))) / sx,
+                                                            (p.y - grid.cell_y0(static_cast<std::int64_t>(row))) / sy);
+        const bool marked_here = (masks[cell] >> bit & 1u) != 0;
+        const bool said = disks.listed(cell) && disks.covers(p, cell);
+        if (inside && !marked_here && !said) ck_abort_msg("(%.17g, %.17g) inside a disk, neither marked nor listed", p.x, p.y);
+        if (!inside && (marked_here || said)) ck_abort_msg("(%.17g, %.17g) in no disk, yet marked or covered", p.x, p.y);
+    }
+    // Past the budget the disks decline.
+    std::vector<std::uint16_t> again(grid.cell_count(), 0);
+    pds::FixedDisks over;
+    ck_assert(!over.build(grid, centres, radii, again, 1000));
+}
+END_TEST
+
+START_TEST(disks_too_costly_leave_the_jones_loop_alone) {
+    // A hundred clearances around the corner (0, 0), each spanning the whole
+    // grid (about 20,000 cells a disk, past the budget of 4 grids and 2^20
+    // cells): the opening declines and the run is the Jones loop's alone,
+    // the points of a run without threads, in the far corner left free.
+    std::vector<pds::Point> at;
+    std::vector<double> c;
+    for (int k = 0; k < 100; ++k) {
+        at.push_back(pds::Point{1e-6 * k, 0.0});
+        c.push_back(0.9);
+    }
+    pds::Sampler a(0.01, 4), b(0.01, 4);
+    a.set_fixed(at, c);
+    b.set_fixed(at, c);
+    const ThreadedRun threaded = run_threaded(a, 2);
+    std::size_t added = 0;
+    b.run(0, &added);
+    std::vector<double> xy(2 * b.count());
+    b.copy_points(0, b.count(), xy.data());
+    ck_assert_msg(xy.size() / 2 > 1000, "%zu points", xy.size() / 2);
+    ck_assert_uint_eq(threaded.xy.size(), xy.size());
+    ck_assert(std::memcmp(threaded.xy.data(), xy.data(), xy.size() * 8) == 0);
+}
+END_TEST
+
+Suite* space_time_fixed_suite() {
+    Suite* s = suite_create("space_time_fixed");
+    TCase* t = tcase_create("the parallel process with fixed points");
+    tcase_set_timeout(t, 300);
+    tcase_add_test(t, same_points_with_fixed_points_on_any_number_of_threads);
+    tcase_add_test(t, count_mode_and_refine_with_fixed_points_on_threads);
+    tcase_add_test(t, fixed_disks_mark_and_list_the_cells_they_meet);
+    tcase_add_test(t, disks_too_costly_leave_the_jones_loop_alone);
+    suite_add_tcase(s, t);
+    return s;
+}
