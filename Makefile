@@ -466,6 +466,7 @@ check-alloc: $(ALLOC_BIN)
 	$(ALLOC_BIN) threads
 	$(ALLOC_BIN) polygon-threads
 	$(ALLOC_BIN) torus-threads
+	$(ALLOC_BIN) fixed-threads
 	$(ALLOC_BIN)
 
 # ---- benchmark -----------------------------------------------------------------------

@@ -7,10 +7,10 @@
 #
 # The outputs of --threads 1, 2, 4 and 0 (one per core) are compared with
 # cmp, in each mode: the one-radius rectangle, polygon, mask and torus
-# (--periodic), whose dart stage uses the threads (with --count and --refine
-# too), and --radius-map. Without --threads the one-radius modes run the
-# single-thread process (other points); --radius-map runs on one thread
-# either way (the same points). Ends with "check-cli-threads: N passed, M failed" and a non-zero
+# (--periodic), and --fixed, whose dart stage uses the threads (with --count
+# and --refine too), and --radius-map. Without --threads the one-radius modes
+# run the single-thread process (other points); --radius-map runs on one
+# thread either way (the same points). Ends with "check-cli-threads: N passed, M failed" and a non-zero
 # status if anything failed.
 
 set -u
@@ -64,6 +64,10 @@ same_for_threads "one radius: --refine" --radius 0.03 --refine 0.02 --refine 0.0
 same_for_threads "one radius: --periodic" --radius 0.01 --periodic --seed 6
 same_for_threads "one radius: --periodic --refine" --radius 0.03 --refine 0.012 --periodic --domain -0.4 0.2 0.9 0.9 --seed 13
 same_for_threads "one radius: --periodic --count 3000" --count 3000 --periodic --seed 14
+printf '0.5 0.2\n0.55 0.55 0.2\n0.6 0.6 0.01\n' > "$tmp/fixed.txt"
+same_for_threads "one radius: --fixed" --fixed "$tmp/fixed.txt" --radius 0.01 --seed 16
+same_for_threads "one radius: --polygon --fixed --verify" --polygon "$tmp/l.txt" --fixed "$tmp/fixed.txt" --radius 0.01 --verify --seed 17
+same_for_threads "one radius: --fixed --count 3000" --fixed "$tmp/fixed.txt" --count 3000 --seed 18
 same_for_threads "one radius: --periodic --verify" --radius 0.005 --periodic --domain 0 0 3 0.7 --verify --seed 15
 same_for_threads "--radius-map" --radius-map "$tmp/map.pgm" --rmin 0.01 --rmax 0.03 --seed 7
 same_for_threads "one radius: --polygon" --polygon "$tmp/l.txt" --radius 0.02 --seed 8

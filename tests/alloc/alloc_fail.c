@@ -23,7 +23,7 @@
  * function; setting the domain (and the field) is one more call whose
  * allocations fail in turn. "threads" runs the parallel process on 2 threads
  * in the rectangle, "polygon-threads" in the star, "torus-threads" on the
- * torus. The default,
+ * torus, "fixed-threads" in the star with fixed points. The default,
  * ~7000-point sequence tries every k in calls that make at most 3 * SPAN
  * allocations; in larger ones (pds_verify's exact arithmetic makes tens of
  * thousands) the first SPAN, the last SPAN and SPAN spread evenly in
@@ -64,7 +64,7 @@ struct config {
     int periodic; /* the torus: copies allocate as points are added */
     int shape;    /* the domain: the rectangle, a polygon, a mask, a polygon with a field */
 };
-enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS, POLYGON_THREADS };
+enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS, POLYGON_THREADS, FIXED_THREADS };
 static const struct config kSmall = {"small", 0.05, 0.035, 100, 50, 1, 0, RECTANGLE};
 static const struct config kLarge = {"large", 0.01, 0.007, 2000, 500, 0, 0, RECTANGLE};
 static const struct config kTorus = {"torus", 0.05, 0.035, 100, 50, 1, 1, RECTANGLE};
@@ -84,6 +84,9 @@ static const struct config kPolygonThreads = {"polygon-threads", 0.025, 0.02, 30
 /* The same on the torus: the grid's copies in its padding, the free
  * regions' darts decided across the seams, the mesh built whole. */
 static const struct config kTorusThreads = {"torus-threads", 0.025, 0.02, 300, 100, 0, 1, THREADS};
+/* The same in the star with fixed points: the opening's clearance disks,
+ * the free regions' darts in the power cells. */
+static const struct config kFixedThreads = {"fixed-threads", 0.025, 0.02, 300, 100, 0, 0, FIXED_THREADS};
 static const struct config *cfg = &kLarge;
 #define RADIUS (cfg->radius)
 #define REFINED (cfg->refined)
@@ -341,8 +344,10 @@ static int set_domain_part(struct trial *t, pds_sampler *s, int part)
     unsigned char inside[64];
     double xy[100];
     size_t ends[2];
+    static const double fixed_xy[6] = {0.3, 0.5, 0.72, 0.55, 0.5, 0.2};
+    static const double fixed_c[3] = {0.0, 0.12, 0.004};
     const char *what = part == 0 ? "pds_set_polygon" : part == 1 ? "pds_set_mask"
-                     : part == 2 ? "pds_set_radius_fn" : "pds_set_threads";
+                     : part == 2 ? "pds_set_radius_fn" : part == 3 ? "pds_set_threads" : "pds_set_fixed";
     const double radius = pds_radius(s);
     int i, tries, rc = 0;
     for (i = 0; i < 64; i++) inside[i] = (unsigned char)(rows[i / 8] >> (i % 8) & 1);
@@ -356,8 +361,10 @@ static int set_domain_part(struct trial *t, pds_sampler *s, int part)
             rc = pds_set_mask(s, 8, 8, inside);
         else if (part == 2)
             rc = pds_set_radius_fn(s, field_fn, NULL, 0.04, 0.06);
-        else
+        else if (part == 3)
             rc = pds_set_threads(s, 2);
+        else
+            rc = pds_set_fixed(s, fixed_xy, fixed_c, 3);
         alloc_disarm();
         if (rc != PDS_ENOMEM) break;
         check_injected(t, injected, s, what);
@@ -372,11 +379,14 @@ static int set_domain_part(struct trial *t, pds_sampler *s, int part)
 static void do_shape(struct trial *t, pds_sampler *s)
 {
     int rc = 0;
-    if (cfg->shape == POLYGON || cfg->shape == POLYGON_FIELD || cfg->shape == POLYGON_THREADS)
+    if (cfg->shape == POLYGON || cfg->shape == POLYGON_FIELD || cfg->shape == POLYGON_THREADS ||
+        cfg->shape == FIXED_THREADS)
         rc = set_domain_part(t, s, 0);
     if (cfg->shape == MASK) rc = set_domain_part(t, s, 1);
     if (cfg->shape == POLYGON_FIELD && rc == 0) rc = set_domain_part(t, s, 2);
-    if ((cfg->shape == THREADS || cfg->shape == POLYGON_THREADS) && rc == 0) rc = set_domain_part(t, s, 3);
+    if ((cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS) && rc == 0)
+        rc = set_domain_part(t, s, 3);
+    if (cfg->shape == FIXED_THREADS && rc == 0) rc = set_domain_part(t, s, 4);
     outcome(t, s, rc, pds_free_area(s), "pds_set_polygon/mask");
 }
 
@@ -555,11 +565,13 @@ int main(int argc, char **argv)
         cfg = &kPolygonThreads;
     else if (argc > 1 && strcmp(argv[1], "torus-threads") == 0)
         cfg = &kTorusThreads;
+    else if (argc > 1 && strcmp(argv[1], "fixed-threads") == 0)
+        cfg = &kFixedThreads;
     else if (argc > 1) {
-        printf("usage: alloc_fail [small|torus|polygon|mask|field|threads|polygon-threads|torus-threads]\n");
+        printf("usage: alloc_fail [small|torus|polygon|mask|field|threads|polygon-threads|torus-threads|fixed-threads]\n");
         return 2;
     }
-    if (cfg->shape == THREADS || cfg->shape == POLYGON_THREADS)
+    if (cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS)
         warm_up_threads();
     all = cfg->every_k || (env != NULL && env[0] != '\0' && strcmp(env, "0") != 0);
     printf("alloc-fail: sequence \"%s\": R = %g, refined to %g\n", cfg->name, cfg->radius, cfg->refined);

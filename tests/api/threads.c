@@ -15,7 +15,8 @@
  * Determinism is checked in every mode a run can be in: the one-radius
  * rectangle, the torus (square; wider than tall, refined; in count mode),
  * count mode, a chain of refines, a radius map, a polygon with a hole (one
- * radius, refined, in count mode) and a mask. Each is
+ * radius, refined, in count mode), a mask, and fixed points (in the polygon;
+ * in the square in count mode). Each is
  * run once with 1 thread, one pds_run per radius (the reference), then
  *   - with 2, 3, 4, 5 and 8 threads, the same calls;
  *   - split into pds_run calls of 1, 7 and 1000 points in turn, the thread
@@ -86,6 +87,21 @@ static void mask(pds_sampler *s)
     ck_assert_int_eq(pds_set_mask(s, 12, 9, inside), 0);
 }
 
+/* Three fixed points: the radius as clearance, a large one, a small one
+ * inside the large one's disk. */
+static void fixed_points(pds_sampler *s)
+{
+    static const double xy[6] = {0.5, 0.2, 0.55, 0.55, 0.6, 0.6};
+    static const double c[3] = {0.0, 0.2, 0.01};
+    ck_assert_int_eq(pds_set_fixed(s, xy, c, 3), 0);
+}
+
+static void polygon_with_fixed_points(pds_sampler *s)
+{
+    polygon(s);
+    fixed_points(s);
+}
+
 static const mode modes[] = {
     {"rectangle [0,2]x[0,1]", domain_2x1, {{0.01}, {0.02}}, {0, 0}},
     {"torus", torus, {{0.01}, {0.05}}, {0, 0}},
@@ -98,6 +114,8 @@ static const mode modes[] = {
     {"polygon, refine", polygon, {{0.03, 0.02}, {0.09, 0.07}}, {0, 0}},
     {"polygon, pds_set_count", polygon, {{1.0}, {1.0}}, {3000, 1000}},
     {"mask", mask, {{0.01}, {0.04}}, {0, 0}},
+    {"polygon with fixed points", polygon_with_fixed_points, {{0.015}, {0.06}}, {0, 0}},
+    {"fixed points, pds_set_count", fixed_points, {{1.0}, {1.0}}, {3000, 1000}},
 };
 #define N_MODES (sizeof modes / sizeof modes[0])
 

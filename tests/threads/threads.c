@@ -5,7 +5,8 @@
  * Contract (include/poissondisk.h, DESIGN.md): the library keeps no global
  * state; distinct handles may be used from distinct threads at once. Each of
  * N_THREADS threads runs its own script on its own handle: create, set_domain
- * (then, for two of them, a polygon with a hole; for one, the torus),
+ * (then, for two of them, a polygon with a hole; for one, the torus; for
+ * one, fixed points),
  * a bounded run, free_area in the middle of the run, run to the end, refine,
  * run to the end, count/radius/points, verify, free_area, a refused call and
  * its message, destroy. In between it calls the global functions (pds_strerror,
@@ -45,13 +46,14 @@ struct script {
     unsigned threads[2];    /* run at once: its own threads, then after the first run */
     int polygon;            /* an octagon with a square hole inside the domain */
     int periodic;           /* the domain made a torus */
+    int fixed;              /* three fixed points, one a large obstacle */
 };
 
 static const struct script scripts[N_THREADS] = {
-    {1, 0.020, 0.012, 0.0, 0.0, 1.0, 1.0, 100, {1, 2}, 0, 0},
-    {0x9E3779B97F4A7C15u, 0.030, 0.020, -3.0, 10.0, 1.0, 11.0, 1, {2, 1}, 1, 0},
-    {42, 0.004, 0.0035, 0.0, 0.0, 2.0, 0.5, 2000, {3, 0}, 1, 0}, /* several blocks of free cells */
-    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500, {0, 4}, 0, 1},
+    {1, 0.020, 0.012, 0.0, 0.0, 1.0, 1.0, 100, {1, 2}, 0, 0, 1},
+    {0x9E3779B97F4A7C15u, 0.030, 0.020, -3.0, 10.0, 1.0, 11.0, 1, {2, 1}, 1, 0, 0},
+    {42, 0.004, 0.0035, 0.0, 0.0, 2.0, 0.5, 2000, {3, 0}, 1, 0, 0}, /* several blocks of free cells */
+    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500, {0, 4}, 0, 1, 0},
 };
 
 /* A growable byte buffer: everything the calls of one script returned. */
@@ -155,6 +157,12 @@ static void run_script(const struct script *sc, int alone, struct transcript *t,
     }
     if (sc->periodic && rc == 0) {
         sum->set_domain = rc = pds_set_periodic(s, 1);
+        put_int(t, rc);
+    }
+    if (sc->fixed && rc == 0) {
+        static const double xy[6] = {0.5, 0.5, 0.2, 0.8, 0.9, 0.1};
+        static const double c[3] = {0.25, 0.0, 0.05};
+        sum->set_domain = rc = pds_set_fixed(s, xy, c, 3);
         put_int(t, rc);
     }
     put_int(t, pds_set_threads(s, alone ? 1 : sc->threads[0]));
