@@ -19,7 +19,8 @@
  * for 1.7.0, whose dart process goes on after the hand-over in the cells'
  * free regions. Polygons pinned from 1.8.0 on, whose parallel process runs
  * in polygons too (before, their threads gave the default process's points,
- * the first fingerprint below). The torus pinned from 1.9.0 on, likewise.
+ * the first fingerprint below). The torus and fixed points pinned from
+ * 1.9.0 on, likewise.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -140,11 +141,13 @@ START_TEST(pinned_field_outputs)
 END_TEST
 
 /* Domains users have: the unit L with a hole (shapes.c) at R 0.01, seed 3,
- * and the torus [0,1.5)x[0,1) at R 0.01, seed 4; each by the default
- * process and by the parallel one (pds_set_threads), which is the same on
- * 1, 2 and 3 threads, whole and in calls of 97 points. */
+ * the torus [0,1.5)x[0,1) at R 0.01, seed 4, and the unit square with three
+ * fixed points at R 0.01, seed 5; each by the default process and by the
+ * parallel one (pds_set_threads), which is the same on 1, 2 and 3 threads,
+ * whole and in calls of 97 points. */
+enum { THE_L, TORUS, FIXED };
 struct golden_domain {
-    int torus;        /* the torus, else the L */
+    int kind;
     size_t chunk;
     unsigned threads; /* pds_set_threads(s, threads - 1) first; 0: no call */
     size_t count;
@@ -152,14 +155,18 @@ struct golden_domain {
 };
 
 static const struct golden_domain domain_cases[] = {
-    {0, 0, 0, 4425, 0x13dfd6af50dd8c00ull},
-    {0, 0, 2, 4425, 0xf5a1a08333968701ull},
-    {0, 97, 3, 4425, 0xf5a1a08333968701ull},
-    {0, 0, 4, 4425, 0xf5a1a08333968701ull},
-    {1, 0, 0, 10454, 0x08bf749a26c343acull},
-    {1, 0, 2, 10420, 0x90a5b45a96979b57ull},
-    {1, 97, 3, 10420, 0x90a5b45a96979b57ull},
-    {1, 0, 4, 10420, 0x90a5b45a96979b57ull},
+    {THE_L, 0, 0, 4425, 0x13dfd6af50dd8c00ull},
+    {THE_L, 0, 2, 4425, 0xf5a1a08333968701ull},
+    {THE_L, 97, 3, 4425, 0xf5a1a08333968701ull},
+    {THE_L, 0, 4, 4425, 0xf5a1a08333968701ull},
+    {TORUS, 0, 0, 10454, 0x08bf749a26c343acull},
+    {TORUS, 0, 2, 10420, 0x90a5b45a96979b57ull},
+    {TORUS, 97, 3, 10420, 0x90a5b45a96979b57ull},
+    {TORUS, 0, 4, 10420, 0x90a5b45a96979b57ull},
+    {FIXED, 0, 0, 6168, 0x1b0a08c02fd81b48ull},
+    {FIXED, 0, 2, 6209, 0x2199c5cd8b853ef2ull},
+    {FIXED, 97, 3, 6209, 0x2199c5cd8b853ef2ull},
+    {FIXED, 0, 4, 6209, 0x2199c5cd8b853ef2ull},
 };
 
 START_TEST(pinned_domain_outputs)
@@ -167,17 +174,22 @@ START_TEST(pinned_domain_outputs)
     const struct golden_domain *g = &domain_cases[_i];
     pds_sampler *s = NULL;
 
-    ck_assert_int_eq(pds_create(&s, 0.01, g->torus ? 4 : 3), 0);
-    if (g->torus) {
+    static const double fixed_xy[6] = {0.3, 0.3, 0.7, 0.6, 0.72, 0.62};
+    static const double fixed_c[3] = {0.0, 0.2, 0.01};
+
+    ck_assert_int_eq(pds_create(&s, 0.01, (uint64_t)(3 + g->kind)), 0);
+    if (g->kind == TORUS) {
         ck_assert_int_eq(pds_set_domain(s, 0.0, 0.0, 1.5, 1.0), 0);
         ck_assert_int_eq(pds_set_periodic(s, 1), 0);
+    } else if (g->kind == FIXED) {
+        ck_assert_int_eq(pds_set_fixed(s, fixed_xy, fixed_c, 3), 0);
     } else {
         ck_assert_int_eq(pds_set_polygon(s, UNIT_L.xy, UNIT_L.ends, UNIT_L.nrings), 0);
     }
     if (g->threads > 0)
         ck_assert_int_eq(pds_set_threads(s, g->threads - 1), 0);
     run_all(s, g->chunk);
-    assert_pinned(s, g->count, g->hash, g->torus ? "torus case" : "polygon case", _i);
+    assert_pinned(s, g->count, g->hash, "domain case", _i);
 }
 END_TEST
 
