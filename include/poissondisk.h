@@ -484,8 +484,11 @@ PDS_API int pds_set_mask(pds_sampler *s, size_t w, size_t h, const unsigned char
  *              (R, or the field's value there). pds_refine and count mode
  *              scale every radius in force, the clearances too.
  * Copied: the arrays may be freed. n == 0 removes them (xy may be NULL).
- * With fixed points a run uses the Jones loop from its first point (no
- * dart throwing): in our measurements about twice the time of a plain run.
+ * Without pds_set_threads a run with fixed points uses the Jones loop from
+ * its first point (no dart throwing): in our measurements about twice the
+ * time of a plain run. With pds_set_threads and one radius it runs the
+ * parallel process, its darts kept out of the clearances, its points the
+ * same for every thread count (since 1.9; see pds_set_threads).
  * pds_free_area counts the clearances once a run has started. Clearances
  * that cover the domain leave a maximal pattern with no point (pds_run and
  * pds_verify return PDS_DONE, pds_free_area 0); in count mode the radius
@@ -515,17 +518,22 @@ PDS_API int pds_set_fixed(pds_sampler *s, const double *xy, const double *cleara
  * same points, byte for byte, for every n and whatever n was at each call;
  * threads change only the speed. They are not the points of a sampler that
  * never called pds_set_threads, which runs the single-thread process of 1.4
- * (the faster one on one core). Fixed points and variable radii (a field
- * on the torus too) run on one thread either way, as do a polygon spread
- * thin over its box (islands far apart) and an outline too large to raster
- * over the dart grid; polygons and masks had the single-thread process's
- * points before 1.8, the torus before 1.9. The default is the single-thread
- * process: the library starts no thread unless asked. Once selected, n may
- * change at any time, also between the calls of one run (from the next call
- * that adds points). Threads start and end inside the calls that add
- * points; the progress callback and the radius function are called only
- * from the caller's thread. A thread that cannot be started is done
- * without: the run goes on with fewer, and the same points.
+ * (the faster one on one core, but with fixed points). With pds_set_fixed
+ * and one radius the parallel process runs too, its darts kept out of the
+ * clearances. Variable
+ * radii, with fixed points or not (a field on the torus too), run on one
+ * thread either way, as do a polygon spread thin over its box (islands far
+ * apart), an outline too large to raster over the dart grid, and fixed
+ * points whose clearances' boxes together span many times the domain's box
+ * (the Jones loop alone, as without threads); polygons and masks had the
+ * single-thread process's points before 1.8, the torus and fixed points
+ * before 1.9. The default is the single-thread process: the library starts
+ * no thread unless asked. Once selected, n may change at any time, also
+ * between the calls of one run (from the next call that adds points).
+ * Threads start and end inside the calls that add points; the progress
+ * callback and the radius function are called only from the caller's
+ * thread. A thread that cannot be started is done without: the run goes on
+ * with fewer, and the same points.
  * Returns 0, PDS_EINVAL (s NULL, n > 1024), PDS_ESTATE (points exist already
  * from the single-thread process; called from inside the progress callback
  * or the radius function, or after an earlier PDS_EINTERNAL). (1.5)

@@ -72,9 +72,9 @@ class Sampler:
             (library 1.5) selects the parallel process on that many threads
             (0: one per core, at most 1024, else ValueError), whose points
             do not depend on the count but differ from the default's. The
-            one-radius rectangle, polygon, mask or torus (with count or
-            refine too) uses threads; radius maps and fixed points give the
-            same points either way. See the `threads` property.
+            one-radius rectangle, polygon, mask or torus (with count,
+            refine or fixed too) uses threads; radius maps give the same
+            points either way. See the `threads` property.
         radius_map: a variable radius (library 1.3): a 2-D array-like of
             shape (h, w) of radii, each finite and > 0, spread over the
             domain: row 0 along y0, column 0 along x0, bilinear between
