@@ -200,7 +200,8 @@ void Sampler::prepare(std::size_t points) {
         jones_->set_threads(threads_);
         if (darts_) darts_->set_threads(threads_);
     }
-    const bool room = jones_->has_room_for(points + adopted_fixed_) && (!darts_ || darts_->has_room_for(points + adopted_fixed_));
+    const bool room = jones_->has_room_for(points + adopted_fixed_) &&
+                      (!darts_ || darts_->has_room_for(points + adopted_fixed_));
     if (room) return;
     const std::size_t cap = std::min(smallest_frame().count_bound_points(), Frame::max_points());
     constexpr std::size_t kFirstRoom = 64;  // points reserved at the first growth, at least

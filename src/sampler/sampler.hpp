@@ -164,11 +164,11 @@ private:
         if (has_fixed() && fixed_field_) return PointRadii(*fixed_field_, frame);
         return std::nullopt;
     }
-    // Makes the fixed points the Jones stage's first vertices; returns how
-    // many (a position given twice is one point, with its larger clearance).
     // The fixed points in the internal frame, with their values (the
-    // clearance, or the radius at the point), repeats dropped and near ones
-    // merged. Throws DomainError (a point outside the box).
+    // clearance, or the radius at the point): a position given twice is one
+    // point, with its larger clearance, and near ones are merged. They
+    // become the first points of the opening stage that holds them, or of
+    // the Jones stage. Throws DomainError (a point outside the box).
     void prepare_fixed(std::vector<Point>& points, std::vector<double>& values) const;
     static std::vector<std::uint32_t> identity_order(std::size_t n);
     static void drop_repeated_fixed(std::vector<Point>& points, std::vector<double>& values);

@@ -355,7 +355,7 @@ START_TEST(refine_scales_the_clearances)
 END_TEST
 
 static disk law_disks[3];
-static const law_case law_with_fixed = {"the L with 3 fixed points", set_fixed, law_disks, 3};
+static const law_case law_with_fixed = {"the L with 3 fixed points", set_fixed, law_disks, 3, 0};
 
 START_TEST(coverage_check_finds_a_removed_point)
 {
@@ -374,25 +374,10 @@ END_TEST
 /* The parallel process (its opening keeps the darts out of the clearance
  * disks; the free regions' darts run in the power cells) on 1, 2 and 3
  * threads. */
-static void set_fixed_on_1_thread(pds_sampler *s)
-{
-    set_fixed(s);
-    ck_assert_int_eq(pds_set_threads(s, 1), 0);
-}
-static void set_fixed_on_2_threads(pds_sampler *s)
-{
-    set_fixed(s);
-    ck_assert_int_eq(pds_set_threads(s, 2), 0);
-}
-static void set_fixed_on_3_threads(pds_sampler *s)
-{
-    set_fixed(s);
-    ck_assert_int_eq(pds_set_threads(s, 3), 0);
-}
 static const law_case law_with_fixed_threads[3] = {
-    {"the L with 3 fixed points on 1 thread", set_fixed_on_1_thread, law_disks, 3},
-    {"the L with 3 fixed points on 2 threads", set_fixed_on_2_threads, law_disks, 3},
-    {"the L with 3 fixed points on 3 threads", set_fixed_on_3_threads, law_disks, 3},
+    {"the L with 3 fixed points on 1 thread", set_fixed, law_disks, 3, 1},
+    {"the L with 3 fixed points on 2 threads", set_fixed, law_disks, 3, 2},
+    {"the L with 3 fixed points on 3 threads", set_fixed, law_disks, 3, 3},
 };
 
 START_TEST(law_conditioned_on_fixed_points_on_threads)

@@ -42,6 +42,8 @@ static size_t library_pattern(const law_case *c, uint64_t seed, double **xy)
     ck_assert_int_eq(pds_set_polygon(s, UNIT_L.xy, UNIT_L.ends, UNIT_L.nrings), 0);
     if (c->setup)
         c->setup(s);
+    if (c->threads > 0)
+        ck_assert_int_eq(pds_set_threads(s, c->threads), 0);
     run_to_end(s);
     *xy = points_copy(s, &n);
     pds_destroy(s);
@@ -238,26 +240,14 @@ void law_compare(const law_case *c)
     stats_free(&ref);
 }
 
-static const law_case polygon_alone = {"the L alone", NULL, NULL, 0};
+static const law_case polygon_alone = {"the L alone", NULL, NULL, 0, 0};
 
 /* The parallel process (its opening and the free regions' darts, cut
  * cells included) on 1, 2 and 3 threads. */
-static void on_1_thread(pds_sampler *s)
-{
-    ck_assert_int_eq(pds_set_threads(s, 1), 0);
-}
-static void on_2_threads(pds_sampler *s)
-{
-    ck_assert_int_eq(pds_set_threads(s, 2), 0);
-}
-static void on_3_threads(pds_sampler *s)
-{
-    ck_assert_int_eq(pds_set_threads(s, 3), 0);
-}
 static const law_case polygon_threads[3] = {
-    {"the L on 1 thread", on_1_thread, NULL, 0},
-    {"the L on 2 threads", on_2_threads, NULL, 0},
-    {"the L on 3 threads", on_3_threads, NULL, 0},
+    {"the L on 1 thread", NULL, NULL, 0, 1},
+    {"the L on 2 threads", NULL, NULL, 0, 2},
+    {"the L on 3 threads", NULL, NULL, 0, 3},
 };
 
 START_TEST(coverage_check_finds_a_removed_point)

@@ -22,6 +22,7 @@ typedef struct law_case {
     void (*setup)(pds_sampler *s);
     const disk *fixed;
     size_t nfixed;
+    unsigned threads; /* > 0: the parallel process on that many threads */
 } law_case;
 
 /* The library's patterns against the reference's (statistics, tests). */
