@@ -107,8 +107,9 @@ static double lowest_radius(const fz_state *st)
     double area, low;
     if (st->target == 0) return fz_smallest_radius(st); /* a field's rmin, scaled */
     /* sqrt(w) sqrt(h), not sqrt(w h): the area of a domain 1e-204 wide
-     * underflows, the library's (in its scaled frame) does not. */
-    area = sqrt(st->dom[2] - st->dom[0]) * sqrt(st->dom[3] - st->dom[1]);
+     * underflows, the library's (in its scaled frame) does not; and the
+     * halves' sides, as a side from -DBL_MAX to DBL_MAX overflows. */
+    area = 2.0 * sqrt(0.5 * st->dom[2] - 0.5 * st->dom[0]) * sqrt(0.5 * st->dom[3] - 0.5 * st->dom[1]);
     if (st->shape.kind != FZ_SHAPE_NONE) /* NaN (lenient) when the library's area is not known */
         area = st->shape.area_known && fz_shape_scalable(st) ? area * sqrt(st->shape.frac) : NAN;
     low = 0.98 * area / sqrt(3.14159265358979323846 * (double)st->target);
