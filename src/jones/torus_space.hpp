@@ -117,6 +117,10 @@ private:
     template <class Loop>
     VertexIndex insert_vertex(Loop& loop, const Point& p, VertexIndex near,
                               std::optional<VertexIndex> copy_of = std::nullopt, double radius = 0.0);
+    // The bookkeeping of vertex v just made: a copy of real vertex *copy_of,
+    // or real; its tree leaf 0 until measured.
+    template <class Loop>
+    void record_vertex(Loop& loop, VertexIndex v, std::optional<VertexIndex> copy_of = std::nullopt);
     // Inserts p (real, wrapped; radius: its radius with a variable one) and
     // its copies; returns p's vertex.
     template <class Loop>

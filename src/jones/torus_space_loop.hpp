@@ -58,10 +58,15 @@ VertexIndex TorusSpace::insert_vertex(Loop& loop, const Point& p, VertexIndex ne
     Delaunay& dt = loop.dt_;
     const VertexIndex v = !dt.weighted() ? dt.insert(p, near)
                                          : dt.insert(p, copy_of ? dt.radius(*copy_of) : radius, near);
+    record_vertex(loop, v, copy_of);
+    return v;
+}
+
+template <class Loop>
+void TorusSpace::record_vertex(Loop& loop, VertexIndex v, std::optional<VertexIndex> copy_of) {
     is_copy_.push_back(copy_of ? 1 : 0);
     original_.push_back(copy_of ? *copy_of : v);
     loop.tree_.push_back(0.0);
-    return v;
 }
 
 template <class Loop>
@@ -90,9 +95,7 @@ void TorusSpace::adopt(Loop& loop, const std::vector<Point>& points, const std::
         copies_.for_each_copy(points[order[i]], copies_.margin(), -1.0, [&](const Point&, int, int) { ++copies; });
     make_room_for_copies(loop, n + copies);
     const auto adopted = [&](std::uint32_t k, VertexIndex v) {
-        is_copy_.push_back(0);
-        original_.push_back(v);
-        loop.tree_.push_back(0.0);
+        record_vertex(loop, v);
         loop.order_.set(k, v);
     };
     if (build != MeshBuild::whole || !loop.dt_.build_whole(points, order, n, loop.threads_, adopted)) {
