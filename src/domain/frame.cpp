@@ -175,9 +175,8 @@ double Frame::max_radius() const {
     return std::ldexp(0.5 * std::min(w, h), -scale_exp_);
 }
 
-double Frame::radius_for_count(double n) const {
+double Frame::radius_for_count(double n, double area, double perimeter) const {
     // n = a / r^2 + b / r, solved for r > 0.
-    const double area = this->area(), perimeter = this->perimeter();
     const double a = kSaturationCoverage * 4.0 * area / M_PI;
     const double b = periodic() ? 0.0 : kEdgeExcess * perimeter;
     const double r = (b + std::sqrt(b * b + 4.0 * a * n)) / (2.0 * n);

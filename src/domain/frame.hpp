@@ -132,7 +132,10 @@ public:
     // period; otherwise unbounded).
     double max_radius() const;
     // The user radius at which expected_count() is n.
-    double radius_for_count(double n) const;
+    double radius_for_count(double n) const { return radius_for_count(n, area(), perimeter()); }
+    // The same for a domain of that area and perimeter (internal frame):
+    // what fixed points' clearances leave of this one (free_room.hpp).
+    double radius_for_count(double n, double area, double perimeter) const;
     // A user radius below every radius count mode can reach on its way to n
     // points (sampler.cpp, lower_radius_for_count): it lowers R only when the
     // pattern is maximal at R with m < n points, and such a pattern's disks of

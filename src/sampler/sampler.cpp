@@ -85,6 +85,11 @@ void Sampler::set_count(std::size_t n) {
     if (count() != 0) throw std::logic_error("set_count after the first point");
     forget_stages();
     count_target_ = n;
+    if (n == 0) return;
+    frame_.set_radius(count_start_radius());
+}
+
+double Sampler::count_start_radius() const {
     // Above the expected radius, so the first maximal pattern holds fewer
     // than n points and the steps approach n from below (sampler.hpp): a
     // for large n (1.5%), more for small n, whose counts vary more (10/n: dozens of
@@ -94,10 +99,9 @@ void Sampler::set_count(std::size_t n) {
     // period; anywhere, at most the largest double: in a domain whose sides
     // come near it, the start overflows, and an infinite radius lowered by 1%
     // stays infinite, so the steps would never end.
-    if (n == 0) return;
-    const double above = 1.015 + 10.0 / static_cast<double>(n);
-    const double start = above * frame_.radius_for_count(static_cast<double>(n));
-    frame_.set_radius(std::min({start, frame_.max_radius(), std::numeric_limits<double>::max()}));
+    const double n = static_cast<double>(count_target_);
+    const double start = count_start_factor(n) * frame_.radius_for_count(n);
+    return std::min({start, frame_.max_radius(), std::numeric_limits<double>::max()});
 }
 
 void Sampler::set_threads(unsigned n) {
@@ -134,6 +138,7 @@ void Sampler::prepare(std::size_t points) {
     if (!started() && frame_.precision_limit() == Limit::coordinates_too_small)
         throw LimitError(Limit::coordinates_too_small, smallest_frame().user_radius(), smallest);
     if (points > Frame::max_points()) throw LimitError(Limit::too_many_points, frame_.user_radius());
+    if (!started() && count_target_ != 0 && has_fixed()) start_count_around_fixed();
     if (!started()) {
         // A field: precision at the smallest radius, the torus's period at
         // the largest (each error names the one judged). A too large radius

@@ -188,6 +188,11 @@ private:
     bool complete() const { return count_target_ != 0 && count() >= count_target_; }
     void hand_over();
     void lower_radius_for_count();
+    // Count mode's first radius (set_count), and with fixed points the one
+    // from the room their clearances leave (sampler_domain.cpp).
+    double count_start_radius() const;
+    static double count_start_factor(double n) { return 1.015 + 10.0 / n; }
+    void start_count_around_fixed();
     // refine() once the stages exist: they go on at the smaller radius.
     void refine_stages(double radius);
 

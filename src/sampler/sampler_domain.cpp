@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "domain/free_room.hpp"
 #include "domain/mask_outline.hpp"
 #include "sampler/sampler.hpp"
 
@@ -175,6 +176,47 @@ void Sampler::prepare_fixed(std::vector<Point>& points, std::vector<double>& val
     }
     drop_repeated_fixed(points, values);
     merge_nearly_coincident_fixed(points, values, std::ldexp(frame_.r(), -40));
+}
+
+void Sampler::start_count_around_fixed() {
+    // set_count's start counts the whole domain. The clearances take part
+    // of it and add their outline: the first maximal pattern would hold far
+    // fewer than n points, and count mode would lower the radius by 1% a
+    // step, each a refine of the whole pattern (a clearance of 0.3 in the
+    // unit square: at least 15 steps at n = 10^5). The start from the room
+    // they leave instead, never above set_count's, from which it is found
+    // each time (a first run refused, a fixed point outside the box, leaves
+    // nothing to the next).
+    frame_.set_radius(count_start_radius());
+    const double start = frame_.user_radius();
+    std::vector<Point> centres(fixed_.size());
+    for (std::size_t k = 0; k < fixed_.size(); ++k) centres[k] = frame_.to_internal(fixed_[k]);
+    const bool moves = std::find(fixed_clearance_.begin(), fixed_clearance_.end(), 0.0) != fixed_clearance_.end();
+    FreeRoomLattice lattice(frame_);
+    std::vector<double> radii(fixed_.size());
+    const double n = static_cast<double>(count_target_);
+    // The start the room left at radius r asks for (none: no estimate, or
+    // nothing left, where count mode lowers the radius until points fit).
+    const auto start_at = [&](double r) -> std::optional<double> {
+        for (std::size_t k = 0; k < fixed_.size(); ++k)
+            radii[k] = frame_.internal_radius(fixed_clearance_[k] > 0.0 ? fixed_clearance_[k] : r);
+        const std::optional<FreeRoom> room = lattice.estimate(centres, radii);
+        if (!room || !(room->area > 0.0)) return std::nullopt;
+        return count_start_factor(n) * frame_.radius_for_count(n, room->area, frame_.perimeter() + room->outline);
+    };
+    const std::optional<double> first = start_at(start);
+    if (!first || !(*first < start)) return;
+    double lo = *first, hi = start;
+    // A clearance of 0 is the radius, so the room grows as the radius falls:
+    // the start is the radius r that start_at(r) gives, between lo
+    // (start_at(lo) >= start_at(start) = lo) and hi. The upper end is kept:
+    // there the first maximal pattern holds fewer than n points.
+    for (int step = 0; moves && step < 40 && hi > lo * (1.0 + 1e-4); ++step) {
+        const double mid = std::sqrt(lo * hi);
+        const std::optional<double> at = start_at(mid);
+        (at && *at >= mid ? lo : hi) = mid;
+    }
+    frame_.set_radius(moves ? hi : lo);
 }
 
 std::vector<std::uint32_t> Sampler::identity_order(std::size_t n) {

@@ -109,7 +109,10 @@ void check_count(const domain_extra *e)
         double r0;
         int rc;
         ck_assert_int_eq(pds_set_count(s, want), 0);
-        r0 = pds_radius(s); /* the radius count mode starts at */
+        /* The radius count mode starts at: set when the first point is
+         * placed (with fixed points, from the room their clearances leave). */
+        ck_assert_int_eq(pds_step(s), PDS_MORE);
+        r0 = pds_radius(s);
         rc = pds_run(s, 0, NULL);
         ck_assert_msg(rc == PDS_DONE, "%s, count mode: pds_run %d (%s)", e->name, rc,
                       pds_errmsg(s));

@@ -35,6 +35,7 @@ int main() {
     srunner_add_suite(runner, out_of_memory_suite());
     srunner_add_suite(runner, torus_suite());
     srunner_add_suite(runner, rectangle_suite());
+    srunner_add_suite(runner, free_room_suite());
     srunner_add_suite(runner, progress_suite());
     srunner_add_suite(runner, polygon_suite());
     srunner_add_suite(runner, polygon_domain_suite());

@@ -37,6 +37,7 @@ Suite* field_suite();
 Suite* out_of_memory_suite();
 Suite* torus_suite();
 Suite* rectangle_suite();
+Suite* free_room_suite();
 Suite* progress_suite();
 Suite* polygon_suite();
 Suite* polygon_domain_suite();
