@@ -48,7 +48,7 @@ extern "C" {
 
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
-#define PDS_VERSION_MINOR 9
+#define PDS_VERSION_MINOR 10
 #define PDS_VERSION_PATCH 0
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
@@ -248,10 +248,18 @@ PDS_API int pds_set_periodic(pds_sampler *s, int periodic) PDS_NOEXCEPT;
  * pattern holds n points on average, n = 0.547 4A/(pi R^2) + 0.23 P/R for a
  * rectangle of area A and perimeter P (no P term on the torus), by a factor
  * 1.015 + 10/n (on the torus at most half the shorter period; never above
- * DBL_MAX, which only a domain with sides near DBL_MAX reaches); each time
- * the pattern becomes maximal with m < n points, the radius is lowered (as
- * pds_refine) by the factor sqrt(m/n) kept between 0.99 and 0.999, and the
- * run goes on; it stops at the n-th point. Afterwards pds_radius() is the last radius: every pair is at least
+ * DBL_MAX, which only a domain with sides near DBL_MAX reaches). With fixed
+ * points (pds_set_fixed), A is the area their clearances leave in the
+ * domain and P adds the clearances' outline there, both estimated on a
+ * 256 x 256 lattice when the first point is placed; a clearance of 0 is the
+ * start itself, so the start is the radius that gives itself. Until that
+ * point pds_radius() gives the start without them; the clearances scale
+ * from the start (since 1.10; before, the start ignored them, so around
+ * large clearances the radius was lowered by 1% many times, and the
+ * clearances with it). Each time the pattern becomes maximal with m < n
+ * points, the radius is lowered (as pds_refine) by the factor sqrt(m/n)
+ * kept between 0.99 and 0.999, and the run goes on; it stops at the n-th
+ * point. Afterwards pds_radius() is the last radius: every pair is at least
  * that far apart; and if the radius was lowered at least once, no room is
  * left for a point at pds_radius()/0.99 (the pattern is maximal at the
  * previous radius, and in general not at the last one, so pds_verify

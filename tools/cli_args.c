@@ -166,8 +166,10 @@ static const struct cli_option option_list[] = {
       "minimum distance between points, a finite number > 0" },
     { "--count", 1, "N", CLI_ONE_OF, NULL, opt_count, "a positive integer",
       "let the library choose the radius for exactly N points (N > 0), evenly "
-      "spread: it lowers the radius by up to 1% whenever the pattern is maximal with "
-      "fewer; every pair is at least the final radius apart (--stats shows it); "
+      "spread: it starts a little above the radius whose maximal pattern holds about N "
+      "(with --fixed, in the room their clearances leave) and lowers the radius by up to "
+      "1% whenever the pattern is maximal with fewer; every pair is at least the final "
+      "radius apart (--stats shows it); "
       "not with --refine" },
     { "--radius-map", 1, "FILE", CLI_ONE_OF, NULL, opt_radius_map, "a file name",
       "a variable radius from a grey-scale PGM image (P2 or P5; - for standard input) "
