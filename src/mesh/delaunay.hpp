@@ -111,11 +111,13 @@ public:
     // The same mesh built whole from points[order[0]], ... (n of them, vertex
     // 4 + i for order[i]), by Guibas and Stolfi's divide and conquer
     // (delaunay_build.cpp): its parts are built and merged side by side on up
-    // to `threads` threads. Only on an unweighted mesh holding its ghosts
-    // alone, with the room reserve(4 + n) makes; does not allocate. The
-    // records and entry edges depend on n and the points alone, never on
-    // the threads. False, and nothing changed, when it does not apply (few
-    // points, a weighted mesh, no room): the caller inserts them instead.
+    // to `threads` threads. Only on a mesh holding its ghosts alone, with the
+    // room reserve(4 + n) makes; does not allocate; a weighted mesh gives
+    // every point the ghosts' radius (the caller's to check: the regular
+    // mesh is then the Delaunay one). The records and entry edges depend on
+    // n and the points alone, never on the threads. False, and nothing
+    // changed, when it does not apply (few points, no room): the caller
+    // inserts them instead.
     template <class Inserted>
     bool build_whole(const std::vector<Point>& points, const std::uint32_t* order, std::size_t n,
                      unsigned threads, const Inserted& inserted) {

@@ -238,7 +238,7 @@ private:
 bool Delaunay::build_whole(const std::vector<Point>& points, const std::uint32_t* order, std::size_t n,
                            unsigned threads) {
     const std::size_t vertices = kGhosts + n;
-    if (weighted_ || n < kBuildWholeFrom || points_.size() != kGhosts || !has_room_for(vertices)) return false;
+    if (n < kBuildWholeFrom || points_.size() != kGhosts || !has_room_for(vertices)) return false;
     std::size_t leaves = 1;
     while (leaves < kMaxLeaves && (vertices / (2 * leaves)) >= kBuildWholeFrom) leaves *= 2;
     const std::size_t records = 3 * vertices + kArenaSlack * leaves;
@@ -248,6 +248,12 @@ bool Delaunay::build_whole(const std::vector<Point>& points, const std::uint32_t
     const unsigned workers = pool.size();
     points_.resize(vertices);  // within the room: does not allocate
     vertex_edge_.resize(vertices);
+    if (weighted_) {
+        // Every point has the ghosts' radius: each power test is the
+        // in-circle test, so the regular mesh is this Delaunay mesh.
+        radii_.resize(vertices, radii_[0]);
+        hidden_by_.resize(vertices, kNoVertex);
+    }
     pool.run([&](unsigned w) {
         const std::size_t lo = n * w / workers, hi = n * (w + 1) / workers;
         constexpr std::size_t kAhead = 16;

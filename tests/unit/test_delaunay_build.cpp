@@ -199,11 +199,34 @@ START_TEST(declines_what_it_does_not_build) {
     started.insert({0.5, 0.5}, 0);
     ck_assert(!started.build_whole(pts, order.data(), pts.size(), 2));
     ck_assert_uint_eq(started.vertex_count(), 5);
-    // A weighted mesh.
-    pds::Delaunay weighted(pds::Box{0, 0, 1, 1}, true, 0.0);
-    weighted.reserve(pts.size() + 4);
-    ck_assert(!weighted.build_whole(pts, order.data(), pts.size(), 2));
-    ck_assert_uint_eq(weighted.vertex_count(), 4);
+}
+END_TEST
+
+START_TEST(weighted_with_the_ghosts_radius) {
+    // A weighted mesh whose points all have the ghosts' radius is the
+    // Delaunay mesh: built whole, then disks of other radii inserted (some
+    // hide points, some are hidden), it is the regular mesh that inserting
+    // everything one by one gives, edge for edge and hidden for hidden.
+    const std::size_t n = 6000, disks = 60;
+    const double r = 0.004;
+    std::vector<pds::Point> pts = random_points(n + disks, 43);
+    const std::vector<std::uint32_t> order = identity(n + disks);
+    const auto radius_of = [&](std::uint32_t k) { return k < n ? r : (k % 3 == 0 ? 0.05 : k % 3 == 1 ? 0.001 : 0.02); };
+    pds::Delaunay built(pds::Box{0, 0, 1, 1}, true, r), inserted(pds::Box{0, 0, 1, 1}, true, r);
+    built.reserve(n + disks + 4);
+    inserted.reserve(n + disks + 4);
+    ck_assert(built.build_whole(pts, order.data(), n, 2));
+    for (std::uint32_t v = 4; v < built.vertex_count(); ++v) {
+        ck_assert(built.radius(v) == r);
+        ck_assert(!built.is_hidden(v));
+    }
+    built.insert_in_order(pts, order.data() + n, disks, radius_of, [](std::uint32_t, std::uint32_t) {});
+    inserted.insert_in_order(pts, order.data(), n + disks, radius_of, [](std::uint32_t, std::uint32_t) {});
+    ck_assert(built.hidden_count() > 0);
+    ck_assert_uint_eq(built.hidden_count(), inserted.hidden_count());
+    for (std::uint32_t v = 0; v < built.vertex_count(); ++v) ck_assert(built.is_hidden(v) == inserted.is_hidden(v));
+    check_delaunay_mesh(built);
+    ck_assert(edges_of(built) == edges_of(inserted));
 }
 END_TEST
 
@@ -218,6 +241,7 @@ Suite* delaunay_build_suite() {
     tcase_add_test(t, grids_collinear_and_cocircular);
     tcase_add_test(t, insertions_go_on_after_a_build);
     tcase_add_test(t, declines_what_it_does_not_build);
+    tcase_add_test(t, weighted_with_the_ghosts_radius);
     suite_add_tcase(s, t);
     return s;
 }
