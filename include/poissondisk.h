@@ -535,7 +535,9 @@ PDS_API int pds_set_fixed(pds_sampler *s, const double *xy, const double *cleara
  * points whose clearances' boxes together span many times the domain's box
  * (the Jones loop alone, as without threads); polygons and masks had the
  * single-thread process's points before 1.8, the torus and fixed points
- * before 1.9. The default is the single-thread process: the library starts
+ * before 1.9 (fixed points had other points with threads in 1.9, whose
+ * hand-over inserted every point one by one). The default is the
+ * single-thread process: the library starts
  * no thread unless asked. Once selected, n may change at any time, also
  * between the calls of one run (from the next call that adds points).
  * Threads start and end inside the calls that add points; the progress

@@ -100,7 +100,7 @@ std::uint64_t CurveOrder::key(const Point& p) const {
     return key;
 }
 
-const std::uint32_t* CurveOrder::order(const std::vector<Point>& points, unsigned threads) {
+const std::uint32_t* CurveOrder::order(const std::vector<Point>& points, unsigned threads, std::size_t first) {
     // Sizes within the reserved capacity: no allocation.
     const std::size_t n = points.size();
     order_.resize(n);
@@ -108,7 +108,9 @@ const std::uint32_t* CurveOrder::order(const std::vector<Point>& points, unsigne
     key_.resize(n);
     tmp_key_.resize(n);
     counts_.resize(kCounts);
-    sort(points, order_.data(), key_.data(), tmp_order_.data(), tmp_key_.data(), counts_.data(), threads);
+    for (std::size_t k = 0; k < first; ++k) order_[k] = static_cast<std::uint32_t>(k);
+    sort(points, first, order_.data() + first, key_.data(), tmp_order_.data(), tmp_key_.data(), counts_.data(),
+         threads);
     return order_.data();
 }
 
@@ -117,14 +119,14 @@ std::vector<std::uint32_t> CurveOrder::fresh_order(const std::vector<Point>& poi
     std::vector<std::uint32_t> order(n), tmp_order(n);
     std::vector<std::uint64_t> key(n), tmp_key(n);
     std::vector<std::uint32_t> counts(kCounts);
-    sort(points, order.data(), key.data(), tmp_order.data(), tmp_key.data(), counts.data(), 1);
+    sort(points, 0, order.data(), key.data(), tmp_order.data(), tmp_key.data(), counts.data(), 1);
     return order;
 }
 
-void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, std::uint64_t* key,
+void CurveOrder::sort(const std::vector<Point>& points, std::size_t first, std::uint32_t* order, std::uint64_t* key,
                       std::uint32_t* tmp_order, std::uint64_t* tmp_key, std::uint32_t* counts,
                       unsigned threads) const {
-    const std::size_t n = points.size();
+    const std::size_t n = points.size() - first;
     std::size_t ends[64];
     std::size_t rounds = 0;
     for (std::size_t end = n; end > 0; end = end > 256 ? end / 4 : 0) ends[rounds++] = end;
@@ -139,8 +141,8 @@ void CurveOrder::sort(const std::vector<Point>& points, std::uint32_t* order, st
     const unsigned workers = pool.size();
     pool.run([&](unsigned w) {
         for (std::size_t i = n * w / workers, end = n * (w + 1) / workers; i < end; ++i) {
-            key[i] = this->key(points[i]);
-            order[i] = static_cast<std::uint32_t>(i);
+            key[i] = this->key(points[first + i]);
+            order[i] = static_cast<std::uint32_t>(first + i);
         }
     });
     const auto count = [counts](unsigned w) { return counts + (std::size_t{w} << kDigit); };

@@ -37,7 +37,8 @@ public:
     // The indices of points in insertion order, in the reserved scratch
     // (valid until the next call); requires room for points.size(). Large
     // sets are keyed and sorted on up to `threads` threads (the same order).
-    const std::uint32_t* order(const std::vector<Point>& points, unsigned threads = 1);
+    // The first `first` points (fixed points) keep their places, first.
+    const std::uint32_t* order(const std::vector<Point>& points, unsigned threads = 1, std::size_t first = 0);
     // The same order in fresh scratch (for queries; allocates).
     std::vector<std::uint32_t> fresh_order(const std::vector<Point>& points) const;
 
@@ -49,10 +50,11 @@ private:
     static constexpr unsigned kMaxWorkers = 8;
     static constexpr int kDigit = 11;  // bits per radix pass
     static constexpr std::size_t kCounts = kMaxWorkers << kDigit;
-    // Sorts points into order[0, n); the other three arrays are scratch of
-    // n entries each, counts of kCounts.
-    void sort(const std::vector<Point>& points, std::uint32_t* order, std::uint64_t* key, std::uint32_t* tmp_order,
-              std::uint64_t* tmp_key, std::uint32_t* counts, unsigned threads) const;
+    // Sorts points[first..] into order[0, n - first) (their indices in
+    // points); the other three arrays are scratch of as many entries each,
+    // counts of kCounts.
+    void sort(const std::vector<Point>& points, std::size_t first, std::uint32_t* order, std::uint64_t* key,
+              std::uint32_t* tmp_order, std::uint64_t* tmp_key, std::uint32_t* counts, unsigned threads) const;
 
     Box box_{0.0, 0.0, 1.0, 1.0};
     double inv_side_x_ = 1.0, inv_side_y_ = 1.0;

@@ -367,8 +367,11 @@ void SpaceTimeDartStage::hand_over_to(JonesStage& jones, const Poll& poll) {
     std::vector<Point>().swap(pending_);
     fixed_disks_ = FixedDisks{};
     next_pending_ = 0;
-    const std::uint32_t* order = curve_.order(points_, threads_);
+    // The fixed points first, in their order; the Jones stage builds the
+    // others' mesh whole, then inserts them (plane_space.hpp).
+    const std::uint32_t* order = curve_.order(points_, threads_, fixed_);
     poll();
+    jones.set_fixed(fixed_);
     jones.adopt(points_, order, fixed_ != 0 ? &values_ : nullptr, poll, MeshBuild::whole);
     jones.carry_darts(SpaceTimeStream::salted(seed_), epoch_);
 }

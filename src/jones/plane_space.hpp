@@ -87,18 +87,27 @@ public:
     void adopt(Loop& loop, const std::vector<Point>& points, const std::uint32_t* order,
                const std::vector<double>* values, const Poll& poll, MeshBuild build) {
         if (values) loop.rule_.assign_values(*values);  // within the reserved room
-        // build_whole() declines a weighted mesh and small hand-overs.
-        if (build != MeshBuild::whole ||
-            !loop.dt_.build_whole(points, order, points.size(), loop.threads_,
-                                  [&](std::uint32_t k, VertexIndex v) { loop.order_.set(k, v); })) {
-            std::size_t inserted = 0;
-            loop.dt_.insert_in_order(
-                points, order, points.size(),
-                [&](std::uint32_t k) { return loop.rule_.radius_of(loop.rule_.value(k)); },
-                [&](std::uint32_t k, VertexIndex v) {
-                    loop.order_.set(k, v);
-                    if (++inserted % Poll::kEvery == 0) poll();
-                });
+        const auto radius_of = [&](std::uint32_t k) { return loop.rule_.radius_of(loop.rule_.value(k)); };
+        std::size_t inserted = 0;
+        const auto set = [&](std::uint32_t k, VertexIndex v) {
+            loop.order_.set(k, v);
+            if (++inserted % Poll::kEvery == 0) poll();
+        };
+        // Whole: without a field; with fixed points (set_fixed, first in the
+        // order) when every other point has the ghosts' radius, those whole
+        // (their regular mesh is the Delaunay one), then the fixed ones
+        // inserted. build_whole() declines small hand-overs.
+        const std::size_t fixed = loop.fixed_, n = points.size();
+        bool whole = build == MeshBuild::whole && fixed <= n;
+        if (whole && loop.dt_.weighted()) {
+            whole = fixed > 0;
+            for (std::size_t i = fixed; whole && i < n; ++i) whole = radius_of(order[i]) == loop.dt_.radius(0);
+        }
+        if (whole && loop.dt_.build_whole(points, order + fixed, n - fixed, loop.threads_,
+                                          [&](std::uint32_t k, VertexIndex v) { loop.order_.set(k, v); })) {
+            loop.dt_.insert_in_order(points, order, fixed, radius_of, set);
+        } else {
+            loop.dt_.insert_in_order(points, order, n, radius_of, set);
         }
         loop.tree_.resize(points.size());
         loop.measure_all_cells(poll);
