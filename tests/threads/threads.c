@@ -160,9 +160,9 @@ static void run_script(const struct script *sc, int alone, struct transcript *t,
         put_int(t, rc);
     }
     if (sc->fixed && rc == 0) {
-        static const double xy[6] = {0.5, 0.5, 0.2, 0.8, 0.9, 0.1};
+        static const double at[6] = {0.5, 0.5, 0.2, 0.8, 0.9, 0.1};
         static const double c[3] = {0.25, 0.0, 0.05};
-        sum->set_domain = rc = pds_set_fixed(s, xy, c, 3);
+        sum->set_domain = rc = pds_set_fixed(s, at, c, 3);
         put_int(t, rc);
     }
     put_int(t, pds_set_threads(s, alone ? 1 : sc->threads[0]));
