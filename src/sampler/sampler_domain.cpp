@@ -205,18 +205,31 @@ void Sampler::start_count_around_fixed() {
         return count_start_factor(n) * frame_.radius_for_count(n, room->area, frame_.perimeter() + room->outline);
     };
     const std::optional<double> first = start_at(start);
-    if (!first || !(*first < start)) return;
-    double lo = *first, hi = start;
+    if (first && !(*first < start)) return;
+    if (!moves) {
+        // The disks do not move: the room they leave gives the start.
+        if (first) frame_.set_radius(*first);
+        return;
+    }
     // A clearance of 0 is the radius, so the room grows as the radius falls:
-    // the start is the radius r that start_at(r) gives, between lo
-    // (start_at(lo) >= start_at(start) = lo) and hi. The upper end is kept:
-    // there the first maximal pattern holds fewer than n points.
-    for (int step = 0; moves && step < 40 && hi > lo * (1.0 + 1e-4); ++step) {
+    // the start is the radius r that start_at(r) gives, between lo, where
+    // start_at(lo) >= lo, and hi, where it is below (or nothing is left). The
+    // upper end is kept: there the first maximal pattern holds fewer than n.
+    double lo = first ? *first : 0.0, hi = start;  // start_at(lo) >= start_at(start) = lo
+    for (int halving = 0; lo == 0.0 && halving < 64; ++halving) {
+        // Nothing left at the start (the clearances cover the domain):
+        // down by halves until room is left for the radius it gives.
+        const double r = 0.5 * hi;
+        const std::optional<double> at = start_at(r);
+        (at && *at >= r ? lo : hi) = r;
+    }
+    if (lo == 0.0) return;  // the given clearances cover it all
+    for (int step = 0; step < 40 && hi > lo * (1.0 + 1e-4); ++step) {
         const double mid = std::sqrt(lo * hi);
         const std::optional<double> at = start_at(mid);
         (at && *at >= mid ? lo : hi) = mid;
     }
-    frame_.set_radius(moves ? hi : lo);
+    frame_.set_radius(hi);
 }
 
 std::vector<std::uint32_t> Sampler::identity_order(std::size_t n) {

@@ -328,26 +328,6 @@ START_TEST(count_mode_exact)
 }
 END_TEST
 
-/* Count mode with a fixed point whose clearance covers the whole domain at
- * the first radius: maximal with no point, so the radius goes down with the
- * clearance until points fit (before, a crash: the stages were dropped). */
-START_TEST(count_mode_past_a_covering_clearance)
-{
-    const double xy[2] = {0.5, 0.5}, c[1] = {1.0};
-    size_t n;
-
-    for (n = 1; n <= 5; n += 2) {
-        pds_sampler *s = sampler_new(1.0, 4);
-        ck_assert_int_eq(pds_set_count(s, n), 0);
-        ck_assert_int_eq(pds_set_fixed(s, xy, c, 1), 0);
-        run_to_end(s);
-        ck_assert_uint_eq(pds_count(s), n);
-        ck_assert_int_eq(pds_verify(s), 0);
-        pds_destroy(s);
-    }
-}
-END_TEST
-
 START_TEST(refine_scales_the_clearances)
 {
     check_refine(&with_fixed);
@@ -407,7 +387,6 @@ Suite *domain_fixed_suite(void)
     tcase_add_test(tc, same_points_however_split);
     tcase_add_test(tc, same_points_canceled_at_every_call);
     tcase_add_test(tc, count_mode_exact);
-    tcase_add_test(tc, count_mode_past_a_covering_clearance);
     tcase_add_test(tc, refine_scales_the_clearances);
     tc = new_tcase(s, "law");
     tcase_add_test(tc, coverage_check_finds_a_removed_point);

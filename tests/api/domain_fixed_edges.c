@@ -91,57 +91,6 @@ START_TEST(covered_at_a_radius_past_the_index_space)
 }
 END_TEST
 
-/* Count mode lowers the radius, and the clearances with it, until points
- * fit: a clearance of 10^12 still covers the square at the precision limit,
- * so the run stops there, with nothing added and a message that says why. */
-START_TEST(count_mode_under_a_clearance_past_the_precision_limit)
-{
-    const double centre[2] = {0.5, 0.5}, c[1] = {1e12};
-    pds_sampler *s = sampler_new(0.1, 3);
-    size_t added = 7;
-
-    ck_assert_int_eq(pds_set_count(s, 53), 0);
-    ck_assert_int_eq(pds_set_fixed(s, centre, c, 1), 0);
-    ck_assert_int_eq(pds_run(s, 0, &added), PDS_ERANGE);
-    ck_assert_uint_eq(added, 0);
-    ck_assert_uint_eq(pds_count(s), 0);
-    ck_assert_ptr_nonnull(strstr(pds_errmsg(s), "clearances covered the domain"));
-    pds_destroy(s);
-}
-END_TEST
-
-/* Count mode starts from the room the clearances leave: around a disk of
- * 0.3 in the unit square (28% of it) the first maximal pattern holds a
- * little fewer than n points, so the radius is lowered by a step or a few
- * (the pattern maximal at the one before), not by the 15 or more steps of a
- * start from the whole square. Each process (default, parallel), three
- * seeds. */
-START_TEST(count_mode_starts_from_the_room_left)
-{
-    const double centre[2] = {0.5, 0.5}, c[1] = {0.3};
-    int threads;
-    uint64_t seed;
-
-    for (threads = 0; threads <= 2; threads += 2)
-        for (seed = 1; seed <= 3; seed++) {
-            pds_sampler *s = sampler_new(0.1, seed);
-            double start, end;
-            ck_assert_int_eq(pds_set_count(s, 2000), 0);
-            ck_assert_int_eq(pds_set_fixed(s, centre, c, 1), 0);
-            if (threads != 0) ck_assert_int_eq(pds_set_threads(s, (unsigned)threads), 0);
-            ck_assert_int_eq(pds_step(s), PDS_MORE);
-            start = pds_radius(s); /* set at the first point */
-            ck_assert_int_eq(pds_run(s, 0, NULL), PDS_DONE);
-            ck_assert_uint_eq(pds_count(s), 2000);
-            end = pds_radius(s);
-            ck_assert_msg(end < start && end > 0.96 * start,
-                          "threads %d seed %llu: the radius went from %.9g to %.9g", threads,
-                          (unsigned long long)seed, start, end);
-            pds_destroy(s);
-        }
-}
-END_TEST
-
 START_TEST(a_refine_before_the_first_point_leaves_room)
 {
     pds_sampler *s = sampler_new(1.0, 3);
@@ -369,8 +318,6 @@ Suite *domain_fixed_edges_suite(void)
     tcase_add_test(tc, one_clearance_covers_a_polygon_and_a_mask);
     tcase_add_test(tc, a_refine_before_the_first_point_leaves_room);
     tcase_add_test(tc, covered_at_a_radius_past_the_index_space);
-    tcase_add_test(tc, count_mode_under_a_clearance_past_the_precision_limit);
-    tcase_add_test(tc, count_mode_starts_from_the_room_left);
     tcase_add_test(tc, a_clearance_short_of_a_corner_leaves_a_point_there);
     tcase_add_test(tc, room_a_hair_wide_between_clearances_gets_its_point);
     tc = new_tcase(s, "the bounding box");

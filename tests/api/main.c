@@ -41,6 +41,7 @@ int main(void)
     srunner_add_suite(runner, domain_law_suite());
     srunner_add_suite(runner, domain_fixed_suite());
     srunner_add_suite(runner, domain_fixed_edges_suite());
+    srunner_add_suite(runner, domain_fixed_count_suite());
     srunner_add_suite(runner, threads_suite());
 
     if (test_light())

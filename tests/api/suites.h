@@ -27,6 +27,7 @@
  *   domain_law_suite   the law in a polygon against dart throwing         (domain_law.c)
  *   domain_fixed_suite pds_set_fixed: refusals, clearances, runs, the law  (domain_fixed.c)
  *   domain_fixed_edges_suite  no room left; a constant field             (domain_fixed_edges.c)
+ *   domain_fixed_count_suite  count mode around fixed points            (domain_fixed_count.c)
  *   threads_suite      pds_set_threads: arguments; the same bytes for any count (threads.c)
  */
 #ifndef PDS_TESTS_API_SUITES_H
@@ -59,6 +60,7 @@ Suite *domain_raster_suite(void);
 Suite *domain_law_suite(void);
 Suite *domain_fixed_suite(void);
 Suite *domain_fixed_edges_suite(void);
+Suite *domain_fixed_count_suite(void);
 Suite *threads_suite(void);
 
 #endif /* PDS_TESTS_API_SUITES_H */
