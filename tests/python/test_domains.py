@@ -294,6 +294,19 @@ class FixedTest(TestCase):
             self.assertEqual(len(s), 3)
             self.assertIs(s.verify(), True)
 
+    def test_count_starts_from_the_room_a_clearance_leaves(self):
+        # A clearance of 0.3 takes 28% of the square: the first maximal
+        # pattern holds a little fewer than the count, so the radius goes
+        # down by a step or a few, not by the 15 or more of a start from the
+        # whole square (the library's 1.9).
+        for threads in (None, 2):
+            with Sampler(None, seed=1, count=2000, fixed=[(0.5, 0.5, 0.3)], threads=threads) as s:
+                self.assertIs(s.step(), True)
+                start = s.radius
+                self.assertIs(s.run(), True)
+                self.assertEqual(len(s), 2000)
+                self.assertTrue(0.96 * start < s.radius < start, (start, s.radius))
+
     def test_clearance_covering_the_square_leaves_no_point(self):
         with Sampler(0.05, seed=4, fixed=[(0.5, 0.5, 1.0)]) as s:
             self.assertIs(s.run(), True)

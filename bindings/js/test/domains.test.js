@@ -183,6 +183,20 @@ test('count past a clearance that covers the square at the first radius', async 
   s.dispose();
 });
 
+test('count starts from the room a clearance leaves', async () => {
+  // A clearance of 0.3 takes 28% of the square: the radius goes down by a
+  // step or a few, not by the 15 or more of a start from the whole square.
+  for (const threads of [undefined, 2]) {
+    const s = await Sampler.create(null, { seed: 1, count: 2000, fixed: [[0.5, 0.5, 0.3]], threads });
+    assert.equal(s.step(), true);
+    const start = s.radius;
+    assert.equal(s.run(), true);
+    assert.equal(s.count, 2000);
+    assert.ok(s.radius < start && s.radius > 0.96 * start, `${start} -> ${s.radius}`);
+    s.dispose();
+  }
+});
+
 test('fixed points on a mask\'s pixel lines (within rounding of its box) are inside', async () => {
   const x1 = 0.00493827156, y1 = 0.0125663704, w = 3, h = 5;
   const mask = [[0, 0, 0], [0, 0, 0], [0, 1, 1], [0, 0, 0], [0, 0, 0]];
