@@ -195,13 +195,18 @@ void fz_fixed_run_starts(fz_state *st)
     if (st->nfix > 0 && st->count == 0 && st->fix_ref == 0.0) st->fix_ref = st->radius;
 }
 
-/* The clearance of fixed point k now: at least *lo, at most *hi. */
+/* The clearance of fixed point k now: at least *lo, at most *hi. In count
+ * mode the run starts, at its first point, from the room the clearances
+ * leave (1.10): at most the radius read before it, at least the radius now;
+ * so a given clearance, scaled from that start, lies between its scaling
+ * from the radius read before and itself. */
 static void clearance_bounds(const fz_state *st, size_t k, double *lo, double *hi)
 {
     const double ref = st->fix_ref > 0.0 ? st->fix_ref : st->radius;
     const double scale = st->radius / ref;
     if (st->fix_c[k] > 0.0) {
         *lo = *hi = st->fix_c[k] * scale;
+        if (st->target != 0) *hi = st->fix_c[k];
     } else if (st->field != FZ_FIELD_NONE) { /* the field's value there, scaled as the points' */
         *hi = st->radius;
         *lo = st->radius * (st->f_rmin / st->f_rmax);

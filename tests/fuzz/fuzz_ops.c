@@ -106,6 +106,9 @@ static double lowest_radius(const fz_state *st)
 {
     double area, low;
     if (st->target == 0) return fz_smallest_radius(st); /* a field's rmin, scaled */
+    /* Around fixed points the start comes from the room they leave (1.10),
+     * and their disks cover part of A: no bound (lenient). */
+    if (st->nfix > 0) return NAN;
     /* sqrt(w) sqrt(h), not sqrt(w h): the area of a domain 1e-204 wide
      * underflows, the library's (in its scaled frame) does not; and the
      * halves' sides, as a side from -DBL_MAX to DBL_MAX overflows. */
