@@ -18,6 +18,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "core/indices.hpp"
@@ -146,6 +148,7 @@ private:
                                             loop.vertices_for(loop.order_.capacity()) + Delaunay::kGhosts));
         std::vector<double> value_of_vertex(dt.vertex_count(), 0.0);
         for (std::size_t k = 0; k < loop.count(); ++k) value_of_vertex[loop.order_.vertex(k)] = values_[k];
+        if (rebuild_whole(loop, fresh, value_of_vertex)) return;
         for (VertexIndex v = Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
             VertexIndex near = v - 1;
             if (!dt.is_hidden(v))
@@ -156,6 +159,53 @@ private:
             fresh.insert(dt.point(v), radii_.radius_of(value_of_vertex[loop.space_.original(v)]), near);
         }
         loop.dt_ = std::move(fresh);
+    }
+
+    // The plane's mesh when every point but the fixed ones (the first
+    // loop.fixed_) has the ghosts' radius (one radius around fixed points):
+    // those built whole (their regular mesh is their Delaunay mesh), side
+    // by side, then the fixed ones inserted. The vertices are numbered
+    // anew, the others first, so the point order is rewritten. False, and
+    // nothing changed, where it does not apply. Allocates before it changes
+    // anything.
+    template <class Loop>
+    bool rebuild_whole(Loop& loop, Delaunay& fresh, const std::vector<double>& value_of_vertex) const {
+        using Space = std::decay_t<decltype(loop.space_)>;
+        if (Space::kPeriodic) return false;
+        const Delaunay& dt = loop.dt_;
+        const std::size_t n = loop.count(), fixed = loop.fixed_;
+        if (fixed == 0 || fixed > n || dt.vertex_count() != n + Delaunay::kGhosts) return false;
+        std::vector<char> is_fixed(dt.vertex_count(), 0);
+        for (std::size_t k = 0; k < fixed; ++k) is_fixed[loop.order_.vertex(k)] = 1;
+        std::vector<Point> others;
+        others.reserve(n - fixed);
+        for (VertexIndex v = Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
+            if (is_fixed[v]) continue;
+            if (!(radii_.radius_of(value_of_vertex[v]) == fresh.radius(0))) return false;
+            others.push_back(dt.point(v));
+        }
+        std::vector<std::uint32_t> order(others.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+        std::vector<VertexIndex> renumbered(dt.vertex_count(), 0), vertex_of_point(n);
+        for (std::size_t k = 0; k < n; ++k) vertex_of_point[k] = loop.order_.vertex(k);
+        if (!fresh.build_whole(others, order.data(), others.size(), loop.threads_)) return false;
+        VertexIndex next = Delaunay::kGhosts;
+        for (VertexIndex v = Delaunay::kGhosts; v < dt.vertex_count(); ++v)
+            if (!is_fixed[v]) renumbered[v] = next++;
+        // The fixed ones in their order, each walk from a renumbered neighbour.
+        for (VertexIndex v = Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
+            if (!is_fixed[v]) continue;
+            VertexIndex near = Delaunay::kGhosts;
+            if (!dt.is_hidden(v))
+                dt.for_each_neighbour(v, [&](VertexIndex w) {
+                    if (!Delaunay::is_ghost(w) && !is_fixed[w]) near = renumbered[w];
+                });
+            renumbered[v] = fresh.insert(dt.point(v), radii_.radius_of(value_of_vertex[v]), near);
+        }
+        loop.order_.resize(n);  // within its capacity
+        for (std::size_t k = 0; k < n; ++k) loop.order_.set(k, renumbered[vertex_of_point[k]]);
+        loop.dt_ = std::move(fresh);
+        return true;
     }
 
     PointRadii radii_;

@@ -2,7 +2,8 @@
 // the domain minus their clearance disks (against rejection sampling, in a
 // polygon with a hole, with an obstacle partly outside it and two fixed
 // points that overlap); maximal patterns that keep every clearance, count
-// and return only the sampled points, and pass verify.
+// and return only the sampled points, and pass verify; a refine's mesh
+// rebuilt whole around them.
 #include <check.h>
 
 #include <algorithm>
@@ -120,6 +121,39 @@ START_TEST(maximal_patterns_keep_the_clearances) {
 }
 END_TEST
 
+START_TEST(a_refine_rebuilds_the_mesh_around_them) {
+    // Past 4096 sampled points a refine builds their mesh whole and inserts
+    // the fixed points after (their vertices numbered anew): the points so
+    // far read back unchanged, the pattern goes on valid and maximal, clear
+    // of every clearance (scaled with the radius), and the same with the
+    // parallel process on 1 and 3 threads.
+    for (unsigned threads = 0; threads <= 3; threads += 1 + (threads == 1)) {
+        pds::Sampler s = make(0.007, 5);
+        if (threads != 0) s.set_threads(threads);
+        std::size_t added = 0;
+        ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+        const std::size_t before = s.count();
+        ck_assert_uint_gt(before, 4096 + 100);
+        std::vector<double> first(2 * before), again(2 * before);
+        s.copy_points(0, before, first.data());
+        s.refine(0.005);
+        s.copy_points(0, before, again.data());
+        ck_assert(first == again);
+        pds::VerifyReport rep = s.verify();
+        ck_assert_msg(rep.valid && !rep.maximal, "threads %u: %s", threads, rep.failure.c_str());
+        ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+        rep = s.verify();
+        ck_assert_msg(rep.valid && rep.maximal, "threads %u: %s", threads, rep.failure.c_str());
+        std::vector<double> xy(2 * s.count());
+        s.copy_points(0, s.count(), xy.data());
+        for (std::size_t i = 0; i < s.count(); ++i)  // the clearances scaled with the radius
+            for (std::size_t k = 0; k < kFixed.size(); ++k)
+                ck_assert(std::hypot(xy[2 * i] - kFixed[k].x, xy[2 * i + 1] - kFixed[k].y) >=
+                          kClearance[k] * (0.005 / 0.007) * (1.0 - 1e-12));
+    }
+}
+END_TEST
+
 }  // namespace
 
 Suite* fixed_points_suite() {
@@ -128,6 +162,7 @@ Suite* fixed_points_suite() {
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, first_point_is_uniform_around_fixed_points);
     tcase_add_test(tc, maximal_patterns_keep_the_clearances);
+    tcase_add_test(tc, a_refine_rebuilds_the_mesh_around_them);
     suite_add_tcase(s, tc);
     return s;
 }
