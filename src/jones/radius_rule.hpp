@@ -12,7 +12,9 @@
 //              newer disk by that disk's radius. A disk can lose its whole
 //              power cell to later, larger ones (hidden, delaunay.hpp): its
 //              weight is dropped when it is next selected. A refine changes
-//              every radius, and so the power diagram: the mesh is rebuilt.
+//              every radius, and so the power diagram: the mesh is rebuilt
+//              (around fixed points of one radius, the others whole and the
+//              fixed ones inserted, rebuild_whole).
 #ifndef PDS_RADIUS_RULE_HPP
 #define PDS_RADIUS_RULE_HPP
 
