@@ -176,7 +176,9 @@ private:
         if (Space::kPeriodic) return false;
         const Delaunay& dt = loop.dt_;
         const std::size_t n = loop.count(), fixed = loop.fixed_;
-        if (fixed == 0 || fixed > n || dt.vertex_count() != n + Delaunay::kGhosts) return false;
+        if (fixed == 0 || fixed > n || n - fixed < Delaunay::kBuildWholeFrom ||
+            dt.vertex_count() != n + Delaunay::kGhosts)
+            return false;  // (build_whole() would decline so few)
         std::vector<char> is_fixed(dt.vertex_count(), 0);
         for (std::size_t k = 0; k < fixed; ++k) is_fixed[loop.order_.vertex(k)] = 1;
         std::vector<Point> others;
