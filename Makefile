@@ -467,6 +467,7 @@ check-alloc: $(ALLOC_BIN)
 	$(ALLOC_BIN) polygon-threads
 	$(ALLOC_BIN) torus-threads
 	$(ALLOC_BIN) fixed-threads
+	$(ALLOC_BIN) fixed-large
 	$(ALLOC_BIN)
 
 # ---- benchmark -----------------------------------------------------------------------

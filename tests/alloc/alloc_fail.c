@@ -23,7 +23,8 @@
  * function; setting the domain (and the field) is one more call whose
  * allocations fail in turn. "threads" runs the parallel process on 2 threads
  * in the rectangle, "polygon-threads" in the star, "torus-threads" on the
- * torus, "fixed-threads" in the star with fixed points. The default,
+ * torus, "fixed-threads" in the star with fixed points, "fixed-large" the
+ * same with points enough for the weighted mesh built whole. The default,
  * ~7000-point sequence tries every k in calls that make at most 3 * SPAN
  * allocations; in larger ones (pds_verify's exact arithmetic makes tens of
  * thousands) the first SPAN, the last SPAN and SPAN spread evenly in
@@ -87,6 +88,10 @@ static const struct config kTorusThreads = {"torus-threads", 0.025, 0.02, 300, 1
 /* The same in the star with fixed points: the opening's clearance disks,
  * the free regions' darts in the power cells. */
 static const struct config kFixedThreads = {"fixed-threads", 0.025, 0.02, 300, 100, 0, 0, FIXED_THREADS};
+/* The same with points enough (over 4096 at the hand-over and at the
+ * refine) for the weighted mesh to be built whole, then the fixed points
+ * inserted: its largest calls sampled. */
+static const struct config kFixedLarge = {"fixed-large", 0.0055, 0.0045, 3000, 500, 0, 0, FIXED_THREADS};
 static const struct config *cfg = &kLarge;
 #define RADIUS (cfg->radius)
 #define REFINED (cfg->refined)
@@ -567,8 +572,11 @@ int main(int argc, char **argv)
         cfg = &kTorusThreads;
     else if (argc > 1 && strcmp(argv[1], "fixed-threads") == 0)
         cfg = &kFixedThreads;
+    else if (argc > 1 && strcmp(argv[1], "fixed-large") == 0)
+        cfg = &kFixedLarge;
     else if (argc > 1) {
-        printf("usage: alloc_fail [small|torus|polygon|mask|field|threads|polygon-threads|torus-threads|fixed-threads]\n");
+        printf("usage: alloc_fail [small|torus|polygon|mask|field|threads|polygon-threads|torus-threads|fixed-threads|"
+               "fixed-large]\n");
         return 2;
     }
     if (cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS)
