@@ -31,7 +31,8 @@ public:
     // Inserts the points into `jones` (no points yet, room reserved for
     // these) in an order that keeps its walks short; never allocates. Ends
     // this stage and releases its grid. Calls poll between its steps and
-    // every Poll::kEvery points (progress reports).
+    // every Poll::kEvery points (progress reports). Fixed points it holds
+    // (hold_fixed) go first, and it tells `jones` so (set_fixed).
     virtual void hand_over_to(JonesStage& jones, const Poll& poll = Poll{}) = 0;
     // Threads the stage may use from its next step on (at least 1); a stage
     // that runs on one thread ignores it. Never changes the points.

@@ -40,6 +40,13 @@ FreeRoomLattice::FreeRoomLattice(const Frame& frame)
         }
 }
 
+FreeRoomLattice::Span FreeRoomLattice::span_of(const Point& c, double r) const {
+    Span box;
+    lattice_range(c.x - r, c.x + r, box_.x0, hx_, &box.i0, &box.i1);
+    lattice_range(c.y - r, c.y + r, box_.y0, hy_, &box.j0, &box.j1);
+    return box;
+}
+
 Point FreeRoomLattice::sample(std::int64_t i, std::int64_t j) const {
     return Point{box_.x0 + (static_cast<double>(i) + 0.5) * hx_, box_.y0 + (static_cast<double>(j) + 0.5) * hy_};
 }
@@ -50,11 +57,9 @@ void FreeRoomLattice::mark(const std::vector<Point>& centres, const std::vector<
         if (!keep(radii[k])) continue;
         const Point& c = centres[k];
         const double r = radii[k];
-        std::int64_t i0, i1, j0, j1;
-        lattice_range(c.x - r, c.x + r, box_.x0, hx_, &i0, &i1);
-        lattice_range(c.y - r, c.y + r, box_.y0, hy_, &j0, &j1);
-        for (std::int64_t j = j0; j <= j1; ++j)
-            for (std::int64_t i = i0; i <= i1; ++i) {
+        const Span box = span_of(c, r);
+        for (std::int64_t j = box.j0; j <= box.j1; ++j)
+            for (std::int64_t i = box.i0; i <= box.i1; ++i) {
                 std::uint8_t& s = state_[static_cast<std::size_t>(j * kSide + i)];
                 if (s != kFree) continue;
                 const Point p = sample(i, j);
@@ -69,10 +74,9 @@ std::optional<FreeRoom> FreeRoomLattice::estimate(const std::vector<Point>& cent
     // The marks, counted before any is made: a bounded cost.
     double marks = 0.0;
     for (std::size_t k = 0; k < centres.size(); ++k) {
-        std::int64_t i0, i1, j0, j1;
-        lattice_range(centres[k].x - radii[k], centres[k].x + radii[k], box_.x0, hx_, &i0, &i1);
-        lattice_range(centres[k].y - radii[k], centres[k].y + radii[k], box_.y0, hy_, &j0, &j1);
-        if (i1 >= i0 && j1 >= j0) marks += static_cast<double>(i1 - i0 + 1) * static_cast<double>(j1 - j0 + 1);
+        const Span box = span_of(centres[k], radii[k]);
+        if (box.i1 >= box.i0 && box.j1 >= box.j0)
+            marks += static_cast<double>(box.i1 - box.i0 + 1) * static_cast<double>(box.j1 - box.j0 + 1);
     }
     if (marks > kMaxMarksPerSample * static_cast<double>(kSide * kSide)) return std::nullopt;
     for (std::uint8_t& s : state_)

@@ -46,6 +46,11 @@ private:
     template <class Keep>
     void mark(const std::vector<Point>& centres, const std::vector<double>& radii, const Keep& keep);
     Point sample(std::int64_t i, std::int64_t j) const;
+    // The lattice points in the box of the disk of radius r around c.
+    struct Span {
+        std::int64_t i0, i1, j0, j1;
+    };
+    Span span_of(const Point& c, double r) const;
 
     Box box_;
     double area_, hx_, hy_;

@@ -181,21 +181,19 @@ private:
             return false;  // (build_whole() would decline so few)
         std::vector<char> is_fixed(dt.vertex_count(), 0);
         for (std::size_t k = 0; k < fixed; ++k) is_fixed[loop.order_.vertex(k)] = 1;
+        // The others in their order: vertex kGhosts + i for others[i].
         std::vector<Point> others;
         others.reserve(n - fixed);
+        std::vector<VertexIndex> renumbered(dt.vertex_count(), 0);
         for (VertexIndex v = Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
             if (is_fixed[v]) continue;
             if (!(radii_.radius_of(value_of_vertex[v]) == fresh.radius(0))) return false;
+            renumbered[v] = static_cast<VertexIndex>(Delaunay::kGhosts + others.size());
             others.push_back(dt.point(v));
         }
         std::vector<std::uint32_t> order(others.size());
         for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
-        std::vector<VertexIndex> renumbered(dt.vertex_count(), 0), vertex_of_point(n);
-        for (std::size_t k = 0; k < n; ++k) vertex_of_point[k] = loop.order_.vertex(k);
         if (!fresh.build_whole(others, order.data(), others.size(), loop.threads_)) return false;
-        VertexIndex next = Delaunay::kGhosts;
-        for (VertexIndex v = Delaunay::kGhosts; v < dt.vertex_count(); ++v)
-            if (!is_fixed[v]) renumbered[v] = next++;
         // The fixed ones in their order, each walk from a renumbered neighbour.
         for (VertexIndex v = Delaunay::kGhosts; v < dt.vertex_count(); ++v) {
             if (!is_fixed[v]) continue;
@@ -206,8 +204,11 @@ private:
                 });
             renumbered[v] = fresh.insert(dt.point(v), radii_.radius_of(value_of_vertex[v]), near);
         }
+        // Every point's vertex recorded (those past the table were kGhosts + k).
+        const std::size_t recorded = std::min(loop.order_.handed_over(), n);
+        for (std::size_t k = 0; k < recorded; ++k) loop.order_.set(k, renumbered[loop.order_.vertex(k)]);
         loop.order_.resize(n);  // within its capacity
-        for (std::size_t k = 0; k < n; ++k) loop.order_.set(k, renumbered[vertex_of_point[k]]);
+        for (std::size_t k = recorded; k < n; ++k) loop.order_.set(k, renumbered[k + Delaunay::kGhosts]);
         loop.dt_ = std::move(fresh);
         return true;
     }

@@ -268,9 +268,8 @@ void Sampler::hand_over() {
         };
         poll.context = this;
     }
-    darts_->hand_over_to(*jones_, poll);
+    darts_->hand_over_to(*jones_, poll);  // sets the fixed points it held (set_fixed)
     darts_.reset();
-    jones_->set_fixed(adopted_fixed_);  // the opening held them first
 }
 
 bool Sampler::step() {
