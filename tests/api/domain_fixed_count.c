@@ -38,6 +38,33 @@ START_TEST(count_mode_under_a_clearance_past_the_precision_limit)
 }
 END_TEST
 
+/* The radii of a count-mode run of n points around fixed points (clearances
+ * c, or NULL: the radius), by the default process (threads 0) or the
+ * parallel one: set_count's start (before the first point), the start (set
+ * at the first point) and the last radius. The run must end with n points. */
+struct count_radii {
+    double set_count, start, end;
+};
+
+static struct count_radii count_run(const double *xy, const double *c, size_t nf, size_t n, unsigned threads,
+                                    uint64_t seed)
+{
+    pds_sampler *s = sampler_new(0.1, seed);
+    struct count_radii r;
+
+    ck_assert_int_eq(pds_set_count(s, n), 0);
+    ck_assert_int_eq(pds_set_fixed(s, xy, c, nf), 0);
+    if (threads != 0) ck_assert_int_eq(pds_set_threads(s, threads), 0);
+    r.set_count = pds_radius(s);
+    ck_assert_int_eq(pds_step(s), PDS_MORE);
+    r.start = pds_radius(s);
+    ck_assert_int_eq(pds_run(s, 0, NULL), PDS_DONE);
+    ck_assert_uint_eq(pds_count(s), n);
+    r.end = pds_radius(s);
+    pds_destroy(s);
+    return r;
+}
+
 /* Count mode starts from the room the clearances leave: around a disk of
  * 0.3 in the unit square (28% of it) the first maximal pattern holds a
  * little fewer than n points, so the radius is lowered by a step or a few
@@ -47,25 +74,15 @@ END_TEST
 START_TEST(count_mode_starts_from_the_room_left)
 {
     const double centre[2] = {0.5, 0.5}, c[1] = {0.3};
-    int threads;
+    unsigned threads;
     uint64_t seed;
 
     for (threads = 0; threads <= 2; threads += 2)
         for (seed = 1; seed <= 3; seed++) {
-            pds_sampler *s = sampler_new(0.1, seed);
-            double start, end;
-            ck_assert_int_eq(pds_set_count(s, 2000), 0);
-            ck_assert_int_eq(pds_set_fixed(s, centre, c, 1), 0);
-            if (threads != 0) ck_assert_int_eq(pds_set_threads(s, (unsigned)threads), 0);
-            ck_assert_int_eq(pds_step(s), PDS_MORE);
-            start = pds_radius(s); /* set at the first point */
-            ck_assert_int_eq(pds_run(s, 0, NULL), PDS_DONE);
-            ck_assert_uint_eq(pds_count(s), 2000);
-            end = pds_radius(s);
-            ck_assert_msg(end < start && end > 0.96 * start,
-                          "threads %d seed %llu: the radius went from %.9g to %.9g", threads,
-                          (unsigned long long)seed, start, end);
-            pds_destroy(s);
+            const struct count_radii r = count_run(centre, c, 1, 2000, threads, seed);
+            ck_assert_msg(r.end < r.start && r.end > 0.96 * r.start,
+                          "threads %u seed %llu: the radius went from %.9g to %.9g", threads,
+                          (unsigned long long)seed, r.start, r.end);
         }
 }
 END_TEST
@@ -81,27 +98,19 @@ END_TEST
 START_TEST(count_mode_starts_below_radius_clearances_that_cover)
 {
     double at[2 * 1600];
-    int i, threads;
+    int i;
+    unsigned threads;
 
     for (i = 0; i < 1600; i++) {
         at[2 * i] = 0.0125 + 0.025 * (i % 40);
         at[2 * i + 1] = 0.0125 + 0.025 * (i / 40);
     }
     for (threads = 0; threads <= 2; threads += 2) {
-        pds_sampler *s = sampler_new(0.1, 3);
-        double covering, start;
-        ck_assert_int_eq(pds_set_count(s, 400), 0);
-        ck_assert_int_eq(pds_set_fixed(s, at, NULL, 1600), 0);
-        if (threads != 0) ck_assert_int_eq(pds_set_threads(s, (unsigned)threads), 0);
-        covering = pds_radius(s); /* set_count's start: 0.025 / sqrt 2 is less */
-        ck_assert(covering > 0.025 / sqrt(2.0));
-        ck_assert_int_eq(pds_step(s), PDS_MORE);
-        start = pds_radius(s);
-        ck_assert_msg(start < 0.0165, "threads %d: the start %.9g is not the one the room gives", threads, start);
-        ck_assert_int_eq(pds_run(s, 0, NULL), PDS_DONE);
-        ck_assert_uint_eq(pds_count(s), 400);
-        ck_assert(pds_radius(s) <= start);
-        pds_destroy(s);
+        const struct count_radii r = count_run(at, NULL, 1600, 400, threads, 3);
+        ck_assert(r.set_count > 0.025 / sqrt(2.0)); /* their disks cover the square */
+        ck_assert_msg(r.start < 0.0165, "threads %u: the start %.9g is not the one the room gives", threads,
+                      r.start);
+        ck_assert(r.end <= r.start);
     }
 }
 END_TEST
