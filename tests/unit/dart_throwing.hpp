@@ -42,8 +42,8 @@ struct Plane {
     pds::Box box;
 
     bool inside(const pds::Point& p) const { return box.contains(p); }
-    // A child square with this lower-left corner may meet the domain.
-    bool meets(double x, double y) const { return x <= box.x1 && y <= box.y1; }
+    // A child square with this lower-left corner and side may meet the domain.
+    bool meets(double x, double y, double) const { return x <= box.x1 && y <= box.y1; }
     double d2(const pds::Point& a, const pds::Point& b) const {
         return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
     }
@@ -61,7 +61,7 @@ struct Torus {
     pds::Box box;
 
     bool inside(const pds::Point& p) const { return p.x >= box.x0 && p.x < box.x1 && p.y >= box.y0 && p.y < box.y1; }
-    bool meets(double x, double y) const { return x < box.x1 && y < box.y1; }
+    bool meets(double x, double y, double) const { return x < box.x1 && y < box.y1; }
     static double wrap(double d, double period) {
         d = std::fabs(d);
         return d > 0.5 * period ? period - d : d;
@@ -78,6 +78,70 @@ struct Torus {
     double cell_side(double side, double, int n) const { return side / n; }
     int bucket(int i, int n) const { return ((i % n) + n) % n; }
     int clamp(int i, int n) const { return bucket(i, n); }  // overhanging corners wrap
+};
+
+// Rings of x y pairs by the even-odd rule, in the plane: a point is inside
+// when a ray to +x crosses the rings an odd number of times. A square is
+// kept while its centre is inside or an edge of the rings meets it, so
+// squares wholly outside are dropped and darts there are refused.
+struct InPolygon {
+    pds::Box box;
+    std::vector<std::vector<double>> rings;
+
+    explicit InPolygon(std::vector<std::vector<double>> r) : box{1e300, 1e300, -1e300, -1e300}, rings(std::move(r)) {
+        for (const auto& ring : rings)
+            for (std::size_t k = 0; k + 1 < ring.size(); k += 2) {
+                box.x0 = std::min(box.x0, ring[k]);
+                box.x1 = std::max(box.x1, ring[k]);
+                box.y0 = std::min(box.y0, ring[k + 1]);
+                box.y1 = std::max(box.y1, ring[k + 1]);
+            }
+    }
+    template <class F>
+    bool any_edge(const F& f) const {
+        for (const auto& ring : rings)
+            for (std::size_t k = 0, n = ring.size() / 2; k < n; ++k) {
+                const std::size_t l = (k + 1) % n;
+                if (f(ring[2 * k], ring[2 * k + 1], ring[2 * l], ring[2 * l + 1])) return true;
+            }
+        return false;
+    }
+    bool inside(const pds::Point& p) const {
+        bool odd = false;
+        any_edge([&](double ax, double ay, double bx, double by) {
+            if ((ay > p.y) != (by > p.y) && p.x < ax + (p.y - ay) * (bx - ax) / (by - ay)) odd = !odd;
+            return false;
+        });
+        return odd;
+    }
+    // The segment meets the closed square (Liang-Barsky clipping).
+    static bool segment_meets(double ax, double ay, double bx, double by, double x, double y, double side) {
+        double t0 = 0, t1 = 1;
+        const double d[2] = {bx - ax, by - ay}, lo[2] = {x - ax, y - ay}, hi[2] = {x + side - ax, y + side - ay};
+        for (int k = 0; k < 2; ++k) {
+            if (d[k] == 0) {
+                if (lo[k] > 0 || hi[k] < 0) return false;
+                continue;
+            }
+            double ta = lo[k] / d[k], tb = hi[k] / d[k];
+            if (ta > tb) std::swap(ta, tb);
+            t0 = std::max(t0, ta);
+            t1 = std::min(t1, tb);
+        }
+        return t0 <= t1;
+    }
+    bool meets(double x, double y, double side) const {
+        return inside(pds::Point{x + side / 2, y + side / 2}) ||
+               any_edge([&](double ax, double ay, double bx, double by) { return segment_meets(ax, ay, bx, by, x, y, side); });
+    }
+    double d2(const pds::Point& a, const pds::Point& b) const {
+        return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
+    }
+    pds::Point copy_near(const pds::Point& q, const pds::Point&) const { return q; }
+    int cells(double side, double cell) const { return static_cast<int>(std::ceil(side / cell)) + 1; }
+    double cell_side(double, double cell, int) const { return cell; }
+    int bucket(int i, int n) const { return i < 0 || i >= n ? -1 : i; }
+    int clamp(int i, int n) const { return std::min(n - 1, std::max(0, i)); }
 };
 
 // ---- radius rules ------------------------------------------------------------------
@@ -156,7 +220,7 @@ public:
             for (const pds::Point& sq : active)
                 for (int c = 0; c < 4; ++c) {
                     const pds::Point child{sq.x + (c & 1) * side, sq.y + (c >> 1) * side};
-                    if (dist_.meets(child.x, child.y) && !covered_square(child, side)) next.push_back(child);
+                    if (dist_.meets(child.x, child.y, side) && !covered_square(child, side)) next.push_back(child);
                 }
             active.swap(next);
         }

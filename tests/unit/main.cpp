@@ -31,6 +31,7 @@ int main() {
     srunner_add_suite(runner, sampler_suite());
     srunner_add_suite(runner, law_suite());
     srunner_add_suite(runner, law_torus_suite());
+    srunner_add_suite(runner, law_comb_suite());
     srunner_add_suite(runner, field_suite());
     srunner_add_suite(runner, out_of_memory_suite());
     srunner_add_suite(runner, torus_suite());

@@ -33,6 +33,7 @@ Suite* region_darts_suite();
 Suite* sampler_suite();
 Suite* law_suite();
 Suite* law_torus_suite();
+Suite* law_comb_suite();
 Suite* field_suite();
 Suite* out_of_memory_suite();
 Suite* torus_suite();
