@@ -80,15 +80,15 @@ struct Torus {
     int clamp(int i, int n) const { return bucket(i, n); }  // overhanging corners wrap
 };
 
-// Rings of x y pairs by the even-odd rule, in the plane: a point is inside
-// when a ray to +x crosses the rings an odd number of times. A square is
-// kept while its centre is inside or an edge of the rings meets it, so
-// squares wholly outside are dropped and darts there are refused.
-struct InPolygon {
-    pds::Box box;
+// Rings of x y pairs by the even-odd rule, in the plane (distances and
+// buckets as Plane's, over the rings' box): a point is inside when a ray to
+// +x crosses the rings an odd number of times. A square is kept while its
+// centre is inside or an edge of the rings meets it, so squares wholly
+// outside are dropped and darts there are refused.
+struct InPolygon : Plane {
     std::vector<std::vector<double>> rings;
 
-    explicit InPolygon(std::vector<std::vector<double>> r) : box{1e300, 1e300, -1e300, -1e300}, rings(std::move(r)) {
+    explicit InPolygon(std::vector<std::vector<double>> r) : Plane{{1e300, 1e300, -1e300, -1e300}}, rings(std::move(r)) {
         for (const auto& ring : rings)
             for (std::size_t k = 0; k + 1 < ring.size(); k += 2) {
                 box.x0 = std::min(box.x0, ring[k]);
@@ -131,17 +131,10 @@ struct InPolygon {
         return t0 <= t1;
     }
     bool meets(double x, double y, double side) const {
-        return inside(pds::Point{x + side / 2, y + side / 2}) ||
-               any_edge([&](double ax, double ay, double bx, double by) { return segment_meets(ax, ay, bx, by, x, y, side); });
+        return inside(pds::Point{x + side / 2, y + side / 2}) || any_edge([&](double ax, double ay, double bx, double by) {
+                   return segment_meets(ax, ay, bx, by, x, y, side);
+               });
     }
-    double d2(const pds::Point& a, const pds::Point& b) const {
-        return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
-    }
-    pds::Point copy_near(const pds::Point& q, const pds::Point&) const { return q; }
-    int cells(double side, double cell) const { return static_cast<int>(std::ceil(side / cell)) + 1; }
-    double cell_side(double, double cell, int) const { return cell; }
-    int bucket(int i, int n) const { return i < 0 || i >= n ? -1 : i; }
-    int clamp(int i, int n) const { return std::min(n - 1, std::max(0, i)); }
 };
 
 // ---- radius rules ------------------------------------------------------------------
