@@ -21,8 +21,9 @@
 // -12.6 (the free regions' darts) on the sequential distance; a retry in
 // a cut cell's piece gives 15.3 in the Jones loop and 6.6 in the darts,
 // each mutated alone; a trapezoid chosen by its index, not its area, gives
-// 16.6 on N. Not seen: x drawn uniformly across a trapezoid instead of by
-// its area's distribution (z 1.9 at most).
+// 16.6 on N. Not seen here: x drawn uniformly across a trapezoid instead
+// of by its area's distribution (z 1.9 at most; the slabs' draws in
+// test_polygon_slabs.cpp catch it, chi-square 11688).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
