@@ -1,6 +1,9 @@
 // alloc_hook.cpp - the replaced global operator new (see alloc_hook.hpp).
-// Replacing operator new and delete is allowed to any program ([new.delete]);
-// the nothrow and array forms of the library forward to these.
+// Replacing operator new and delete is allowed to any program ([new.delete]).
+// The nothrow forms are replaced too, as libstdc++ defines them (the
+// throwing form, nullptr for std::bad_alloc): AddressSanitizer brings its
+// own nothrow new, whose blocks this file's delete would free as malloc's
+// (std::stable_sort's temporary buffer: an alloc-dealloc mismatch).
 #include "alloc_hook.hpp"
 
 #include <cstdlib>
@@ -42,3 +45,13 @@ void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+    try {
+        return allocate(size);
+    } catch (const std::bad_alloc&) {
+        return nullptr;
+    }
+}
+void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept { return operator new(size, tag); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
