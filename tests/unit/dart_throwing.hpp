@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "core/point.hpp"
+#include "even_odd.hpp"
 
 namespace oracle {
 
@@ -80,40 +81,27 @@ struct Torus {
     int clamp(int i, int n) const { return bucket(i, n); }  // overhanging corners wrap
 };
 
-// Rings of x y pairs by the even-odd rule, in the plane (distances and
-// buckets as Plane's, over the rings' box): a point is inside when a ray to
-// +x crosses the rings an odd number of times. A square is kept while its
+// Rings of x y pairs by the even-odd rule (even_odd.hpp), in the plane
+// (distances and buckets as Plane's, over the rings' box). A square is kept while its
 // centre is inside or an edge of the rings meets it, so squares wholly
 // outside are dropped and darts there are refused.
 struct InPolygon : Plane {
-    std::vector<std::vector<double>> rings;
+    std::vector<double> xy;
+    std::vector<std::size_t> ends;
 
-    explicit InPolygon(std::vector<std::vector<double>> r) : Plane{{1e300, 1e300, -1e300, -1e300}}, rings(std::move(r)) {
-        for (const auto& ring : rings)
-            for (std::size_t k = 0; k + 1 < ring.size(); k += 2) {
-                box.x0 = std::min(box.x0, ring[k]);
-                box.x1 = std::max(box.x1, ring[k]);
-                box.y0 = std::min(box.y0, ring[k + 1]);
-                box.y1 = std::max(box.y1, ring[k + 1]);
-            }
+    explicit InPolygon(const std::vector<std::vector<double>>& rings) : Plane{{1e300, 1e300, -1e300, -1e300}} {
+        for (const auto& ring : rings) {
+            xy.insert(xy.end(), ring.begin(), ring.end());
+            ends.push_back(xy.size() / 2);
+        }
+        for (std::size_t k = 0; k + 1 < xy.size(); k += 2) {
+            box.x0 = std::min(box.x0, xy[k]);
+            box.x1 = std::max(box.x1, xy[k]);
+            box.y0 = std::min(box.y0, xy[k + 1]);
+            box.y1 = std::max(box.y1, xy[k + 1]);
+        }
     }
-    template <class F>
-    bool any_edge(const F& f) const {
-        for (const auto& ring : rings)
-            for (std::size_t k = 0, n = ring.size() / 2; k < n; ++k) {
-                const std::size_t l = (k + 1) % n;
-                if (f(ring[2 * k], ring[2 * k + 1], ring[2 * l], ring[2 * l + 1])) return true;
-            }
-        return false;
-    }
-    bool inside(const pds::Point& p) const {
-        bool odd = false;
-        any_edge([&](double ax, double ay, double bx, double by) {
-            if ((ay > p.y) != (by > p.y) && p.x < ax + (p.y - ay) * (bx - ax) / (by - ay)) odd = !odd;
-            return false;
-        });
-        return odd;
-    }
+    bool inside(const pds::Point& p) const { return even_odd_contains(xy.data(), ends.data(), ends.size(), p); }
     // The segment meets the closed square (Liang-Barsky clipping).
     static bool segment_meets(double ax, double ay, double bx, double by, double x, double y, double side) {
         double t0 = 0, t1 = 1;
@@ -131,7 +119,8 @@ struct InPolygon : Plane {
         return t0 <= t1;
     }
     bool meets(double x, double y, double side) const {
-        return inside(pds::Point{x + side / 2, y + side / 2}) || any_edge([&](double ax, double ay, double bx, double by) {
+        return inside(pds::Point{x + side / 2, y + side / 2}) ||
+               any_ring_edge(xy.data(), ends.data(), ends.size(), [&](double ax, double ay, double bx, double by) {
                    return segment_meets(ax, ay, bx, by, x, y, side);
                });
     }

@@ -14,6 +14,7 @@
 
 #include "core/rng.hpp"
 #include "domain/polygon.hpp"
+#include "even_odd.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
 
@@ -26,19 +27,7 @@ const std::vector<double> kXY = {0, 0, 1, 0, 1, 0.3, 0.3, 0.3, 0.3, 0.7, 1, 0.7,
                                  0.1, 0.4, 0.2, 0.4, 0.2, 0.6, 0.1, 0.6};
 const std::vector<std::size_t> kEnds = {8, 12};
 
-bool in_shape(const Point& p) {
-    bool odd = false;
-    std::size_t begin = 0;
-    for (std::size_t end : kEnds) {
-        for (std::size_t i = begin; i < end; ++i) {
-            const std::size_t j = i + 1 == end ? begin : i + 1;
-            const double ax = kXY[2 * i], ay = kXY[2 * i + 1], bx = kXY[2 * j], by = kXY[2 * j + 1];
-            if ((ay > p.y) != (by > p.y) && p.x < ax + (bx - ax) * (p.y - ay) / (by - ay)) odd = !odd;
-        }
-        begin = end;
-    }
-    return odd;
-}
+bool in_shape(const Point& p) { return even_odd_contains(kXY.data(), kEnds.data(), kEnds.size(), p); }
 
 // An obstacle over the C's mouth (partly outside), two overlapping small ones.
 const std::vector<Point> kFixed = {{0.8, 0.5}, {0.5, 0.15}, {0.55, 0.15}};

@@ -41,9 +41,10 @@ namespace {
 
 constexpr double kRadius = 0.3;
 
-// A base [0,1]x[0,0.2] and ten teeth `width` wide up to y = 1, one at the
+// A base [0,1]x[0,0.2] and ten teeth 0.01 wide up to y = 1, one at the
 // right of each tenth of the width; counter-clockwise.
-std::vector<double> thin_comb(double width) {
+std::vector<double> thin_comb() {
+    const double width = 0.01;
     std::vector<double> xy{0, 0, 1, 0};
     for (int k = 10; k >= 1; --k) {
         const double right = 0.1 * k;
@@ -110,7 +111,7 @@ START_TEST(reference_in_the_comb_is_maximal) {
     // The reference's patterns lie in the comb, R apart, and leave no room:
     // no point of a fine lattice over the box is in the comb and outside
     // every disk. A reference that stopped early would fail it.
-    const oracle::InPolygon comb({thin_comb(0.01)});
+    const oracle::InPolygon comb({thin_comb()});
     auto reference = oracle::dart_throwing(comb, oracle::ConstantRadius{kRadius});
     const std::uint64_t seeds = test_light() ? 4 : 20;
     for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
@@ -133,7 +134,7 @@ END_TEST
 
 START_TEST(whole_runs_in_folded_cells_keep_the_law) {
     const Draws draws = static_cast<Draws>(_i);
-    const std::vector<double> ring = thin_comb(0.01);
+    const std::vector<double> ring = thin_comb();
     const int runs = test_light() ? 300 : 2000;
     auto reference = oracle::dart_throwing(oracle::InPolygon({ring}), oracle::ConstantRadius{kRadius});
     Statistics lib, ref;

@@ -14,6 +14,7 @@
 #include "cells/outline_clip.hpp"
 #include "core/rng.hpp"
 #include "domain/mask_outline.hpp"
+#include "even_odd.hpp"
 #include "domain/polygon.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
@@ -33,20 +34,8 @@ struct Shape {
     std::shared_ptr<const Polygon> polygon() const {
         return std::make_shared<const Polygon>(xy.data(), ends.data(), ends.size());
     }
-    // Even-odd, written out here (not the library's index).
-    bool contains(const Point& p) const {
-        bool odd = false;
-        std::size_t begin = 0;
-        for (std::size_t end : ends) {
-            for (std::size_t i = begin; i < end; ++i) {
-                const std::size_t j = i + 1 == end ? begin : i + 1;
-                const double ax = xy[2 * i], ay = xy[2 * i + 1], bx = xy[2 * j], by = xy[2 * j + 1];
-                if ((ay > p.y) != (by > p.y) && p.x < ax + (bx - ax) * (p.y - ay) / (by - ay)) odd = !odd;
-            }
-            begin = end;
-        }
-        return odd;
-    }
+    // Even-odd, written out for the tests (not the library's index).
+    bool contains(const Point& p) const { return even_odd_contains(xy.data(), ends.data(), ends.size(), p); }
 };
 
 // A five-armed star around (0.5, 0.5) with a square hole, 200 vertices.
