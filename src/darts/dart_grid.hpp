@@ -38,6 +38,7 @@
 #include "domain/polygon.hpp"
 #include "darts/curve_order.hpp"
 #include "darts/dart_constants.hpp"
+#include "darts/fixed_disks.hpp"
 #include "darts/grid_arithmetic.hpp"
 #include "darts/grid_storage.hpp"
 #include "darts/polygon_raster.hpp"
@@ -92,6 +93,9 @@ public:
     GridCell cell_count() const { return keep_ ? GridCell{kept_cells_} : GridCell{cols_} * rows_; }
     // The hand-over's curve over the grid's cells.
     CurveOrder curve(const Box& domain) const { return CurveOrder(domain, side_x_, side_y_, cols_, rows_); }
+    // The real cells (no padding), for laying fixed disks over them: a
+    // dart's cell there is d.col + d.row * cols.
+    DiskGrid disk_grid() const { return DiskGrid{box_, cols_, rows_, side_x_, side_y_}; }
     double radius() const { return r_; }
     const Torus& torus() const { return torus_; }
     const PointRadii* radii() const { return nullptr; }

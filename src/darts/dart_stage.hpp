@@ -20,6 +20,13 @@
 // using scratch memory reserved with the points, so the hand-over itself
 // never allocates.
 //
+// Fixed points (hold_fixed, one radius on a dense grid) are the stage's
+// first points: their clearance disks are laid over the grid's cells
+// (fixed_disks.hpp), a dart inside one is a miss like any covered dart, and
+// the new points are decided against one another by the grid, as without
+// them. At the hand-over the mesh of the new points is built whole, then
+// the fixed ones inserted (as the space-time process does).
+//
 // A Grid gives: Dart, kVarying (points keep field values), throw_darts,
 // is_free, record (with the value when kVarying, asked first of value_at),
 // reserve / has_room_for, release, cell_count (the window's scale), curve,
@@ -32,6 +39,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "core/point.hpp"
@@ -40,11 +49,13 @@
 #include "darts/dart_constants.hpp"
 #include "darts/dart_grid.hpp"
 #include "darts/dart_queue.hpp"
+#include "darts/fixed_disks.hpp"
 #include "domain/rectangle.hpp"
 #include "darts/jones_of_points.hpp"
 #include "darts/layered_grid.hpp"
 #include "darts/opening_stage.hpp"
 #include "jones/jones_stage.hpp"
+#include "radius/point_radii.hpp"
 
 namespace pds {
 
@@ -78,32 +89,68 @@ public:
     // guarantee (std::bad_alloc): each reserve succeeds or changes nothing.
     void reserve(std::size_t points) override {
         points_.reserve(points);
-        if (Grid::kVarying) values_.reserve(points);
+        if (has_values()) values_.reserve(points);
         curve_.reserve(points);
         grid_.reserve(points);
     }
     // Every vector reserve() grows: a reserve that failed half-way must not
     // pass for room, or the hand-over would allocate.
     bool has_room_for(std::size_t points) const override {
-        return points_.capacity() >= points && (!Grid::kVarying || values_.capacity() >= points) &&
+        return points_.capacity() >= points && (!has_values() || values_.capacity() >= points) &&
                curve_.has_room_for(points) && grid_.has_room_for(points);
     }
     void hand_over_to(JonesStage& jones, const Poll& poll = Poll{}) override {
         const std::uint32_t* order = handover_order();
         poll();
-        jones.adopt(points_, order, Grid::kVarying ? &values_ : nullptr, poll);
+        if (fixed_ == 0) {
+            jones.adopt(points_, order, Grid::kVarying ? &values_ : nullptr, poll);
+            return;
+        }
+        // The new points all have one radius: their regular mesh is their
+        // Delaunay mesh, built whole; the fixed ones go in after.
+        jones.set_fixed(fixed_);
+        jones.adopt(points_, order, &values_, poll, MeshBuild::whole);
+    }
+    // Fixed points (internal frame) with their values, before the first
+    // point: they become the stage's first points, a dart inside a
+    // clearance disk (radii.radius_of(value)) is covered, and the new
+    // points get new_value. False, and the stage must not be used, for a
+    // field, a grid that keeps only its taken cells, or disks whose
+    // bounding boxes span more than 4 grids plus 2^20 cells in all (the
+    // Jones loop alone is cheaper there, as in the space-time process).
+    // Throws std::bad_alloc.
+    bool hold_fixed(const std::vector<Point>& points, const std::vector<double>& values, const PointRadii& radii,
+                    double new_value) override {
+        if constexpr (Grid::kVarying || !std::is_same_v<Grid, DartGrid<DenseCells>>) {
+            return false;
+        } else {
+            if (!points_.empty()) throw std::logic_error("hold_fixed after the first point");
+            std::vector<double> clearances(points.size());
+            for (std::size_t k = 0; k < points.size(); ++k) clearances[k] = radii.radius_of(values[k]);
+            const DiskGrid cells = grid_.disk_grid();
+            if (!disks_.build(cells, points, clearances, 4 * cells.cols * cells.rows + (std::size_t{1} << 20)))
+                return false;
+            disk_cols_ = cells.cols;
+            points_ = points;
+            values_ = values;
+            fixed_ = points.size();
+            new_value_ = new_value;
+            radii_.emplace(radii);
+            return true;
+        }
     }
 
     std::size_t count() const override { return points_.size(); }
     const Point& point(PointIndex k) const override { return points_[k]; }
-    double value(PointIndex k) const override { return Grid::kVarying ? values_[k] : 0.0; }
+    double value(PointIndex k) const override { return has_values() ? values_[k] : 0.0; }
     // Throws darts until one is free and returns it. Returns nullptr once
     // the stage is over (the acceptance rate over a window of darts fell
     // below kMinAcceptance), and from then on.
     const Point* next(Rng& rng) override {
         const Dart* d = queue_.next(
             [&](const Dart& x) {
-                return domain_.contains(x.p) && (!polygon_ || Grid::surely_inside(x) || polygon_->contains(x.p));
+                return domain_.contains(x.p) && (!polygon_ || Grid::surely_inside(x) || polygon_->contains(x.p)) &&
+                       (fixed_ == 0 || !in_clearance(x));
             },
                                     [&](Dart* batch, std::size_t n) { grid_.throw_darts(batch, n, rng); },
                                     [&](const Dart& x) { return grid_.is_free(x, points_, values_); });
@@ -119,6 +166,7 @@ public:
             values_.push_back(value);
         } else {
             grid_.record(d, index);
+            if (fixed_ != 0) values_.push_back(new_value_);
         }
         points_.push_back(d.p);
         queue_.take();
@@ -139,20 +187,39 @@ public:
     const std::uint32_t* handover_order() {
         grid_.release();
         queue_.end();
-        return curve_.order(points_);
+        disks_ = FixedDisks{};
+        return curve_.order(points_, 1, fixed_);  // the fixed points first, in their order
     }
 
 private:
+    bool has_values() const { return Grid::kVarying || fixed_ != 0; }
+    // Whether a dart lies strictly inside a fixed point's clearance.
+    bool in_clearance(const Dart& d) const {
+        if constexpr (Grid::kVarying) {
+            return false;
+        } else {
+            return disks_.covered(d.p, static_cast<std::uint32_t>(static_cast<std::size_t>(d.row) * disk_cols_ +
+                                                                   static_cast<std::size_t>(d.col)));
+        }
+    }
     std::unique_ptr<JonesStage> jones_of_points() const {
-        return pds::jones_of_points(domain_, polygon_, grid_.radius(), grid_.torus(), grid_.radii(), points_,
-                                    Grid::kVarying ? &values_ : nullptr, curve_);
+        std::unique_ptr<JonesStage> jones =
+            pds::jones_of_points(domain_, polygon_, grid_.radius(), grid_.torus(), radii_ ? &*radii_ : grid_.radii(),
+                                 points_, has_values() ? &values_ : nullptr, curve_);
+        jones->set_fixed(fixed_);
+        return jones;
     }
 
     Rectangle domain_;
     std::shared_ptr<const Polygon> polygon_;
     Grid grid_;
     std::vector<Point> points_;
-    std::vector<double> values_;  // a field: point k's value
+    std::vector<double> values_;  // a field, or with fixed points: point k's value
+    std::size_t fixed_ = 0;       // fixed points, the first of points_ (hold_fixed)
+    double new_value_ = 0.0;      // with fixed points: the value of the new ones
+    std::optional<PointRadii> radii_;  // with fixed points
+    FixedDisks disks_;
+    std::size_t disk_cols_ = 0;
     CurveOrder curve_;  // the hand-over's order over the grid's cells, its scratch reserved with the points
     DartQueue<Dart> queue_;
 };

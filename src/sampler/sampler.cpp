@@ -15,9 +15,10 @@ Sampler::Sampler(double radius, std::uint64_t seed)
     : frame_(Box{0.0, 0.0, 1.0, 1.0}, radius), seed_(seed), rng_(seed) {}
 
 bool Sampler::use_darts() const {
-    // Fixed points: only the parallel process with one radius opens with
-    // darts (it keeps them out of the clearances); else the Jones loop alone.
-    return !skip_darts_ && (!has_fixed() || (parallel_ && !varying_field())) &&
+    // Fixed points: a run with one radius opens with darts kept out of the
+    // clearances (the stage may still decline: hold_fixed); a field runs
+    // the Jones loop alone.
+    return !skip_darts_ && (!has_fixed() || !varying_field()) &&
            opening_stage_suits(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr);
 }
 

@@ -117,11 +117,14 @@ END_TEST
 
 /* Count mode with a fixed point whose clearance covers the whole domain at
  * the first radius: maximal with no point, so the radius goes down with the
- * clearance until points fit (before, a crash: the stages were dropped). */
+ * clearance until points fit (before, a crash: the stages were dropped).
+ * The n-th point ends the run, maximal or not at the last radius (a corner
+ * may be left free): pds_verify finds the pattern valid either way. */
 START_TEST(count_mode_past_a_covering_clearance)
 {
     const double xy[2] = {0.5, 0.5}, c[1] = {1.0};
     size_t n;
+    int rc;
 
     for (n = 1; n <= 5; n += 2) {
         pds_sampler *s = sampler_new(1.0, 4);
@@ -129,7 +132,8 @@ START_TEST(count_mode_past_a_covering_clearance)
         ck_assert_int_eq(pds_set_fixed(s, xy, c, 1), 0);
         run_to_end(s);
         ck_assert_uint_eq(pds_count(s), n);
-        ck_assert_int_eq(pds_verify(s), 0);
+        rc = pds_verify(s);
+        ck_assert_msg(rc == PDS_DONE || rc == PDS_MORE, "n %zu: pds_verify %d: %s", n, rc, pds_errmsg(s));
         pds_destroy(s);
     }
 }

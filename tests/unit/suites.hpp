@@ -27,6 +27,7 @@ Suite* space_time_stage_suite();
 Suite* space_time_polygon_suite();
 Suite* space_time_torus_suite();
 Suite* space_time_fixed_suite();
+Suite* dart_stage_fixed_suite();
 Suite* worker_pool_suite();
 Suite* time_order_suite();
 Suite* region_darts_suite();
