@@ -48,7 +48,7 @@ extern "C" {
 
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
-#define PDS_VERSION_MINOR 10
+#define PDS_VERSION_MINOR 11
 #define PDS_VERSION_PATCH 0
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
@@ -342,9 +342,12 @@ PDS_API int pds_set_progress(pds_sampler *s, pds_progress_fn fn, void *user) PDS
  * field is evaluated at points of the fundamental domain; rmax must not
  * exceed half the shorter period, and a varying field needs the longer
  * period at most 16 times the shorter, PDS_ERANGE at the first point); not with
- * pds_set_count (PDS_EINVAL, either way round). A varying field runs the
- * Jones loop from the first point (no dart throwing): in our measurements
- * about 1.8 times the plain sampler's time at the same number of points.
+ * pds_set_count (PDS_EINVAL, either way round). In a rectangle, polygon or
+ * mask a varying field with rmax at most 8 times rmin opens with dart
+ * throwing, a grid per layer of radii (since 1.3.2); on a torus, for a
+ * wider field, in a polygon spread thin over its box, or around fixed
+ * points, the Jones loop runs from the first point. Either way the law is
+ * the same.
  * With a varying field the count limit is judged at the first point on a
  * bound that holds for every seed: Oler's bound at rmin (as for a constant
  * radius rmin), or for a map, when smaller, the sum of Oler's bounds over
@@ -492,11 +495,15 @@ PDS_API int pds_set_mask(pds_sampler *s, size_t w, size_t h, const unsigned char
  *              (R, or the field's value there). pds_refine and count mode
  *              scale every radius in force, the clearances too.
  * Copied: the arrays may be freed. n == 0 removes them (xy may be NULL).
- * Without pds_set_threads a run with fixed points uses the Jones loop from
- * its first point (no dart throwing): in our measurements about twice the
- * time of a plain run. With pds_set_threads and one radius it runs the
- * parallel process, its darts kept out of the clearances, its points the
- * same for every thread count (since 1.9; see pds_set_threads).
+ * With one radius a run with fixed points opens with dart throwing, the
+ * fixed points its first points and its darts kept out of the clearances:
+ * without pds_set_threads in the single-thread process (since 1.11; before,
+ * the Jones loop from the first point, about twice the time of a plain run,
+ * and other points), with it in the parallel process, its points the same
+ * for every thread count (since 1.9; see pds_set_threads). A radius field,
+ * a polygon spread thin over its box (islands far apart) and clearances
+ * whose boxes together span many times the domain's box run the Jones loop
+ * from the first point, with threads or not.
  * pds_free_area counts the clearances once a run has started. Clearances
  * that cover the domain leave a maximal pattern with no point (pds_run and
  * pds_verify return PDS_DONE, pds_free_area 0); in count mode the radius
@@ -526,17 +533,18 @@ PDS_API int pds_set_fixed(pds_sampler *s, const double *xy, const double *cleara
  * same points, byte for byte, for every n and whatever n was at each call;
  * threads change only the speed. They are not the points of a sampler that
  * never called pds_set_threads, which runs the single-thread process of 1.4
- * (the faster one on one core, but with fixed points). With pds_set_fixed
+ * (the faster one on one core). With pds_set_fixed
  * and one radius the parallel process runs too, its darts kept out of the
  * clearances. Variable
  * radii, with fixed points or not (a field on the torus too), run on one
  * thread either way, as do a polygon spread thin over its box (islands far
  * apart), an outline too large to raster over the dart grid, and fixed
  * points whose clearances' boxes together span many times the domain's box
- * (the Jones loop alone, as without threads); polygons and masks had the
+ * (the Jones loop alone, with threads or not); polygons and masks had the
  * single-thread process's points before 1.8, the torus and fixed points
  * before 1.9 (fixed points had other points with threads in 1.9, whose
- * hand-over inserted every point one by one). The default is the
+ * hand-over inserted every point one by one, and without threads before
+ * 1.11, from the Jones loop alone). The default is the
  * single-thread process: the library starts
  * no thread unless asked. Once selected, n may change at any time, also
  * between the calls of one run (from the next call that adds points).

