@@ -468,6 +468,8 @@ check-alloc: $(ALLOC_BIN)
 	$(ALLOC_BIN) torus-threads
 	$(ALLOC_BIN) fixed-threads
 	$(ALLOC_BIN) fixed-large
+	$(ALLOC_BIN) fixed-one-thread
+	$(ALLOC_BIN) fixed-large-one-thread
 	$(ALLOC_BIN)
 
 # ---- benchmark -----------------------------------------------------------------------

@@ -24,7 +24,9 @@
  * allocations fail in turn. "threads" runs the parallel process on 2 threads
  * in the rectangle, "polygon-threads" in the star, "torus-threads" on the
  * torus, "fixed-threads" in the star with fixed points, "fixed-large" the
- * same with points enough for the weighted mesh built whole. The default,
+ * same with points enough for the weighted mesh built whole;
+ * "fixed-one-thread" and "fixed-large-one-thread" the same two without
+ * threads (the single-thread dart stage holds the fixed points). The default,
  * ~7000-point sequence tries every k in calls that make at most 3 * SPAN
  * allocations; in larger ones (pds_verify's exact arithmetic makes tens of
  * thousands) the first SPAN, the last SPAN and SPAN spread evenly in
@@ -65,7 +67,7 @@ struct config {
     int periodic; /* the torus: copies allocate as points are added */
     int shape;    /* the domain: the rectangle, a polygon, a mask, a polygon with a field */
 };
-enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS, POLYGON_THREADS, FIXED_THREADS };
+enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS, POLYGON_THREADS, FIXED_THREADS, FIXED };
 static const struct config kSmall = {"small", 0.05, 0.035, 100, 50, 1, 0, RECTANGLE};
 static const struct config kLarge = {"large", 0.01, 0.007, 2000, 500, 0, 0, RECTANGLE};
 static const struct config kTorus = {"torus", 0.05, 0.035, 100, 50, 1, 1, RECTANGLE};
@@ -92,6 +94,11 @@ static const struct config kFixedThreads = {"fixed-threads", 0.025, 0.02, 300, 1
  * refine) for the weighted mesh to be built whole, then the fixed points
  * inserted: its largest calls sampled. */
 static const struct config kFixedLarge = {"fixed-large", 0.0055, 0.0045, 3000, 500, 0, 0, FIXED_THREADS};
+/* The star with fixed points without threads: the single-thread dart
+ * stage's clearance disks, every allocation tried; then with points enough
+ * for the whole build at the hand-over and at the refine, sampled. */
+static const struct config kFixedOne = {"fixed-one-thread", 0.025, 0.02, 300, 100, 1, 0, FIXED};
+static const struct config kFixedLargeOne = {"fixed-large-one-thread", 0.0055, 0.0045, 3000, 500, 0, 0, FIXED};
 static const struct config *cfg = &kLarge;
 #define RADIUS (cfg->radius)
 #define REFINED (cfg->refined)
@@ -385,13 +392,13 @@ static void do_shape(struct trial *t, pds_sampler *s)
 {
     int rc = 0;
     if (cfg->shape == POLYGON || cfg->shape == POLYGON_FIELD || cfg->shape == POLYGON_THREADS ||
-        cfg->shape == FIXED_THREADS)
+        cfg->shape == FIXED_THREADS || cfg->shape == FIXED)
         rc = set_domain_part(t, s, 0);
     if (cfg->shape == MASK) rc = set_domain_part(t, s, 1);
     if (cfg->shape == POLYGON_FIELD && rc == 0) rc = set_domain_part(t, s, 2);
     if ((cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS) && rc == 0)
         rc = set_domain_part(t, s, 3);
-    if (cfg->shape == FIXED_THREADS && rc == 0) rc = set_domain_part(t, s, 4);
+    if ((cfg->shape == FIXED_THREADS || cfg->shape == FIXED) && rc == 0) rc = set_domain_part(t, s, 4);
     outcome(t, s, rc, pds_free_area(s), "pds_set_polygon/mask");
 }
 
@@ -574,9 +581,13 @@ int main(int argc, char **argv)
         cfg = &kFixedThreads;
     else if (argc > 1 && strcmp(argv[1], "fixed-large") == 0)
         cfg = &kFixedLarge;
+    else if (argc > 1 && strcmp(argv[1], "fixed-one-thread") == 0)
+        cfg = &kFixedOne;
+    else if (argc > 1 && strcmp(argv[1], "fixed-large-one-thread") == 0)
+        cfg = &kFixedLargeOne;
     else if (argc > 1) {
         printf("usage: alloc_fail [small|torus|polygon|mask|field|threads|polygon-threads|torus-threads|fixed-threads|"
-               "fixed-large]\n");
+               "fixed-large|fixed-one-thread|fixed-large-one-thread]\n");
         return 2;
     }
     if (cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS)
