@@ -93,9 +93,12 @@ public:
     GridCell cell_count() const { return keep_ ? GridCell{kept_cells_} : GridCell{cols_} * rows_; }
     // The hand-over's curve over the grid's cells.
     CurveOrder curve(const Box& domain) const { return CurveOrder(domain, side_x_, side_y_, cols_, rows_); }
-    // The real cells (no padding), for laying fixed disks over them: a
-    // dart's cell there is d.col + d.row * cols.
+    // The real cells (no padding), for laying fixed disks over them, and a
+    // dart's cell there.
     DiskGrid disk_grid() const { return DiskGrid{box_, cols_, rows_, side_x_, side_y_}; }
+    static std::uint32_t disk_cell(const Dart& d, const DiskGrid& g) {
+        return static_cast<std::uint32_t>(static_cast<std::size_t>(d.row) * g.cols + static_cast<std::size_t>(d.col));
+    }
     double radius() const { return r_; }
     const Torus& torus() const { return torus_; }
     const PointRadii* radii() const { return nullptr; }

@@ -20,12 +20,13 @@
 // using scratch memory reserved with the points, so the hand-over itself
 // never allocates.
 //
-// Fixed points (hold_fixed, one radius on a dense grid) are the stage's
-// first points: their clearance disks are laid over the grid's cells
-// (fixed_disks.hpp), a dart inside one is a miss like any covered dart, and
-// the new points are decided against one another by the grid, as without
-// them. At the hand-over the mesh of the new points is built whole, then
-// the fixed ones inserted (as the space-time process does).
+// Fixed points (hold_fixed; a dense grid, or a field's layers) are the
+// stage's first points: their clearance disks are laid over the grid's
+// (finest) cells (fixed_disks.hpp), a dart inside one is a miss like any
+// covered dart, and the new points are decided against one another by the
+// grid, as without them. At the hand-over with one radius the mesh of the
+// new points is built whole, then the fixed ones inserted (as the
+// space-time process does); a field's points go in one by one after them.
 //
 // A Grid gives: Dart, kVarying (points keep field values), throw_darts,
 // is_free, record (with the value when kVarying, asked first of value_at),
@@ -106,22 +107,22 @@ public:
             jones.adopt(points_, order, Grid::kVarying ? &values_ : nullptr, poll);
             return;
         }
-        // The new points all have one radius: their regular mesh is their
-        // Delaunay mesh, built whole; the fixed ones go in after.
         jones.set_fixed(fixed_);
-        jones.adopt(points_, order, &values_, poll, MeshBuild::whole);
+        // With one radius the new points' regular mesh is their Delaunay
+        // mesh, built whole; the fixed ones go in after.
+        jones.adopt(points_, order, &values_, poll, Grid::kVarying ? MeshBuild::insert : MeshBuild::whole);
     }
     // Fixed points (internal frame) with their values, before the first
     // point: they become the stage's first points, a dart inside a
     // clearance disk (radii.radius_of(value)) is covered, and the new
-    // points get new_value. False, and the stage must not be used, for a
-    // field, a grid that keeps only its taken cells, or disks whose
-    // bounding boxes span more than 4 grids plus 2^20 cells in all (the
-    // Jones loop alone is cheaper there, as in the space-time process).
-    // Throws std::bad_alloc.
+    // points get new_value (a field's: their own). False, and the stage
+    // must not be used, for a grid that keeps only its taken cells, or
+    // disks whose bounding boxes span more than 4 grids plus 2^20 cells in
+    // all (the Jones loop alone is cheaper there, as in the space-time
+    // process). Throws std::bad_alloc.
     bool hold_fixed(const std::vector<Point>& points, const std::vector<double>& values, const PointRadii& radii,
                     double new_value) override {
-        if constexpr (Grid::kVarying || !std::is_same_v<Grid, DartGrid<DenseCells>>) {
+        if constexpr (std::is_same_v<Grid, DartGrid<SparseCells>>) {
             return false;
         } else {
             if (!points_.empty()) throw std::logic_error("hold_fixed after the first point");
@@ -130,7 +131,7 @@ public:
             const DiskGrid cells = grid_.disk_grid();
             if (!disks_.build(cells, points, clearances, 4 * cells.cols * cells.rows + (std::size_t{1} << 20)))
                 return false;
-            disk_cols_ = cells.cols;
+            disk_grid_ = cells;
             points_ = points;
             values_ = values;
             fixed_ = points.size();
@@ -194,14 +195,7 @@ public:
 private:
     bool has_values() const { return Grid::kVarying || fixed_ != 0; }
     // Whether a dart lies strictly inside a fixed point's clearance.
-    bool in_clearance(const Dart& d) const {
-        if constexpr (Grid::kVarying) {
-            return false;
-        } else {
-            return disks_.covered(d.p, static_cast<std::uint32_t>(static_cast<std::size_t>(d.row) * disk_cols_ +
-                                                                   static_cast<std::size_t>(d.col)));
-        }
-    }
+    bool in_clearance(const Dart& d) const { return disks_.covered(d.p, grid_.disk_cell(d, disk_grid_)); }
     std::unique_ptr<JonesStage> jones_of_points() const {
         std::unique_ptr<JonesStage> jones =
             pds::jones_of_points(domain_, polygon_, grid_.radius(), grid_.torus(), radii_ ? &*radii_ : grid_.radii(),
@@ -219,7 +213,7 @@ private:
     double new_value_ = 0.0;      // with fixed points: the value of the new ones
     std::optional<PointRadii> radii_;  // with fixed points
     FixedDisks disks_;
-    std::size_t disk_cols_ = 0;
+    DiskGrid disk_grid_{};  // the cells the disks are laid over
     CurveOrder curve_;  // the hand-over's order over the grid's cells, its scratch reserved with the points
     DartQueue<Dart> queue_;
 };

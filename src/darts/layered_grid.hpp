@@ -43,6 +43,7 @@
 #include "darts/covered_bitmap.hpp"
 #include "darts/curve_order.hpp"
 #include "darts/dart_constants.hpp"
+#include "darts/fixed_disks.hpp"
 #include "darts/grid_arithmetic.hpp"
 #include "darts/polygon_raster.hpp"
 #include "radius/point_radii.hpp"
@@ -128,6 +129,17 @@ public:
     // vain.
     void keep_to(const Polygon& polygon);
     static bool surely_inside(const Dart& d) { return d.inside; }
+    // The finest layer's real cells, for laying fixed disks over them, and
+    // a dart's cell there (found as the covered bitmap finds it).
+    DiskGrid disk_grid() const {
+        const Layer& f = layers_.front();
+        return DiskGrid{box_, f.cols, f.rows, f.side, f.side};
+    }
+    std::uint32_t disk_cell(const Dart& d, const DiskGrid& g) const {
+        const double inv = layers_.front().inv_side;
+        return static_cast<std::uint32_t>(clamped_cell((d.p.y - box_.y0) * inv, g.rows) * g.cols +
+                                          clamped_cell((d.p.x - box_.x0) * inv, g.cols));
+    }
     // Whether keep_to's darts are drawn among its polygon's raster (tests).
     bool draws_in_raster() const { return raster_.cells() > 0; }
     // Whether d is outside every disk; points[k] and values[k] are point

@@ -15,10 +15,9 @@ Sampler::Sampler(double radius, std::uint64_t seed)
     : frame_(Box{0.0, 0.0, 1.0, 1.0}, radius), seed_(seed), rng_(seed) {}
 
 bool Sampler::use_darts() const {
-    // Fixed points: a run with one radius opens with darts kept out of the
-    // clearances (the stage may still decline: hold_fixed); a field runs
-    // the Jones loop alone.
-    return !skip_darts_ && (!has_fixed() || !varying_field()) &&
+    // Fixed points: the dart stages keep their darts out of the clearances
+    // (a stage may still decline: hold_fixed).
+    return !skip_darts_ &&
            opening_stage_suits(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr);
 }
 

@@ -1,8 +1,10 @@
 // dart_throwing.hpp - the reference sampler of the law tests: plain dart
 // throwing run to true saturation, after Ebeida et al., "Efficient maximal
 // Poisson-disk sampling" (SIGGRAPH 2011), for any pair of
-//   a distance rule:  Plane (the closed box) or Torus ([x0,x1) x [y0,y1),
-//                     distances to the nearest copy), and
+//   a distance rule:  Plane (the closed box), Torus ([x0,x1) x [y0,y1),
+//                     distances to the nearest copy), InPolygon (rings by
+//                     the even-odd rule) or AroundDisks (the box less open
+//                     disks around fixed points), and
 //   a radius rule:    ConstantRadius (R everywhere) or FieldRadius (a point
 //                     at p carries r(p)).
 // A dart is kept when it lies in the domain and outside every earlier disk,
@@ -123,6 +125,31 @@ struct InPolygon : Plane {
                any_ring_edge(xy.data(), ends.data(), ends.size(), [&](double ax, double ay, double bx, double by) {
                    return segment_meets(ax, ay, bx, by, x, y, side);
                });
+    }
+};
+
+// The box less the open disks around fixed points (distances and buckets as
+// Plane's): a dart strictly inside a disk is refused, and a square whose
+// corners all lie within one disk is dropped.
+struct AroundDisks : Plane {
+    std::vector<pds::Point> centre;
+    std::vector<double> radius;
+
+    bool inside(const pds::Point& p) const {
+        if (!box.contains(p)) return false;
+        for (std::size_t k = 0; k < centre.size(); ++k)
+            if (d2(p, centre[k]) < radius[k] * radius[k]) return false;
+        return true;
+    }
+    bool meets(double x, double y, double side) const {
+        if (!Plane::meets(x, y, side)) return false;
+        for (std::size_t k = 0; k < centre.size(); ++k) {
+            bool all = true;
+            for (int c = 0; c < 4 && all; ++c)
+                all = d2(pds::Point{x + (c & 1) * side, y + (c >> 1) * side}, centre[k]) <= radius[k] * radius[k];
+            if (all) return false;
+        }
+        return true;
     }
 };
 

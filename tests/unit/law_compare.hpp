@@ -2,9 +2,11 @@
 // configuration (domain, plane or torus, one radius or a radius field, which
 // stages run) against the independent saturated dart thrower
 // (dart_throwing.hpp) under the same distance and radius rules. Over many
-// seeds it compares the final count N and the number of near-contact pairs
+// seeds it compares the final count N, the number of near-contact pairs
 // (a later point within 1.2 times an earlier one's radius, by the domain's
-// distance): a two-sample z test on the means and a two-sample
+// distance) and the mean distance from each point to the nearest point
+// placed before it (both samplers place points in random-sequential order,
+// so this sees where each new point fell): a two-sample z test on the means and a two-sample
 // Kolmogorov-Smirnov test on N, with fixed seeds, so the outcome is
 // deterministic: |z| > 4.5 has probability ~7e-6 under the same law, KS
 // scaled > 1.95 ~1e-3.
@@ -43,18 +45,25 @@ struct Config {
 };
 
 struct Sample {
-    std::vector<double> count, close_pairs;
+    std::vector<double> count, close_pairs, to_earlier;
 };
 
 // Adds one pattern, its pairs measured by `distance` (Plane or Torus).
 template <class Distance>
 void add(Sample& s, const oracle::Pattern& t, const Distance& distance) {
-    double n = 0;
-    for (std::size_t i = 0; i < t.p.size(); ++i)
-        for (std::size_t j = i + 1; j < t.p.size(); ++j)
-            if (distance.d2(t.p[i], t.p[j]) < 1.44 * t.r[i] * t.r[i]) ++n;
+    double n = 0, earlier = 0;
+    for (std::size_t i = 0; i < t.p.size(); ++i) {
+        double nearest2 = INFINITY;
+        for (std::size_t j = 0; j < t.p.size(); ++j) {
+            const double d2 = distance.d2(t.p[i], t.p[j]);
+            if (j < i) nearest2 = std::min(nearest2, d2);
+            if (j > i && d2 < 1.44 * t.r[i] * t.r[i]) ++n;
+        }
+        if (i > 0) earlier += std::sqrt(nearest2);
+    }
     s.count.push_back(static_cast<double>(t.p.size()));
     s.close_pairs.push_back(n);
+    s.to_earlier.push_back(t.p.size() > 1 ? earlier / static_cast<double>(t.p.size() - 1) : 0.0);
 }
 
 inline double mean(const std::vector<double>& v) {
@@ -137,11 +146,14 @@ inline void assert_stages(const Config& c, std::size_t from_darts, std::size_t t
 inline void assert_same_law(const Sample& sampler, const Sample& darts) {
     const double z_count = z_score(sampler.count, darts.count);
     const double z_pairs = z_score(sampler.close_pairs, darts.close_pairs);
+    const double z_earlier = z_score(sampler.to_earlier, darts.to_earlier);
     const double ks = ks_scaled(sampler.count, darts.count);
     ck_assert_msg(std::fabs(z_count) < 4.5, "mean N: sampler %.3f, dart throwing %.3f (z = %.2f)",
                   mean(sampler.count), mean(darts.count), z_count);
     ck_assert_msg(std::fabs(z_pairs) < 4.5, "close pairs: sampler %.3f, dart throwing %.3f (z = %.2f)",
                   mean(sampler.close_pairs), mean(darts.close_pairs), z_pairs);
+    ck_assert_msg(std::fabs(z_earlier) < 4.5, "distance to the nearest earlier point: sampler %.5f, dart throwing %.5f (z = %.2f)",
+                  mean(sampler.to_earlier), mean(darts.to_earlier), z_earlier);
     ck_assert_msg(ks < 1.95, "distribution of N differs (KS %.3f)", ks);
 }
 

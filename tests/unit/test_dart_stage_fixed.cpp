@@ -1,14 +1,18 @@
 // test_dart_stage_fixed.cpp - the single-thread process with fixed points:
-// its dart stage keeps its darts out of the clearance disks, laid over the
-// dart grid's cells (fixed_disks.hpp's plain grid). For any point of a
-// closed cell the disks say covered exactly when the point lies strictly
-// inside a disk, whole cells included; the stage opens the run (it is still
-// running after the first points), the patterns keep every clearance, are
-// maximal, and do not depend on how the run is split; count mode and a
-// refine hand over from it.
+// its dart stage (one radius, or a field's layers) keeps its darts out of
+// the clearance disks, laid over the dart grid's cells (fixed_disks.hpp's
+// plain grid). For any point of a closed cell the disks say covered exactly
+// when the point lies strictly inside a disk, whole cells included; the
+// stage opens the run (it is still running after the first points), the
+// patterns keep every clearance, are maximal, and do not depend on how the
+// run is split; count mode and a refine hand over from it; and whole runs
+// around fixed disks, with one radius and with a field, follow the law of
+// saturated dart throwing in the box less the disks.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -16,6 +20,8 @@
 #include "core/rng.hpp"
 #include "darts/dart_constants.hpp"
 #include "darts/fixed_disks.hpp"
+#include "dart_throwing.hpp"
+#include "law_compare.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
 #include "threaded_runs.hpp"
@@ -64,6 +70,46 @@ void assert_clear(const std::vector<double>& xy, double r, double r0) {
 
 bool same(const std::vector<double>& a, const std::vector<double>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+// The law tests' disks in the unit square: a large one, one on the edge,
+// two that overlap.
+const std::vector<pds::Point> kLawFixed = {{0.35, 0.4}, {1.0, 0.8}, {0.75, 0.3}, {0.8, 0.35}};
+const std::vector<double> kLawClearance = {0.2, 0.15, 0.08, 0.06};
+
+double gradient(void*, double x, double) { return 0.06 * (1.0 + x); }
+
+// Runs configured as c around the law disks against saturated dart
+// throwing in the box less the disks, under the same radius rule.
+template <class Radius>
+void compare_around_disks(const law::Config& c, const Radius& radius) {
+    oracle::AroundDisks rule;
+    rule.box = c.box;
+    rule.centre = kLawFixed;
+    rule.radius = kLawClearance;
+    auto reference = oracle::dart_throwing(rule, radius);
+    law::Sample sampler, darts;
+    std::size_t from_darts = 0, total = 0;
+    for (int seed = 1; seed <= c.runs; ++seed) {
+        pds::Sampler s(c.field ? 1.0 : c.r, static_cast<std::uint64_t>(seed));
+        law::configure(s, c);
+        s.set_fixed(kLawFixed, kLawClearance);
+        const oracle::Pattern a = law::run_to_the_end(s, &from_darts);
+        total += a.p.size();
+        law::add(sampler, a, rule);
+        law::add(darts, reference.run(static_cast<std::uint64_t>(1000000 + seed)), rule);
+    }
+    law::assert_stages(c, from_darts, total);
+    if (std::getenv("PDS_LAW_PRINT"))
+        std::printf("around disks%s: N %.4f / %.4f (z %.2f), close pairs %.4f / %.4f (z %.2f), to earlier %.5f / "
+                    "%.5f (z %.2f), KS %.2f, darts %.3f\n",
+                    c.field ? ", a field" : "", law::mean(sampler.count), law::mean(darts.count),
+                    law::z_score(sampler.count, darts.count), law::mean(sampler.close_pairs),
+                    law::mean(darts.close_pairs), law::z_score(sampler.close_pairs, darts.close_pairs),
+                    law::mean(sampler.to_earlier), law::mean(darts.to_earlier),
+                    law::z_score(sampler.to_earlier, darts.to_earlier), law::ks_scaled(sampler.count, darts.count),
+                    static_cast<double>(from_darts) / static_cast<double>(total));
+    law::assert_same_law(sampler, darts);
 }
 
 }  // namespace
@@ -209,6 +255,48 @@ START_TEST(count_mode_and_refine_hand_over_from_the_darts) {
 }
 END_TEST
 
+START_TEST(law_around_fixed_disks) {
+    law::Config c;
+    c.runs = test_light() ? 300 : 2000;
+    if (_i == 0) {
+        c.r = 0.1;
+        compare_around_disks(c, oracle::ConstantRadius{c.r});
+    } else {
+        c.field = gradient;
+        c.rmin = 0.06;
+        c.rmax = 0.12;
+        compare_around_disks(c, oracle::FieldRadius{gradient, c.rmin, c.rmax});
+    }
+}
+END_TEST
+
+START_TEST(reference_around_disks_is_saturated) {
+    // The reference keeps the disks and leaves no free probe, in the box
+    // less the disks (probes inside a disk count as covered).
+    oracle::AroundDisks rule;
+    rule.box = pds::Box{0, 0, 1, 1};
+    rule.centre = kLawFixed;
+    rule.radius = kLawClearance;
+    auto reference = oracle::dart_throwing(rule, oracle::FieldRadius{gradient, 0.06, 0.12});
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        const oracle::Pattern t = reference.run(seed);
+        for (std::size_t i = 0; i < t.p.size(); ++i) {
+            if (!rule.inside(t.p[i])) ck_abort_msg("point %zu inside a fixed disk", i);
+            for (std::size_t j = i + 1; j < t.p.size(); ++j)
+                if (rule.d2(t.p[i], t.p[j]) < t.r[i] * t.r[i]) ck_abort_msg("point %zu inside point %zu's disk", j, i);
+        }
+        for (int a = 0; a <= 400; ++a)
+            for (int b = 0; b <= 400; ++b) {
+                const pds::Point x{a / 400.0, b / 400.0};
+                if (!rule.inside(x)) continue;
+                bool in = false;
+                for (std::size_t i = 0; i < t.p.size() && !in; ++i) in = rule.d2(x, t.p[i]) <= t.r[i] * t.r[i];
+                if (!in) ck_abort_msg("seed %llu: (%g, %g) is free", static_cast<unsigned long long>(seed), x.x, x.y);
+            }
+    }
+}
+END_TEST
+
 Suite* dart_stage_fixed_suite() {
     Suite* s = suite_create("dart_stage_fixed");
     TCase* t = tcase_create("core");
@@ -216,6 +304,8 @@ Suite* dart_stage_fixed_suite() {
     tcase_add_test(t, plain_grid_disks_cover_exactly_the_points_inside);
     tcase_add_test(t, dart_stage_opens_around_fixed_points);
     tcase_add_test(t, count_mode_and_refine_hand_over_from_the_darts);
+    tcase_add_test(t, reference_around_disks_is_saturated);
+    tcase_add_loop_test(t, law_around_fixed_disks, 0, 2);
     suite_add_tcase(s, t);
     return s;
 }
