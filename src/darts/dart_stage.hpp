@@ -40,7 +40,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -103,11 +102,11 @@ public:
     void hand_over_to(JonesStage& jones, const Poll& poll = Poll{}) override {
         const std::uint32_t* order = handover_order();
         poll();
-        if (fixed_ == 0) {
+        if (!fixed_) {
             jones.adopt(points_, order, Grid::kVarying ? &values_ : nullptr, poll);
             return;
         }
-        jones.set_fixed(fixed_);
+        jones.set_fixed(fixed_->count);
         // With one radius the new points' regular mesh is their Delaunay
         // mesh, built whole; the fixed ones go in after.
         jones.adopt(points_, order, &values_, poll, Grid::kVarying ? MeshBuild::insert : MeshBuild::whole);
@@ -129,14 +128,16 @@ public:
             std::vector<double> clearances(points.size());
             for (std::size_t k = 0; k < points.size(); ++k) clearances[k] = radii.radius_of(values[k]);
             const DiskGrid cells = grid_.disk_grid();
-            if (!disks_.build(cells, points, clearances, 4 * cells.cols * cells.rows + (std::size_t{1} << 20)))
+            FixedDisks disks;
+            if (!disks.build(cells, points, clearances, 4 * cells.cols * cells.rows + (std::size_t{1} << 20)))
                 return false;
-            disk_grid_ = cells;
-            points_ = points;
-            values_ = values;
-            fixed_ = points.size();
-            new_value_ = new_value;
-            radii_.emplace(radii);
+            // Copied first, swapped in after: a failure changes nothing.
+            auto held = std::make_unique<Held>(Held{points.size(), new_value, radii, std::move(disks), cells});
+            std::vector<Point> first = points;
+            std::vector<double> their_values = values;
+            points_.swap(first);
+            values_.swap(their_values);
+            fixed_ = std::move(held);
             return true;
         }
     }
@@ -151,7 +152,7 @@ public:
         const Dart* d = queue_.next(
             [&](const Dart& x) {
                 return domain_.contains(x.p) && (!polygon_ || Grid::surely_inside(x) || polygon_->contains(x.p)) &&
-                       (fixed_ == 0 || !in_clearance(x));
+                       (!fixed_ || !in_clearance(x));
             },
                                     [&](Dart* batch, std::size_t n) { grid_.throw_darts(batch, n, rng); },
                                     [&](const Dart& x) { return grid_.is_free(x, points_, values_); });
@@ -167,7 +168,7 @@ public:
             values_.push_back(value);
         } else {
             grid_.record(d, index);
-            if (fixed_ != 0) values_.push_back(new_value_);
+            if (fixed_) values_.push_back(fixed_->new_value);
         }
         points_.push_back(d.p);
         queue_.take();
@@ -188,19 +189,20 @@ public:
     const std::uint32_t* handover_order() {
         grid_.release();
         queue_.end();
-        disks_ = FixedDisks{};
-        return curve_.order(points_, 1, fixed_);  // the fixed points first, in their order
+        if (fixed_) fixed_->disks = FixedDisks{};
+        return curve_.order(points_, 1, fixed_count());  // the fixed points first, in their order
     }
 
 private:
-    bool has_values() const { return Grid::kVarying || fixed_ != 0; }
+    std::size_t fixed_count() const { return fixed_ ? fixed_->count : 0; }
+    bool has_values() const { return Grid::kVarying || fixed_; }
     // Whether a dart lies strictly inside a fixed point's clearance.
-    bool in_clearance(const Dart& d) const { return disks_.covered(d.p, grid_.disk_cell(d, disk_grid_)); }
+    bool in_clearance(const Dart& d) const { return fixed_->disks.covered(d.p, grid_.disk_cell(d, fixed_->grid)); }
     std::unique_ptr<JonesStage> jones_of_points() const {
         std::unique_ptr<JonesStage> jones =
-            pds::jones_of_points(domain_, polygon_, grid_.radius(), grid_.torus(), radii_ ? &*radii_ : grid_.radii(),
+            pds::jones_of_points(domain_, polygon_, grid_.radius(), grid_.torus(), fixed_ ? &fixed_->radii : grid_.radii(),
                                  points_, has_values() ? &values_ : nullptr, curve_);
-        jones->set_fixed(fixed_);
+        jones->set_fixed(fixed_count());
         return jones;
     }
 
@@ -209,11 +211,16 @@ private:
     Grid grid_;
     std::vector<Point> points_;
     std::vector<double> values_;  // a field, or with fixed points: point k's value
-    std::size_t fixed_ = 0;       // fixed points, the first of points_ (hold_fixed)
-    double new_value_ = 0.0;      // with fixed points: the value of the new ones
-    std::optional<PointRadii> radii_;  // with fixed points
-    FixedDisks disks_;
-    DiskGrid disk_grid_{};  // the cells the disks are laid over
+    // What hold_fixed keeps: the fixed points are the first `count` of
+    // points_; the new ones' value (one radius); the disks over the grid's cells.
+    struct Held {
+        std::size_t count;
+        double new_value;
+        PointRadii radii;
+        FixedDisks disks;
+        DiskGrid grid;
+    };
+    std::unique_ptr<Held> fixed_;  // none without fixed points
     CurveOrder curve_;  // the hand-over's order over the grid's cells, its scratch reserved with the points
     DartQueue<Dart> queue_;
 };
