@@ -344,10 +344,10 @@ PDS_API int pds_set_progress(pds_sampler *s, pds_progress_fn fn, void *user) PDS
  * period at most 16 times the shorter, PDS_ERANGE at the first point); not with
  * pds_set_count (PDS_EINVAL, either way round). In a rectangle, polygon or
  * mask a varying field with rmax at most 8 times rmin opens with dart
- * throwing, a grid per layer of radii (since 1.3.2); on a torus, for a
- * wider field, in a polygon spread thin over its box, or around fixed
- * points, the Jones loop runs from the first point. Either way the law is
- * the same.
+ * throwing, a grid per layer of radii (since 1.3.2; around fixed points
+ * since 1.11); on a torus, for a wider field, or in a polygon spread thin
+ * over its box, the Jones loop runs from the first point. Either way the
+ * law is the same.
  * With a varying field the count limit is judged at the first point on a
  * bound that holds for every seed: Oler's bound at rmin (as for a constant
  * radius rmin), or for a map, when smaller, the sum of Oler's bounds over
@@ -500,10 +500,12 @@ PDS_API int pds_set_mask(pds_sampler *s, size_t w, size_t h, const unsigned char
  * without pds_set_threads in the single-thread process (since 1.11; before,
  * the Jones loop from the first point, about twice the time of a plain run,
  * and other points), with it in the parallel process, its points the same
- * for every thread count (since 1.9; see pds_set_threads). A radius field,
- * a polygon spread thin over its box (islands far apart) and clearances
- * whose boxes together span many times the domain's box run the Jones loop
- * from the first point, with threads or not.
+ * for every thread count (since 1.9; see pds_set_threads). A radius field
+ * opens with its layered dart grids around fixed points too, where it does
+ * without them (since 1.11; see pds_set_radius_map), on one thread either
+ * way. A polygon spread thin over its box (islands far apart) and
+ * clearances whose boxes together span many times the domain's box run
+ * the Jones loop from the first point, with threads or not.
  * pds_free_area counts the clearances once a run has started. Clearances
  * that cover the domain leave a maximal pattern with no point (pds_run and
  * pds_verify return PDS_DONE, pds_free_area 0); in count mode the radius
