@@ -21,6 +21,7 @@
 #include "darts/dart_constants.hpp"
 #include "darts/fixed_disks.hpp"
 #include "dart_throwing.hpp"
+#include "fixed_cases.hpp"
 #include "law_compare.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
@@ -28,22 +29,8 @@
 
 namespace {
 
-// Clearances of every kind: 0 (the radius), small, large, one disk inside
-// another (its power cell empty), one on the box's edge.
-const std::vector<pds::Point> kFixed = {{0.3, 0.3}, {0.7, 0.25}, {0.72, 0.27}, {0.5, 0.8}, {1.0, 0.5}, {0.1, 0.9}};
-const std::vector<double> kClearance = {0.0, 0.002, 0.004, 0.15, 0.08, 0.3};
-
-pds::Sampler with_fixed(double r, std::uint64_t seed, bool polygon) {
-    pds::Sampler s(r, seed);
-    if (polygon) {
-        // An L with a square hole, as the API's tests use.
-        const double xy[] = {0, 0, 1, 0, 1, 0.5, 0.5, 0.5, 0.5, 1, 0, 1, 0.15, 0.15, 0.35, 0.15, 0.35, 0.35, 0.15, 0.35};
-        const std::size_t ends[] = {6, 10};
-        s.set_polygon(xy, ends, 2);
-    }
-    s.set_fixed(kFixed, kClearance);
-    return s;
-}
+using fixed_cases::assert_clear;
+using fixed_cases::with_fixed;
 
 // The run to the end in calls of `chunk` points (0: one call), verified.
 std::vector<double> run_in_calls(pds::Sampler& s, std::size_t chunk) {
@@ -55,17 +42,6 @@ std::vector<double> run_in_calls(pds::Sampler& s, std::size_t chunk) {
     std::vector<double> xy(2 * s.count());
     s.copy_points(0, s.count(), xy.data());
     return xy;
-}
-
-// No point strictly inside a clearance at radius r, the run having started
-// at r0 (the clearances scale with the radius).
-void assert_clear(const std::vector<double>& xy, double r, double r0) {
-    for (std::size_t i = 0; i < xy.size() / 2; ++i)
-        for (std::size_t k = 0; k < kFixed.size(); ++k) {
-            const double c = kClearance[k] > 0.0 ? kClearance[k] * (r / r0) : r;
-            if (pds::compare_distance(pds::Point{xy[2 * i], xy[2 * i + 1]}, kFixed[k], c) < 0)
-                ck_abort_msg("point %zu inside fixed point %zu's clearance", i, k);
-        }
 }
 
 bool same(const std::vector<double>& a, const std::vector<double>& b) {
@@ -299,8 +275,8 @@ END_TEST
 
 Suite* dart_stage_fixed_suite() {
     Suite* s = suite_create("dart_stage_fixed");
-    TCase* t = tcase_create("core");
-    tcase_set_timeout(t, 600);
+    TCase* t = tcase_create("the single-thread dart stage with fixed points");
+    tcase_set_timeout(t, 300);
     tcase_add_test(t, plain_grid_disks_cover_exactly_the_points_inside);
     tcase_add_test(t, dart_stage_opens_around_fixed_points);
     tcase_add_test(t, count_mode_and_refine_hand_over_from_the_darts);

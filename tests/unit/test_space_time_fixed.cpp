@@ -17,42 +17,13 @@
 #include "core/rng.hpp"
 #include "darts/fixed_disks.hpp"
 #include "darts/space_time_grid.hpp"
+#include "fixed_cases.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
 #include "threaded_runs.hpp"
 
-namespace {
-
-// Clearances of every kind: 0 (the radius), small, large, one disk inside
-// another (its power cell empty: hidden), one on the box's edge.
-const std::vector<pds::Point> kFixed = {{0.3, 0.3}, {0.7, 0.25}, {0.72, 0.27}, {0.5, 0.8}, {1.0, 0.5}, {0.1, 0.9}};
-const std::vector<double> kClearance = {0.0, 0.002, 0.004, 0.15, 0.08, 0.3};
-
-pds::Sampler with_fixed(double r, std::uint64_t seed, bool polygon) {
-    pds::Sampler s(r, seed);
-    if (polygon) {
-        // An L with a square hole, as the API's tests use.
-        const double xy[] = {0, 0, 1, 0, 1, 0.5, 0.5, 0.5, 0.5, 1, 0, 1, 0.15, 0.15, 0.35, 0.15, 0.35, 0.35, 0.15, 0.35};
-        const std::size_t ends[] = {6, 10};
-        s.set_polygon(xy, ends, 2);
-    }
-    s.set_fixed(kFixed, kClearance);
-    return s;
-}
-
-// No point strictly inside a clearance at radius r, the run having started
-// at r0 (the clearances scale with the radius; the domain is the unit
-// square, the internal units are the user's).
-void assert_clear(const ThreadedRun& run, double r, double r0) {
-    for (std::size_t i = 0; i < run.xy.size() / 2; ++i)
-        for (std::size_t k = 0; k < kFixed.size(); ++k) {
-            const double c = kClearance[k] > 0.0 ? kClearance[k] * (r / r0) : r;
-            if (pds::compare_distance(pds::Point{run.xy[2 * i], run.xy[2 * i + 1]}, kFixed[k], c) < 0)
-                ck_abort_msg("point %zu inside fixed point %zu's clearance", i, k);
-        }
-}
-
-}  // namespace
+using fixed_cases::assert_clear;
+using fixed_cases::with_fixed;
 
 START_TEST(same_points_with_fixed_points_on_any_number_of_threads) {
     const unsigned most = test_light() ? 3 : 8;
@@ -60,7 +31,7 @@ START_TEST(same_points_with_fixed_points_on_any_number_of_threads) {
         pds::Sampler first = with_fixed(0.01, 7, polygon != 0);
         const ThreadedRun one = run_threaded(first, 1);
         ck_assert(one.maximal);
-        assert_clear(one, 0.01, 0.01);
+        assert_clear(one.xy, 0.01, 0.01);
         // The opening and the free regions' darts placed most points.
         ck_assert_msg(first.jones().region_stats().points > one.xy.size() / 2 / 20, "%zu region points of %zu",
                       first.jones().region_stats().points, one.xy.size() / 2);
@@ -70,7 +41,7 @@ START_TEST(same_points_with_fixed_points_on_any_number_of_threads) {
         }
         pds::Sampler split = with_fixed(0.01, 7, polygon != 0);
         assert_same(one, run_threaded(split, 3, 777, 1), "777 a call, then 1 thread");
-        // Another process than the default one (the Jones loop alone).
+        // Another process than the default one (the single-thread dart stage).
         pds::Sampler plain = with_fixed(0.01, 7, polygon != 0);
         std::size_t added = 0;
         plain.run(0, &added);
@@ -94,9 +65,7 @@ std::vector<double> counted(unsigned threads, std::size_t n) {
     std::vector<double> xy(2 * s.count());
     s.copy_points(0, s.count(), xy.data());
     ck_assert_uint_eq(s.count(), n);
-    ThreadedRun run;
-    run.xy = xy;
-    assert_clear(run, s.radius(), r0);
+    assert_clear(xy, s.radius(), r0);
     return xy;
 }
 
