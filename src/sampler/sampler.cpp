@@ -181,8 +181,11 @@ void Sampler::prepare(std::size_t points) {
             std::vector<Point> at;
             std::vector<double> values;
             prepare_fixed(at, values);
-            const Point corner{frame_.box().x0, frame_.box().y0};  // the radius is one: any point's value
-            if (darts && !darts->hold_fixed(at, values, *radii, radii->value_at(corner))) darts.reset();
+            // One radius: any point's value is the new points' (a field's
+            // new points take their own, and its function is not asked here).
+            const Point corner{frame_.box().x0, frame_.box().y0};
+            const double new_value = varying_field() ? 0.0 : radii->value_at(corner);
+            if (darts && !darts->hold_fixed(at, values, *radii, new_value)) darts.reset();
             if (!darts) {
                 jones->reserve(points + at.size());
                 jones->adopt(at, identity_order(at.size()).data(), &values, Poll{});
