@@ -202,6 +202,33 @@ START_TEST(dart_stage_opens_around_fixed_points) {
 }
 END_TEST
 
+START_TEST(many_fixed_points_leave_the_jones_loop_alone) {
+    // At R 0.05 the dart grid has 29 x 29 cells: up to 29 fixed points the
+    // stage holds them; past that it declines (their insertion after the
+    // others' mesh would walk across it), and the run is the Jones loop's
+    // alone, byte for byte.
+    for (const std::size_t n : {std::size_t{20}, std::size_t{40}}) {
+        std::vector<pds::Point> at;
+        std::vector<double> c;
+        pds::Rng rng(3);
+        for (std::size_t k = 0; k < n; ++k) {
+            at.push_back(pds::Point{rng.next_double(), rng.next_double()});
+            c.push_back(0.01);
+        }
+        pds::Sampler darts(0.05, 8), loop(0.05, 8);
+        darts.set_fixed(at, c);
+        loop.set_fixed(at, c);
+        loop.skip_dart_stage();
+        std::size_t added = 0;
+        darts.run(1, &added);
+        ck_assert_msg(darts.in_dart_stage() == (n == 20), "%zu fixed points: in the dart stage %d", n,
+                      darts.in_dart_stage());
+        const std::vector<double> a = run_in_calls(darts, 0), b = run_in_calls(loop, 0);
+        ck_assert_msg(same(a, b) == (n == 40), "%zu fixed points: the Jones loop's points %d", n, same(a, b));
+    }
+}
+END_TEST
+
 START_TEST(count_mode_and_refine_hand_over_from_the_darts) {
     // Count mode lowers the radius (the clearances scale with it): exactly n
     // points, clear at the last radius, the same in calls of 777.
@@ -280,6 +307,7 @@ Suite* dart_stage_fixed_suite() {
     tcase_add_test(t, plain_grid_disks_cover_exactly_the_points_inside);
     tcase_add_test(t, dart_stage_opens_around_fixed_points);
     tcase_add_test(t, count_mode_and_refine_hand_over_from_the_darts);
+    tcase_add_test(t, many_fixed_points_leave_the_jones_loop_alone);
     tcase_add_test(t, reference_around_disks_is_saturated);
     tcase_add_loop_test(t, law_around_fixed_disks, 0, 2);
     suite_add_tcase(s, t);
