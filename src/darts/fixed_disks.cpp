@@ -39,10 +39,8 @@ bool FixedDisks::lay(const DiskGrid& grid, std::size_t budget, const Inside& ins
                 // centre (with slack: listing a disk too many is only
                 // slower).
                 const double hx = 0.5 * grid.side_x, hy = 0.5 * grid.side_y;
-                const double x0 = box.x0 + static_cast<double>(col) * grid.side_x;
-                const double y0 = box.y0 + static_cast<double>(row) * grid.side_y;
-                const double ex = std::max(std::fabs(c.x - (x0 + hx)) - hx, 0.0);
-                const double ey = std::max(std::fabs(c.y - (y0 + hy)) - hy, 0.0);
+                const double ex = std::max(std::fabs(c.x - (grid.cell_x0(col) + hx)) - hx, 0.0);
+                const double ey = std::max(std::fabs(c.y - (grid.cell_y0(row) + hy)) - hy, 0.0);
                 const double reach = r * (1.0 + 0x1.0p-20) + 0x1.0p-20 * (hx + hy);
                 if (ex * ex + ey * ey <= reach * reach) pairs_.push_back(std::uint64_t{cell} << 32 | k);
             }
@@ -82,8 +80,7 @@ bool FixedDisks::build(const DiskGrid& grid, const std::vector<Point>& centres, 
     return lay(grid, budget, [&](std::int64_t col, std::int64_t row, std::size_t k) {
         const double cover = radii[k] - margin;
         if (!(cover > 0.0)) return false;
-        const double x0 = grid.box.x0 + static_cast<double>(col) * grid.side_x;
-        const double y0 = grid.box.y0 + static_cast<double>(row) * grid.side_y;
+        const double x0 = grid.cell_x0(col), y0 = grid.cell_y0(row);
         // The farthest corner.
         const double ax = std::max(std::fabs(x0 - centres[k].x), std::fabs(x0 + grid.side_x - centres[k].x));
         const double ay = std::max(std::fabs(y0 - centres[k].y), std::fabs(y0 + grid.side_y - centres[k].y));

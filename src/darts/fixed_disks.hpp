@@ -33,6 +33,9 @@ struct DiskGrid {
     Box box;
     std::size_t cols, rows;
     double side_x, side_y;
+    // The lower left corner of cell (col, row).
+    double cell_x0(std::int64_t col) const { return box.x0 + static_cast<double>(col) * side_x; }
+    double cell_y0(std::int64_t row) const { return box.y0 + static_cast<double>(row) * side_y; }
 };
 
 class FixedDisks {

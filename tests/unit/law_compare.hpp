@@ -48,22 +48,29 @@ struct Sample {
     std::vector<double> count, close_pairs, to_earlier;
 };
 
+// The mean, over the points after the first, of the distance to the nearest
+// point placed before it (by `distance`; 0 for fewer than two points).
+template <class Distance>
+double mean_distance_to_earlier(const std::vector<pds::Point>& p, const Distance& distance) {
+    double earlier = 0;
+    for (std::size_t i = 1; i < p.size(); ++i) {
+        double nearest2 = INFINITY;
+        for (std::size_t j = 0; j < i; ++j) nearest2 = std::min(nearest2, distance.d2(p[i], p[j]));
+        earlier += std::sqrt(nearest2);
+    }
+    return p.size() > 1 ? earlier / static_cast<double>(p.size() - 1) : 0.0;
+}
+
 // Adds one pattern, its pairs measured by `distance` (Plane or Torus).
 template <class Distance>
 void add(Sample& s, const oracle::Pattern& t, const Distance& distance) {
-    double n = 0, earlier = 0;
-    for (std::size_t i = 0; i < t.p.size(); ++i) {
-        double nearest2 = INFINITY;
-        for (std::size_t j = 0; j < t.p.size(); ++j) {
-            const double d2 = distance.d2(t.p[i], t.p[j]);
-            if (j < i) nearest2 = std::min(nearest2, d2);
-            if (j > i && d2 < 1.44 * t.r[i] * t.r[i]) ++n;
-        }
-        if (i > 0) earlier += std::sqrt(nearest2);
-    }
+    double n = 0;
+    for (std::size_t i = 0; i < t.p.size(); ++i)
+        for (std::size_t j = i + 1; j < t.p.size(); ++j)
+            if (distance.d2(t.p[i], t.p[j]) < 1.44 * t.r[i] * t.r[i]) ++n;
     s.count.push_back(static_cast<double>(t.p.size()));
     s.close_pairs.push_back(n);
-    s.to_earlier.push_back(t.p.size() > 1 ? earlier / static_cast<double>(t.p.size() - 1) : 0.0);
+    s.to_earlier.push_back(mean_distance_to_earlier(t.p, distance));
 }
 
 inline double mean(const std::vector<double>& v) {

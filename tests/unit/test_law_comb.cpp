@@ -59,19 +59,13 @@ struct Statistics {
     std::vector<double> count, close_pairs, to_earlier;
 
     void add(const std::vector<pds::Point>& p) {
-        double close = 0, earlier = 0;
-        for (std::size_t i = 0; i < p.size(); ++i) {
-            double nearest = INFINITY;
-            for (std::size_t j = 0; j < p.size(); ++j) {
-                const double d = std::hypot(p[i].x - p[j].x, p[i].y - p[j].y);
-                if (j < i) nearest = std::min(nearest, d);
-                if (j > i && d < 1.1 * kRadius) ++close;
-            }
-            if (i > 0) earlier += nearest / kRadius;
-        }
+        double close = 0;
+        for (std::size_t i = 0; i < p.size(); ++i)
+            for (std::size_t j = i + 1; j < p.size(); ++j)
+                if (std::hypot(p[i].x - p[j].x, p[i].y - p[j].y) < 1.1 * kRadius) ++close;
         count.push_back(static_cast<double>(p.size()));
         close_pairs.push_back(close);
-        to_earlier.push_back(p.size() > 1 ? earlier / static_cast<double>(p.size() - 1) : 0.0);
+        to_earlier.push_back(law::mean_distance_to_earlier(p, oracle::Plane{pds::Box{0, 0, 1, 1}}) / kRadius);
     }
 };
 
