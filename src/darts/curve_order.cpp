@@ -108,8 +108,9 @@ const std::uint32_t* CurveOrder::order(const std::vector<Point>& points, unsigne
     key_.resize(n);
     tmp_key_.resize(n);
     counts_.resize(kCounts);
-    for (std::size_t k = 0; k < first; ++k) order_[k] = static_cast<std::uint32_t>(k);
-    sort(points, first, order_.data() + first, key_.data(), tmp_order_.data(), tmp_key_.data(), counts_.data(),
+    // The fixed points among themselves, then the others.
+    sort(points, 0, first, order_.data(), key_.data(), tmp_order_.data(), tmp_key_.data(), counts_.data(), threads);
+    sort(points, first, n, order_.data() + first, key_.data(), tmp_order_.data(), tmp_key_.data(), counts_.data(),
          threads);
     return order_.data();
 }
@@ -119,14 +120,14 @@ std::vector<std::uint32_t> CurveOrder::fresh_order(const std::vector<Point>& poi
     std::vector<std::uint32_t> order(n), tmp_order(n);
     std::vector<std::uint64_t> key(n), tmp_key(n);
     std::vector<std::uint32_t> counts(kCounts);
-    sort(points, 0, order.data(), key.data(), tmp_order.data(), tmp_key.data(), counts.data(), 1);
+    sort(points, 0, n, order.data(), key.data(), tmp_order.data(), tmp_key.data(), counts.data(), 1);
     return order;
 }
 
-void CurveOrder::sort(const std::vector<Point>& points, std::size_t first, std::uint32_t* order, std::uint64_t* key,
-                      std::uint32_t* tmp_order, std::uint64_t* tmp_key, std::uint32_t* counts,
+void CurveOrder::sort(const std::vector<Point>& points, std::size_t first, std::size_t last, std::uint32_t* order,
+                      std::uint64_t* key, std::uint32_t* tmp_order, std::uint64_t* tmp_key, std::uint32_t* counts,
                       unsigned threads) const {
-    const std::size_t n = points.size() - first;
+    const std::size_t n = last - first;
     std::size_t ends[64];
     std::size_t rounds = 0;
     for (std::size_t end = n; end > 0; end = end > 256 ? end / 4 : 0) ends[rounds++] = end;

@@ -7,7 +7,8 @@
 // fall inside the triangulation of the earlier ones, near where the last one
 // went, so walks are short and flips stay local. The points are in random
 // order already (the order they were added in), so the rounds are prefixes:
-// ends n, n/4, n/16, ... down to 256 or fewer points.
+// ends n, n/4, n/16, ... down to 256 or fewer points. Fixed points, in the
+// user's order, come first in rounds of their own.
 //
 // The scratch is reserved with the points, so the hand-over never allocates.
 #ifndef PDS_CURVE_ORDER_HPP
@@ -37,7 +38,9 @@ public:
     // The indices of points in insertion order, in the reserved scratch
     // (valid until the next call); requires room for points.size(). Large
     // sets are keyed and sorted on up to `threads` threads (the same order).
-    // The first `first` points (fixed points) keep their places, first.
+    // The first `first` points (fixed points) come first, in rounds and
+    // along the curve among themselves: inserted after the others' mesh is
+    // built, or into the ghosts alone, each walk is then short too.
     const std::uint32_t* order(const std::vector<Point>& points, unsigned threads = 1, std::size_t first = 0);
     // The same order in fresh scratch (for queries; allocates).
     std::vector<std::uint32_t> fresh_order(const std::vector<Point>& points) const;
@@ -50,11 +53,12 @@ private:
     static constexpr unsigned kMaxWorkers = 8;
     static constexpr int kDigit = 11;  // bits per radix pass
     static constexpr std::size_t kCounts = kMaxWorkers << kDigit;
-    // Sorts points[first..] into order[0, n - first) (their indices in
-    // points); the other three arrays are scratch of as many entries each,
-    // counts of kCounts.
-    void sort(const std::vector<Point>& points, std::size_t first, std::uint32_t* order, std::uint64_t* key,
-              std::uint32_t* tmp_order, std::uint64_t* tmp_key, std::uint32_t* counts, unsigned threads) const;
+    // Sorts points[first, last) into order[0, last - first) (their indices
+    // in points); the other three arrays are scratch of as many entries
+    // each, counts of kCounts.
+    void sort(const std::vector<Point>& points, std::size_t first, std::size_t last, std::uint32_t* order,
+              std::uint64_t* key, std::uint32_t* tmp_order, std::uint64_t* tmp_key, std::uint32_t* counts,
+              unsigned threads) const;
 
     Box box_{0.0, 0.0, 1.0, 1.0};
     double inv_side_x_ = 1.0, inv_side_y_ = 1.0;

@@ -118,11 +118,7 @@ public:
     // must not be used, for a grid that keeps only its taken cells, for
     // disks whose bounding boxes span more than 4 grids plus 2^20 cells in
     // all (the Jones loop alone is cheaper there, as in the space-time
-    // process), and for more fixed points than the square root of the
-    // grid's cells: the hand-over inserts them after the others' mesh,
-    // each walk starting at the one before, so scattered fixed points walk
-    // across the mesh (100,000 of them around 2.7 million points took 1.75
-    // times the Jones loop alone). Throws std::bad_alloc.
+    // process). Throws std::bad_alloc.
     bool hold_fixed(const std::vector<Point>& points, const std::vector<double>& values, const PointRadii& radii,
                     double new_value) override {
         if constexpr (std::is_same_v<Grid, DartGrid<SparseCells>>) {
@@ -132,9 +128,6 @@ public:
             std::vector<double> clearances(points.size());
             for (std::size_t k = 0; k < points.size(); ++k) clearances[k] = radii.radius_of(values[k]);
             const DiskGrid cells = grid_.disk_grid();
-            if (static_cast<double>(points.size()) * static_cast<double>(points.size()) >
-                static_cast<double>(cells.cols) * static_cast<double>(cells.rows))
-                return false;
             FixedDisks disks;
             if (!disks.build(cells, points, clearances, 4 * cells.cols * cells.rows + (std::size_t{1} << 20)))
                 return false;
@@ -197,7 +190,7 @@ public:
         grid_.release();
         queue_.end();
         if (fixed_) fixed_->disks = FixedDisks{};
-        return curve_.order(points_, 1, fixed_count());  // the fixed points first, in their order
+        return curve_.order(points_, 1, fixed_count());  // the fixed points first
     }
 
 private:

@@ -2,7 +2,8 @@
 // (darts/curve_order.hpp): the Hilbert keys walk every grid cell once, each
 // step to a neighbouring cell, and equal those of a level-by-level evaluation
 // of the same curve; the order is a permutation made of BRIO rounds, each
-// sorted by key, ties kept in point order, the same on any number of threads.
+// sorted by key, ties kept in point order, the same on any number of threads;
+// fixed points first, in rounds of their own.
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
@@ -43,6 +44,28 @@ std::uint64_t side_for(std::size_t cols, std::size_t rows) {
     std::uint64_t side = 1;
     while (side < cols || side < rows) side *= 2;
     return side;
+}
+
+// Checks that order[first, last) holds the indices first .. last - 1 in BRIO
+// rounds (prefixes of the range, ends last - first, /4, ... down to 256 or
+// fewer), each sorted by key, ties in point order.
+void check_rounds(const pds::CurveOrder& curve, const std::vector<pds::Point>& points, const std::uint32_t* order,
+                  std::size_t first, std::size_t last) {
+    std::vector<std::size_t> ends;
+    for (std::size_t end = last - first; end > 0; end = end > 256 ? end / 4 : 0) ends.push_back(first + end);
+    std::reverse(ends.begin(), ends.end());
+    std::size_t begin = first;
+    for (std::size_t end : ends) {
+        for (std::size_t k = begin; k < end; ++k) {
+            ck_assert_msg(order[k] >= begin && order[k] < end, "[%zu, %zu): entry %zu is not from its round", first,
+                          last, k);
+            if (k == begin) continue;
+            const std::uint64_t a = curve.key(points[order[k - 1]]), b = curve.key(points[order[k]]);
+            ck_assert_msg(a < b || (a == b && order[k - 1] < order[k]), "[%zu, %zu): entries %zu, %zu out of order",
+                          first, last, k - 1, k);
+        }
+        begin = end;
+    }
 }
 
 }  // namespace
@@ -106,19 +129,25 @@ START_TEST(order_is_rounds_sorted_by_key) {
         curve.reserve(n);
         const std::uint32_t* order = curve.order(points);
         ck_assert(curve.fresh_order(points) == std::vector<std::uint32_t>(order, order + n));
-        std::vector<std::size_t> ends;
-        for (std::size_t end = n; end > 0; end = end > 256 ? end / 4 : 0) ends.push_back(end);
-        std::reverse(ends.begin(), ends.end());
-        std::size_t begin = 0;
-        for (std::size_t end : ends) {
-            for (std::size_t k = begin; k < end; ++k) {
-                ck_assert_msg(order[k] >= begin && order[k] < end, "n %zu: entry %zu is not from its round", n, k);
-                if (k == begin) continue;
-                const std::uint64_t a = curve.key(points[order[k - 1]]), b = curve.key(points[order[k]]);
-                ck_assert_msg(a < b || (a == b && order[k - 1] < order[k]), "n %zu: entries %zu, %zu out of order", n,
-                              k - 1, k);
-            }
-            begin = end;
+        check_rounds(curve, points, order, 0, n);
+    }
+}
+END_TEST
+
+START_TEST(fixed_points_come_first_in_rounds_of_their_own) {
+    // Fixed points are inserted after the others' mesh is built: sorted
+    // among themselves, each walk is short wherever they lie.
+    const std::size_t n = 9000;
+    pds::CurveOrder curve(pds::Box{0.0, 0.0, 1.0, 1.0}, 0.01, 0.01, 100, 100);
+    pds::Rng rng(17);
+    std::vector<pds::Point> points(n);
+    for (pds::Point& p : points) p = pds::Point{rng.next_double(), rng.next_double()};
+    curve.reserve(n);
+    for (std::size_t first : {std::size_t{0}, std::size_t{1}, std::size_t{200}, std::size_t{3000}, n}) {
+        for (unsigned threads : {1u, 3u}) {
+            const std::uint32_t* order = curve.order(points, threads, first);
+            check_rounds(curve, points, order, 0, first);
+            check_rounds(curve, points, order, first, n);
         }
     }
 }
@@ -149,6 +178,7 @@ Suite* curve_order_suite() {
     tcase_add_test(tc, keys_walk_a_square_grid_cell_by_neighbouring_cell);
     tcase_add_test(tc, keys_equal_the_level_by_level_curve);
     tcase_add_test(tc, order_is_rounds_sorted_by_key);
+    tcase_add_test(tc, fixed_points_come_first_in_rounds_of_their_own);
     tcase_add_test(tc, order_on_several_threads_is_the_one_thread_order);
     suite_add_tcase(s, tc);
     return s;

@@ -202,30 +202,35 @@ START_TEST(dart_stage_opens_around_fixed_points) {
 }
 END_TEST
 
-START_TEST(many_fixed_points_leave_the_jones_loop_alone) {
-    // At R 0.05 the dart grid has 29 x 29 cells: up to 29 fixed points the
-    // stage holds them; past that it declines (their insertion after the
-    // others' mesh would walk across it), and the run is the Jones loop's
-    // alone, byte for byte.
-    for (const std::size_t n : {std::size_t{20}, std::size_t{40}}) {
-        std::vector<pds::Point> at;
-        std::vector<double> c;
-        pds::Rng rng(3);
-        for (std::size_t k = 0; k < n; ++k) {
-            at.push_back(pds::Point{rng.next_double(), rng.next_double()});
-            c.push_back(0.01);
-        }
-        pds::Sampler darts(0.05, 8), loop(0.05, 8);
-        darts.set_fixed(at, c);
-        loop.set_fixed(at, c);
-        loop.skip_dart_stage();
-        std::size_t added = 0;
-        darts.run(1, &added);
-        ck_assert_msg(darts.in_dart_stage() == (n == 20), "%zu fixed points: in the dart stage %d", n,
-                      darts.in_dart_stage());
-        const std::vector<double> a = run_in_calls(darts, 0), b = run_in_calls(loop, 0);
-        ck_assert_msg(same(a, b) == (n == 40), "%zu fixed points: the Jones loop's points %d", n, same(a, b));
+START_TEST(many_fixed_points_stay_in_the_dart_stage) {
+    // 400 scattered fixed points over a grid of about 141 x 141 cells: the
+    // stage holds them (their insertion after the others' mesh walks along
+    // the curve, not across the mesh); every clearance is kept, the pattern
+    // is maximal and the same in calls of 777, and not the Jones loop's.
+    std::vector<pds::Point> at;
+    std::vector<double> c;
+    pds::Rng rng(3);
+    for (std::size_t k = 0; k < 400; ++k) {
+        at.push_back(pds::Point{rng.next_double(), rng.next_double()});
+        c.push_back(k % 2 ? 0.005 : 0.02);
     }
+    const auto sampler = [&] {
+        pds::Sampler s(0.01, 8);
+        s.set_fixed(at, c);
+        return s;
+    };
+    pds::Sampler darts = sampler(), calls = sampler(), loop = sampler();
+    loop.skip_dart_stage();
+    std::size_t added = 0;
+    darts.run(1, &added);
+    ck_assert_msg(darts.in_dart_stage(), "400 fixed points: not in the dart stage");
+    const std::vector<double> a = run_in_calls(darts, 0);
+    for (std::size_t i = at.size(); i < a.size() / 2; ++i)
+        for (std::size_t k = 0; k < at.size(); ++k)
+            if (pds::compare_distance(pds::Point{a[2 * i], a[2 * i + 1]}, at[k], c[k]) < 0)
+                ck_abort_msg("point %zu inside fixed point %zu's clearance", i, k);
+    ck_assert(same(a, run_in_calls(calls, 777)));
+    ck_assert(!same(a, run_in_calls(loop, 0)));
 }
 END_TEST
 
@@ -307,7 +312,7 @@ Suite* dart_stage_fixed_suite() {
     tcase_add_test(t, plain_grid_disks_cover_exactly_the_points_inside);
     tcase_add_test(t, dart_stage_opens_around_fixed_points);
     tcase_add_test(t, count_mode_and_refine_hand_over_from_the_darts);
-    tcase_add_test(t, many_fixed_points_leave_the_jones_loop_alone);
+    tcase_add_test(t, many_fixed_points_stay_in_the_dart_stage);
     tcase_add_test(t, reference_around_disks_is_saturated);
     tcase_add_loop_test(t, law_around_fixed_disks, 0, 2);
     suite_add_tcase(s, t);
