@@ -24,8 +24,12 @@
  * hand-over builds the mesh of the other points whole, then inserts them.
  * Fixed points without threads re-pinned for 1.11.0, whose single-thread
  * process opens with darts kept out of the clearances (before, the Jones
- * loop alone), and pinned in calls of 97 points too.
+ * loop alone), and pinned in calls of 97 points too. Many fixed points
+ * pinned from 1.12.0 on, whose hand-over inserts them along the curve
+ * (before, in the caller's order; without threads, more than about the
+ * square root of the points ran the Jones loop alone).
  */
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -149,8 +153,9 @@ END_TEST
  * fixed points at R 0.01, seed 5; each by the default process and by the
  * parallel one (pds_set_threads), which is the same on 1, 2 and 3 threads,
  * whole and in calls of 97 points (the default process's too, with fixed
- * points). */
-enum { THE_L, TORUS, FIXED };
+ * points); and 64 scattered fixed points at R 0.01, seed 6 (clearances R
+ * and 0.02 in turn). */
+enum { THE_L, TORUS, FIXED, MANY_FIXED };
 struct golden_domain {
     int kind;
     size_t chunk;
@@ -173,6 +178,10 @@ static const struct golden_domain domain_cases[] = {
     {FIXED, 0, 2, 6201, 0xa4ef8e808c96626cull},
     {FIXED, 97, 3, 6201, 0xa4ef8e808c96626cull},
     {FIXED, 0, 4, 6201, 0xa4ef8e808c96626cull},
+    {MANY_FIXED, 0, 0, 6796, 0xf5585b2ad66df151ull},
+    {MANY_FIXED, 97, 0, 6796, 0xf5585b2ad66df151ull},
+    {MANY_FIXED, 0, 2, 6847, 0x55dff8448ae64d64ull},
+    {MANY_FIXED, 97, 3, 6847, 0x55dff8448ae64d64ull},
 };
 
 START_TEST(pinned_domain_outputs)
@@ -189,6 +198,16 @@ START_TEST(pinned_domain_outputs)
         ck_assert_int_eq(pds_set_periodic(s, 1), 0);
     } else if (g->kind == FIXED) {
         ck_assert_int_eq(pds_set_fixed(s, fixed_xy, fixed_c, 3), 0);
+    } else if (g->kind == MANY_FIXED) {
+        double xy[128], c[64];
+        int k;
+        for (k = 0; k < 64; ++k) {
+            /* Scattered: the golden ratio's sequences, in no spatial order. */
+            xy[2 * k] = fmod(0.1 + 0.6180339887 * k, 1.0);
+            xy[2 * k + 1] = fmod(0.2 + 0.7548776662 * k, 1.0);
+            c[k] = k % 2 ? 0.02 : 0.0;
+        }
+        ck_assert_int_eq(pds_set_fixed(s, xy, c, 64), 0);
     } else {
         ck_assert_int_eq(pds_set_polygon(s, UNIT_L.xy, UNIT_L.ends, UNIT_L.nrings), 0);
     }
