@@ -57,6 +57,25 @@ double gradient(void*, double x, double) { return 0.06 * (1.0 + x); }
 
 // Runs configured as c around the law disks against saturated dart
 // throwing in the box less the disks, under the same radius rule.
+// The mean arrival time (index / count) of the points in the band within
+// their own radius of a clearance circle: darts kept out of that band by
+// mistake leave it to the Jones loop, later, which the counts and distances
+// above barely see (the Jones loop fills the band all the same).
+double band_arrival(const oracle::Pattern& t) {
+    double sum = 0;
+    std::size_t in_band = 0;
+    for (std::size_t i = 0; i < t.p.size(); ++i)
+        for (std::size_t k = 0; k < kLawFixed.size(); ++k) {
+            const double dx = t.p[i].x - kLawFixed[k].x, dy = t.p[i].y - kLawFixed[k].y;
+            if (std::sqrt(dx * dx + dy * dy) - kLawClearance[k] < t.r[i]) {
+                sum += (static_cast<double>(i) + 0.5) / static_cast<double>(t.p.size());
+                ++in_band;
+                break;
+            }
+        }
+    return in_band ? sum / static_cast<double>(in_band) : 0.5;
+}
+
 template <class Radius>
 void compare_around_disks(const law::Config& c, const Radius& radius) {
     oracle::AroundDisks rule;
@@ -65,27 +84,36 @@ void compare_around_disks(const law::Config& c, const Radius& radius) {
     rule.radius = kLawClearance;
     auto reference = oracle::dart_throwing(rule, radius);
     law::Sample sampler, darts;
+    std::vector<double> band_sampler, band_darts;
     std::size_t from_darts = 0, total = 0;
     for (int seed = 1; seed <= c.runs; ++seed) {
         pds::Sampler s(c.field ? 1.0 : c.r, static_cast<std::uint64_t>(seed));
         law::configure(s, c);
         s.set_fixed(kLawFixed, kLawClearance);
         const oracle::Pattern a = law::run_to_the_end(s, &from_darts);
+        const oracle::Pattern b = reference.run(static_cast<std::uint64_t>(1000000 + seed));
         total += a.p.size();
         law::add(sampler, a, rule);
-        law::add(darts, reference.run(static_cast<std::uint64_t>(1000000 + seed)), rule);
+        law::add(darts, b, rule);
+        band_sampler.push_back(band_arrival(a));
+        band_darts.push_back(band_arrival(b));
     }
+    const double z_band = law::z_score(band_sampler, band_darts);
     law::assert_stages(c, from_darts, total);
     if (std::getenv("PDS_LAW_PRINT"))
         std::printf("around disks%s: N %.4f / %.4f (z %.2f), close pairs %.4f / %.4f (z %.2f), to earlier %.5f / "
-                    "%.5f (z %.2f), KS %.2f, darts %.3f\n",
+                    "%.5f (z %.2f), KS %.2f, band arrival %.4f / %.4f (z %.2f), darts %.3f\n",
                     c.field ? ", a field" : "", law::mean(sampler.count), law::mean(darts.count),
                     law::z_score(sampler.count, darts.count), law::mean(sampler.close_pairs),
                     law::mean(darts.close_pairs), law::z_score(sampler.close_pairs, darts.close_pairs),
                     law::mean(sampler.to_earlier), law::mean(darts.to_earlier),
                     law::z_score(sampler.to_earlier, darts.to_earlier), law::ks_scaled(sampler.count, darts.count),
+                    law::mean(band_sampler), law::mean(band_darts), z_band,
                     static_cast<double>(from_darts) / static_cast<double>(total));
     law::assert_same_law(sampler, darts);
+    ck_assert_msg(std::fabs(z_band) < 4.5,
+                  "arrival in the band around the clearances: sampler %.4f, dart throwing %.4f (z = %.2f)",
+                  law::mean(band_sampler), law::mean(band_darts), z_band);
 }
 
 }  // namespace
@@ -225,7 +253,7 @@ START_TEST(many_fixed_points_stay_in_the_dart_stage) {
     darts.run(1, &added);
     ck_assert_msg(darts.in_dart_stage(), "400 fixed points: not in the dart stage");
     const std::vector<double> a = run_in_calls(darts, 0);
-    for (std::size_t i = at.size(); i < a.size() / 2; ++i)
+    for (std::size_t i = 0; i < a.size() / 2; ++i)
         for (std::size_t k = 0; k < at.size(); ++k)
             if (pds::compare_distance(pds::Point{a[2 * i], a[2 * i + 1]}, at[k], c[k]) < 0)
                 ck_abort_msg("point %zu inside fixed point %zu's clearance", i, k);
