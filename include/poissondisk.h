@@ -505,10 +505,10 @@ PDS_API int pds_set_mask(pds_sampler *s, size_t w, size_t h, const unsigned char
  * without them (since 1.11; see pds_set_radius_map), on one thread either
  * way. A polygon spread thin over its box (islands far apart) and
  * clearances whose boxes together span many times the domain's box run
- * the Jones loop from the first point, with threads or not. Many fixed
- * points (up to as many as the points) open with darts too (since 1.12;
- * before, without threads, more than about the square root of the points
- * ran the Jones loop alone).
+ * the Jones loop from the first point, with threads or not. Many
+ * scattered fixed points open with darts too, inserted at the hand-over
+ * along a space-filling curve (since 1.12; before, without threads, more
+ * than about the square root of the points ran the Jones loop alone).
  * pds_free_area counts the clearances once a run has started. Clearances
  * that cover the domain leave a maximal pattern with no point (pds_run and
  * pds_verify return PDS_DONE, pds_free_area 0); in count mode the radius
