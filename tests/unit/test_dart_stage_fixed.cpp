@@ -7,7 +7,8 @@
 // patterns keep every clearance, are maximal, and do not depend on how the
 // run is split; count mode and a refine hand over from it; and whole runs
 // around fixed disks, with one radius and with a field, follow the law of
-// saturated dart throwing in the box less the disks.
+// saturated dart throwing in the box less the disks, the arrival time of the
+// points near the circles included.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -55,12 +56,10 @@ const std::vector<double> kLawClearance = {0.2, 0.15, 0.08, 0.06};
 
 double gradient(void*, double x, double) { return 0.06 * (1.0 + x); }
 
-// Runs configured as c around the law disks against saturated dart
-// throwing in the box less the disks, under the same radius rule.
 // The mean arrival time (index / count) of the points in the band within
 // their own radius of a clearance circle: darts kept out of that band by
 // mistake leave it to the Jones loop, later, which the counts and distances
-// above barely see (the Jones loop fills the band all the same).
+// of law_compare.hpp barely see (the Jones loop fills the band all the same).
 double band_arrival(const oracle::Pattern& t) {
     double sum = 0;
     std::size_t in_band = 0;
@@ -76,6 +75,8 @@ double band_arrival(const oracle::Pattern& t) {
     return in_band ? sum / static_cast<double>(in_band) : 0.5;
 }
 
+// Runs configured as c around the law disks against saturated dart
+// throwing in the box less the disks, under the same radius rule.
 template <class Radius>
 void compare_around_disks(const law::Config& c, const Radius& radius) {
     oracle::AroundDisks rule;
