@@ -463,7 +463,6 @@ check-alloc: $(ALLOC_BIN)
 	$(ALLOC_BIN) polygon
 	$(ALLOC_BIN) mask
 	$(ALLOC_BIN) field
-	$(ALLOC_BIN) map
 	$(ALLOC_BIN) threads
 	$(ALLOC_BIN) polygon-threads
 	$(ALLOC_BIN) torus-threads

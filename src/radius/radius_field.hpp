@@ -59,8 +59,6 @@ public:
     // the radius radius_of(v) in that frame. Infinite for a function, whose
     // values are known only where it is asked. See radius_field.cpp.
     double map_count_bound(const Box& box, const std::function<double(double)>& radius_of) const;
-    // A map's pixels (0 for a function): map_count_bound's cost.
-    std::size_t map_pixels() const { return fn_ != nullptr ? 0 : w_ * h_; }
 
     // A user function's field calls user code for every value.
     bool calls_user() const { return fn_ != nullptr && !constant(); }

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -62,24 +61,6 @@ std::size_t Sampler::field_count_bound() const {
     const double map = field_->map_count_bound(frame_.box(), [&](double v) { return radii.radius_of(v); });
     const double cap = static_cast<double>(Frame::max_points()) + 1.0;
     return map < cap ? std::min(oler, static_cast<std::size_t>(map)) : oler;
-}
-
-std::size_t Sampler::field_first_room(std::size_t bound) const {
-    // A map's own bound, over a rectangle or the torus, is reserved at once,
-    // as a constant radius reserves Oler's. Grown step by step instead, the
-    // arrays free blocks the allocator had mapped on their own, which with
-    // glibc raises its threshold for such blocks: later blocks come from the
-    // main heap, whose holes stay resident (a map at 10^6 points peaked at
-    // 169 MB instead of 122). The room then grows with the run for a
-    // function (its values are known only where asked), a polygon or mask
-    // (its box may hold far more than the pattern), and a map of more
-    // pixels than Oler's bound (working its bound out would cost more than
-    // the points).
-    if (shape_ || field_->calls_user() || field_->map_pixels() > bound) return 1;
-    const PointRadii radii(*field_, frame_);
-    const double map = field_->map_count_bound(frame_.box(), [&](double v) { return radii.radius_of(v); });
-    const std::size_t cap = std::min(bound, Frame::max_points());
-    return map < static_cast<double>(cap) ? std::max<std::size_t>(1, static_cast<std::size_t>(map)) : cap;
 }
 
 void Sampler::forget_stages() {
@@ -311,9 +292,8 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
     // pattern by any factor (one small pixel in a map); a map's own bound
     // (field_count_bound) is used when it is smaller. It is judged at the
     // first point, as a constant radius is; afterwards the pattern itself
-    // says whether it is complete. Memory is not reserved for that bound:
-    // for a map's own where it is cheap (field_first_room), otherwise it
-    // grows with the run (geometrically, O(1) amortized); a pattern that
+    // says whether it is complete. Memory is not reserved for that bound but
+    // grows with the run (geometrically, O(1) amortized), and a pattern that
     // truly outgrows the index space stops there (PDS_ERANGE, points kept).
     const bool grows = varying_field();
     const std::size_t bound = grows ? field_count_bound() : smallest_frame().count_bound_points();
@@ -327,17 +307,7 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
         const std::size_t asked = n != 0 ? 0 : max_new == 0 ? bound : std::min(max_new, bound);
         if (asked > Frame::max_points() && !maximal())
             throw LimitError(Limit::too_many_points, smallest_frame().user_radius(), JudgedRadius::field_smallest);
-        if (n == 0) {
-            // Where the address space refuses a map's room (a bound far
-            // above the pattern), it grows as for other fields.
-            try {
-                prepare(field_first_room(bound));
-            } catch (const std::bad_alloc&) {
-                prepare(n + 1);
-            }
-        } else {
-            prepare(n + 1);
-        }
+        prepare(n + 1);
     } else {
         const std::size_t whole = count_target_ != 0 ? std::max(count_target_, n) : std::max(bound, n) + 1;
         const std::size_t total = max_new != 0 && max_new < whole - n ? n + max_new : whole;

@@ -177,9 +177,6 @@ private:
     // A varying field's bound on the size of any pattern (the smaller of
     // Oler's at rmin and the map's own), saturated as count_bound_points().
     std::size_t field_count_bound() const;
-    // The room a varying field's run reserves before its first point, at
-    // least 1 (sampler.cpp); `bound` is field_count_bound().
-    std::size_t field_first_room(std::size_t bound) const;
     Stage& stage() { return darts_ ? static_cast<Stage&>(*darts_) : *jones_; }
     const Stage& stage() const { return darts_ ? static_cast<const Stage&>(*darts_) : *jones_; }
     // Judges the limits for a call that may bring the total to `points`,

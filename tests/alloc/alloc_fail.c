@@ -20,10 +20,8 @@
  * "alloc_fail small" tries every k of a ~300-point sequence. "polygon", "mask"
  * and "field" run the small sequence in a domain users have (1.4): a star
  * with a hole (50 vertices), an 8 x 8 mask, and that star with a radius
- * function; "map" a radius map over the rectangle, which reserves its own
- * bound at the first point (and grows from one point where that fails);
- * setting the domain (and the field) is one more call whose allocations
- * fail in turn. "threads" runs the parallel process on 2 threads
+ * function; setting the domain (and the field) is one more call whose
+ * allocations fail in turn. "threads" runs the parallel process on 2 threads
  * in the rectangle, "polygon-threads" in the star, "torus-threads" on the
  * torus, "fixed-threads" in the star with fixed points, "fixed-large" the
  * same with points enough for the weighted mesh built whole;
@@ -69,7 +67,7 @@ struct config {
     int periodic; /* the torus: copies allocate as points are added */
     int shape;    /* the domain: the rectangle, a polygon, a mask, a polygon with a field */
 };
-enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS, POLYGON_THREADS, FIXED_THREADS, FIXED, MAP };
+enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS, POLYGON_THREADS, FIXED_THREADS, FIXED };
 static const struct config kSmall = {"small", 0.05, 0.035, 100, 50, 1, 0, RECTANGLE};
 static const struct config kLarge = {"large", 0.01, 0.007, 2000, 500, 0, 0, RECTANGLE};
 static const struct config kTorus = {"torus", 0.05, 0.035, 100, 50, 1, 1, RECTANGLE};
@@ -79,8 +77,6 @@ static const struct config kPolygon = {"polygon", 0.05, 0.035, 100, 50, 0, 0, PO
 static const struct config kMask = {"mask", 0.05, 0.035, 100, 50, 0, 0, MASK};
 /* The field's rmax is 0.06: a refine to 0.045 scales every radius by 3/4. */
 static const struct config kField = {"field", 0.06, 0.045, 100, 50, 0, 0, POLYGON_FIELD};
-/* A 4 x 4 map from 0.04 to 0.06 over the rectangle, every allocation tried. */
-static const struct config kMap = {"map", 0.06, 0.045, 100, 50, 1, 0, MAP};
 /* The parallel opening on 2 threads: rows enough for two bands of darts,
  * allocations made on the worker threads too (a failure there is rethrown
  * in the call; a thread that cannot start is done without). */
@@ -362,11 +358,8 @@ static int set_domain_part(struct trial *t, pds_sampler *s, int part)
     size_t ends[2];
     static const double fixed_xy[6] = {0.3, 0.5, 0.72, 0.55, 0.5, 0.2};
     static const double fixed_c[3] = {0.0, 0.12, 0.004};
-    static const double map[16] = {0.04, 0.045, 0.05, 0.06, 0.042, 0.047, 0.055, 0.058,
-                                   0.06, 0.05, 0.045, 0.04, 0.041, 0.052, 0.059, 0.044};
     const char *what = part == 0 ? "pds_set_polygon" : part == 1 ? "pds_set_mask"
-                     : part == 2 ? "pds_set_radius_fn" : part == 3 ? "pds_set_threads"
-                     : part == 4 ? "pds_set_fixed" : "pds_set_radius_map";
+                     : part == 2 ? "pds_set_radius_fn" : part == 3 ? "pds_set_threads" : "pds_set_fixed";
     const double radius = pds_radius(s);
     int i, tries, rc = 0;
     for (i = 0; i < 64; i++) inside[i] = (unsigned char)(rows[i / 8] >> (i % 8) & 1);
@@ -382,10 +375,8 @@ static int set_domain_part(struct trial *t, pds_sampler *s, int part)
             rc = pds_set_radius_fn(s, field_fn, NULL, 0.04, 0.06);
         else if (part == 3)
             rc = pds_set_threads(s, 2);
-        else if (part == 4)
-            rc = pds_set_fixed(s, fixed_xy, fixed_c, 3);
         else
-            rc = pds_set_radius_map(s, 4, 4, map);
+            rc = pds_set_fixed(s, fixed_xy, fixed_c, 3);
         alloc_disarm();
         if (rc != PDS_ENOMEM) break;
         check_injected(t, injected, s, what);
@@ -405,7 +396,6 @@ static void do_shape(struct trial *t, pds_sampler *s)
         rc = set_domain_part(t, s, 0);
     if (cfg->shape == MASK) rc = set_domain_part(t, s, 1);
     if (cfg->shape == POLYGON_FIELD && rc == 0) rc = set_domain_part(t, s, 2);
-    if (cfg->shape == MAP) rc = set_domain_part(t, s, 5);
     if ((cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS) && rc == 0)
         rc = set_domain_part(t, s, 3);
     if ((cfg->shape == FIXED_THREADS || cfg->shape == FIXED) && rc == 0) rc = set_domain_part(t, s, 4);
@@ -581,8 +571,6 @@ int main(int argc, char **argv)
         cfg = &kMask;
     else if (argc > 1 && strcmp(argv[1], "field") == 0)
         cfg = &kField;
-    else if (argc > 1 && strcmp(argv[1], "map") == 0)
-        cfg = &kMap;
     else if (argc > 1 && strcmp(argv[1], "threads") == 0)
         cfg = &kThreads;
     else if (argc > 1 && strcmp(argv[1], "polygon-threads") == 0)
@@ -598,7 +586,7 @@ int main(int argc, char **argv)
     else if (argc > 1 && strcmp(argv[1], "fixed-large-one-thread") == 0)
         cfg = &kFixedLargeOne;
     else if (argc > 1) {
-        printf("usage: alloc_fail [small|torus|polygon|mask|field|map|threads|polygon-threads|torus-threads|fixed-threads|"
+        printf("usage: alloc_fail [small|torus|polygon|mask|field|threads|polygon-threads|torus-threads|fixed-threads|"
                "fixed-large|fixed-one-thread|fixed-large-one-thread]\n");
         return 2;
     }

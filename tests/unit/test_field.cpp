@@ -1,9 +1,8 @@
 // test_field.cpp - the variable radius (radius_field.hpp) through the
 // sampler: its law against saturated dart throwing under the same rule
 // (law_compare.hpp, dart_throwing.hpp) for a gradient and a step field; the rule and
-// maximality by brute force; the density along a linear field; equal
-// radii through the weighted path giving the plain sampler's points; and
-// a map's run reserving its whole pattern before the first point.
+// maximality by brute force; the density along a linear field; and equal
+// radii through the weighted path giving the plain sampler's points.
 #include <cmath>
 #include <algorithm>
 #include <cstring>
@@ -193,37 +192,11 @@ START_TEST(equal_radii_through_the_weighted_path_are_the_plain_points) {
 }
 END_TEST
 
-START_TEST(a_map_reserves_its_pattern_before_the_first_point) {
-    // A map over the rectangle reserves its own bound at the first call
-    // (no growth, which would leave the allocator's holes resident); a
-    // function's room grows with the run.
-    const double values[] = {0.01, 0.012, 0.015, 0.02, 0.011, 0.013, 0.017, 0.019, 0.01};
-    for (int function = 0; function < 2; ++function) {
-        const auto make = [&] {
-            pds::Sampler s(1.0, 4);
-            s.set_field(function ? pds::RadiusField::function(gradient, nullptr, 0.05, 0.1)
-                                 : pds::RadiusField::map(3, 3, values));
-            return s;
-        };
-        pds::Sampler whole = make(), first = make();
-        std::size_t added = 0;
-        while (whole.run(0, &added) != pds::Sampler::RunEnd::complete) {
-        }
-        ck_assert(first.run(1, &added) == pds::Sampler::RunEnd::limit && added == 1);
-        ck_assert_msg(whole.count() > 100, "%zu points", whole.count());
-        ck_assert_msg(first.jones().has_room_for(whole.count()) == (function == 0),
-                      "%s: room for the %zu points after the first %d", function ? "a function" : "a map",
-                      whole.count(), first.jones().has_room_for(whole.count()));
-    }
-}
-END_TEST
-
 Suite* field_suite() {
     Suite* s = suite_create("field");
     TCase* t = tcase_create("variable radius");
     tcase_set_timeout(t, 900);
     tcase_add_test(t, reference_is_maximal);
-    tcase_add_test(t, a_map_reserves_its_pattern_before_the_first_point);
     tcase_add_test(t, law_of_a_gradient_field);
     tcase_add_test(t, law_of_a_step_field);
     tcase_add_test(t, law_of_a_step_field_on_the_torus);
