@@ -12,6 +12,7 @@
 #ifndef PDS_SPACE_TIME_STREAM_HPP
 #define PDS_SPACE_TIME_STREAM_HPP
 
+#include <cmath>
 #include <cstdint>
 
 #include "core/rng.hpp"
@@ -35,8 +36,19 @@ public:
     double next_double() { return static_cast<double>(next_u64() >> 11) * 0x1.0p-53; }
     // A Poisson count of the given mean, by inversion; exp_minus_mean is
     // e^-mean (worked out once per epoch). Capped at 63, whose probability
-    // is far below 2^-53 for the means used (at most a few).
+    // is below 1e-19 for means up to kInvertUpTo.
     unsigned poisson(double mean, double exp_minus_mean) { return poisson_at(next_double(), mean, exp_minus_mean); }
+    // A count of a larger mean: the sum of counts of equal means of at most
+    // kInvertUpTo, each from the next draw (one inversion would pass the
+    // cap, and beyond about 745 lose e^-mean to underflow).
+    static constexpr double kInvertUpTo = 16.0;
+    unsigned poisson_large(double mean) {
+        const double parts = std::ceil(mean / kInvertUpTo);
+        const double part = mean / parts, exp_minus_part = std::exp(-part);
+        unsigned k = 0;
+        for (double i = 0; i < parts; i += 1.0) k += poisson(part, exp_minus_part);
+        return k;
+    }
     // The count whose cumulative probability first passes u in [0, 1).
     static unsigned poisson_at(double u, double mean, double exp_minus_mean) {
         double p = exp_minus_mean, sum = p;

@@ -133,8 +133,11 @@ void JonesLoop<Space, Rule>::draw_region_block(const MeshCells& cells, std::size
             // P(at least one dart) = 1 - e^-mean <= mean: most cells stop here.
             const double u = stream.next_double();
             if (u >= mean) continue;
-            // The count by inversion of 1 - u (0 iff 1 - u < e^-mean).
-            const unsigned darts = SpaceTimeStream::poisson_at(1.0 - u, mean, std::exp(-mean));
+            // The count by inversion of 1 - u (0 iff 1 - u < e^-mean); a
+            // larger mean (a bound far above the others') from more draws.
+            const unsigned darts = mean <= SpaceTimeStream::kInvertUpTo
+                                       ? SpaceTimeStream::poisson_at(1.0 - u, mean, std::exp(-mean))
+                                       : stream.poisson_large(mean);
             if (darts == 0) continue;
             rings[n] = vertex_of(site);
             drawers[n++] = Drawer{site, darts, stream.next_u64()};

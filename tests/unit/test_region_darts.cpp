@@ -2,14 +2,17 @@
 // opening (jones/region_darts.hpp): an epoch's decision is the greedy set in
 // order of time, against a brute-force one, over blocks, across epochs and
 // at the domain's edges; and in a run it places a real share of the points,
-// which stay the same on any number of threads and are dropped by a refine.
+// which stay the same on any number of threads and are dropped by a refine;
+// a cell's count is Poisson whatever its mean.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <vector>
 
 #include "core/predicates.hpp"
 #include "core/rng.hpp"
+#include "core/space_time_stream.hpp"
 #include "jones/region_darts.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
@@ -148,6 +151,42 @@ START_TEST(refine_ends_the_free_regions_darts) {
 }
 END_TEST
 
+START_TEST(poisson_counts_of_large_means) {
+    // Over 4000 streams, the counts' mean and variance are the mean's, far
+    // past one inversion's cap of 63 (and past e^-mean's underflow at 1000).
+    for (const double mean : {17.0, 100.0, 1000.0}) {
+        double sum = 0.0, squares = 0.0;
+        constexpr int kStreams = 4000;
+        for (int c = 0; c < kStreams; ++c) {
+            pds::SpaceTimeStream stream(99, static_cast<std::uint64_t>(c), 5);
+            const double k = stream.poisson_large(mean);
+            sum += k;
+            squares += k * k;
+        }
+        const double m = sum / kStreams, var = squares / kStreams - m * m;
+        ck_assert_msg(std::fabs(m - mean) < 5.0 * std::sqrt(mean / kStreams), "mean %g: the counts' mean %g", mean, m);
+        ck_assert_msg(std::fabs(var / mean - 1.0) < 0.12, "mean %g: the counts' variance %g", mean, var);
+    }
+}
+END_TEST
+
+START_TEST(a_cell_far_above_the_others_gets_its_whole_count) {
+    // From the first point on, in epochs of 400 darts per cell at its
+    // bound: the first epoch's one cell draws a Poisson(400) count, which
+    // a count capped at 63 would cut short.
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        pds::Sampler s(0.01, seed);
+        s.carry_region_darts_from_start();
+        s.set_region_darts_per_cell(400.0);
+        std::size_t added = 0;
+        s.run(2, &added);
+        const pds::RegionDarts::Stats& st = s.jones().region_stats();
+        ck_assert_uint_eq(st.epochs, 1);
+        ck_assert_msg(st.darts > 300 && st.darts < 500, "seed %d: %zu darts in the first epoch", int(seed), st.darts);
+    }
+}
+END_TEST
+
 Suite* region_darts_suite() {
     Suite* s = suite_create("region_darts");
     TCase* t = tcase_create("region_darts");
@@ -157,6 +196,8 @@ Suite* region_darts_suite() {
     tcase_add_test(t, darts_exactly_r_apart_are_both_kept);
     tcase_add_test(t, run_places_a_share_the_same_on_any_threads);
     tcase_add_test(t, refine_ends_the_free_regions_darts);
+    tcase_add_test(t, poisson_counts_of_large_means);
+    tcase_add_test(t, a_cell_far_above_the_others_gets_its_whole_count);
     suite_add_tcase(s, t);
     return s;
 }
