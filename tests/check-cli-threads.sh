@@ -8,10 +8,12 @@
 # The outputs of --threads 1, 2, 4 and 0 (one per core) are compared with
 # cmp, in each mode: the one-radius rectangle, polygon, mask and torus
 # (--periodic), and --fixed, whose dart stage uses the threads (with --count
-# and --refine too), and --radius-map. Without --threads the one-radius modes
-# run the single-thread process (other points); --radius-map runs on one
-# thread either way (the same points). Ends with "check-cli-threads: N passed, M failed" and a non-zero
-# status if anything failed.
+# and --refine too), --radius-map (in the rectangle and in a polygon, whose
+# darts go on in the free regions with threads) and --radius-map --periodic.
+# Without --threads the one-radius modes and the radius maps in the plane run
+# the single-thread process (other points); --radius-map --periodic runs on
+# one thread either way (the same points). Ends with "check-cli-threads: N
+# passed, M failed" and a non-zero status if anything failed.
 
 set -u
 
@@ -47,9 +49,9 @@ same_for_threads() {
     expect "$s_label: --threads=4 writes the bytes of --threads 1" cmp -s "$tmp/t1.out" "$tmp/teq.out"
     run tdefault "$@"
     expect "$s_label: no --threads exits 0 (got $rc)" [ "$rc" -eq 0 ]
-    if [ "$#" -gt 0 ] && [ "$s_label" != "${s_label#one radius}" ]; then
-        # The one-radius rectangle: without --threads, the single-thread
-        # process, whose points are others (the selection happens).
+    if [ "$s_label" != "${s_label#one radius}" ] || [ "$s_label" != "${s_label#field}" ]; then
+        # Without --threads, the single-thread process, whose points are
+        # others (the selection happens).
         expect "$s_label: no --threads writes other points than the parallel process" \
             sh -c "! cmp -s '$tmp/t1.out' '$tmp/tdefault.out'"
     else
@@ -69,7 +71,11 @@ same_for_threads "one radius: --fixed" --fixed "$tmp/fixed.txt" --radius 0.01 --
 same_for_threads "one radius: --polygon --fixed --verify" --polygon "$tmp/l.txt" --fixed "$tmp/fixed.txt" --radius 0.01 --verify --seed 17
 same_for_threads "one radius: --fixed --count 3000" --fixed "$tmp/fixed.txt" --count 3000 --seed 18
 same_for_threads "one radius: --periodic --verify" --radius 0.005 --periodic --domain 0 0 3 0.7 --verify --seed 15
-same_for_threads "--radius-map" --radius-map "$tmp/map.pgm" --rmin 0.01 --rmax 0.03 --seed 7
+same_for_threads "field: --radius-map" --radius-map "$tmp/map.pgm" --rmin 0.01 --rmax 0.03 --seed 7
+same_for_threads "field: --radius-map --polygon --verify" --radius-map "$tmp/map.pgm" --rmin 0.01 --rmax 0.03 \
+    --polygon "$tmp/l.txt" --verify --seed 19
+same_for_threads "--radius-map --periodic (one thread either way)" --radius-map "$tmp/map.pgm" --rmin 0.01 \
+    --rmax 0.03 --periodic --seed 20
 same_for_threads "one radius: --polygon" --polygon "$tmp/l.txt" --radius 0.02 --seed 8
 same_for_threads "one radius: --polygon --refine" --polygon "$tmp/l.txt" --radius 0.04 --refine 0.02 --seed 9
 same_for_threads "one radius: --polygon --count 2000" --polygon "$tmp/l.txt" --count 2000 --seed 10

@@ -16,21 +16,20 @@
 
 namespace pds {
 
-namespace {
-}  // namespace
-
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::carry_darts(std::uint64_t salted_seed, std::size_t epoch) {
     // The runs the parallel opening hands over: one radius for every new
     // point (with fixed points, whose clearances are power disks, too), in
     // a rectangle, a polygon or on the torus. Their darts are decided
-    // against one another by that radius.
-    if (rule_.new_radius_is(r_)) {
-        // Another salt: these streams share nothing with the opening's.
-        Torus torus;
-        if constexpr (Space::kPeriodic) torus = space_.copies().torus();
-        regions_.start(mix64(salted_seed ^ 0x6A09E667F3BCC909ull), epoch, space_.clip_box(), r_, torus);
-    }
+    // against one another by that radius. A field's, in a rectangle or a
+    // polygon: each accepted dart keeps the later ones out of its own disk.
+    const bool one_radius = rule_.new_radius_is(r_);
+    if (!one_radius && Space::kPeriodic) return;
+    // Another salt: these streams share nothing with the opening's.
+    Torus torus;
+    if constexpr (Space::kPeriodic) torus = space_.copies().torus();
+    regions_.start(mix64(salted_seed ^ 0x6A09E667F3BCC909ull), epoch, space_.clip_box(),
+                   one_radius ? r_ : rule_.rmax(), torus, !one_radius);
 }
 
 template <class Space, class Rule>
@@ -57,7 +56,8 @@ void JonesLoop<Space, Rule>::add_region_point() {
         dt_.prefetch_beyond_rings(ahead, n);
     }
     const RegionDarts::Dart dart = regions_.pending();
-    const double value = rule_.value_at(space_, dart.p);
+    // A field's value was asked when its dart was accepted.
+    const double value = regions_.has_values() ? regions_.pending_value() : rule_.value_at(space_, dart.p);
     regions_.pop();
     space_.insert_point(*this, dart.p, dart.source, value);
     since_batch_.clear();  // the loop's queue is empty while the process runs
@@ -104,7 +104,17 @@ bool JonesLoop<Space, Rule>::draw_region_epoch() {
         for (std::size_t b; (b = next_block.fetch_add(1, std::memory_order_relaxed)) < nblocks;)
             draw_region_block(cells_of(w), b, dt, blocks[b]);
     });
-    regions_.decide_and_commit(nblocks, r_, [&](SiteIndex site, double w) { tree_.set_leaf_only(site, w); });
+    // A field's radius at the darts accepted, as the loop's own points get it.
+    struct RuleField final : DartField {
+        const JonesLoop& loop;
+        explicit RuleField(const JonesLoop& l) : loop(l) {}
+        double value_at(const Point& p) const override { return loop.rule_.value_at(loop.space_, p); }
+        double radius_of(double value) const override { return loop.rule_.radius_of(value); }
+    };
+    const RuleField field(*this);
+    regions_.decide_and_commit(
+        nblocks, regions_.has_values() ? rule_.rmax() : r_,
+        [&](SiteIndex site, double w) { tree_.set_leaf_only(site, w); }, regions_.has_values() ? &field : nullptr);
     return true;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/predicates.hpp"
 #include "core/prefetch.hpp"
@@ -12,12 +13,14 @@
 namespace pds {
 
 void RegionDarts::start(std::uint64_t salted_seed, std::size_t epoch, const Box& domain, double r,
-                        const Torus& torus) {
+                        const Torus& torus, bool varying) {
+    if (varying && torus.on()) throw std::logic_error("region darts with a field on the torus");
     stop();
     on_ = true;
     salted_ = salted_seed;
     epoch_ = epoch;
     torus_ = torus;
+    varying_ = varying;
     // The grid is allocated at the first decision (the hand-over allocates
     // nothing); here only its shape. In the plane, cells of side 2r over
     // the domain and a margin of r; on the torus, as many cells as fit the
@@ -55,6 +58,18 @@ bool RegionDarts::free_in_plane(std::uint32_t i, double r) const {
         for (std::size_t x = x0; x <= x1; ++x)
             for (std::uint32_t j = grid_[y * grid_columns_ + x]; j != kNone; j = chain_[j])
                 if (compare_distance(p, darts_[j].p, r) < 0) return false;
+    return true;
+}
+
+bool RegionDarts::free_of_field(std::uint32_t i, double rmax) const {
+    constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    const Point& p = darts_[i].p;
+    const std::size_t x0 = column_of(p.x - rmax), x1 = column_of(p.x + rmax);
+    const std::size_t y0 = row_of(p.y - rmax), y1 = row_of(p.y + rmax);
+    for (std::size_t y = y0; y <= y1; ++y)
+        for (std::size_t x = x0; x <= x1; ++x)
+            for (std::uint32_t j = grid_[y * grid_columns_ + x]; j != kNone; j = chain_[j])
+                if (compare_distance(p, darts_[j].p, reach_[j]) < 0) return false;
     return true;
 }
 
@@ -99,6 +114,7 @@ bool RegionDarts::free_on_torus(std::uint32_t i, double r) const {
 void RegionDarts::stop() {
     on_ = false;
     ending_ = false;
+    varying_ = false;
     listed_ = 0;
     next_ = 0;
     pending_.clear();
@@ -108,6 +124,21 @@ void RegionDarts::stop() {
     std::vector<std::uint32_t>().swap(chain_);
     std::vector<std::uint32_t>().swap(bucket_);
     std::vector<std::uint32_t>().swap(grid_);
+    std::vector<double>().swap(reach_);
+    std::vector<double>().swap(values_);
+}
+
+std::size_t RegionDarts::cell_of(const Point& q) const {
+    const Point w = torus_.on() ? torus_.wrap(q) : q;
+    return row_of(w.y) * grid_columns_ + column_of(w.x);
+}
+
+void RegionDarts::undo_decision() {
+    constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    for (const Dart& d : pending_) grid_[cell_of(d.p)] = kNone;
+    pending_.clear();
+    values_.clear();
+    next_ = 0;
 }
 
 std::vector<RegionDarts::Block>& RegionDarts::blocks(std::size_t n) {
@@ -119,15 +150,12 @@ std::vector<RegionDarts::Block>& RegionDarts::blocks(std::size_t n) {
     return blocks_;
 }
 
-void RegionDarts::decide(std::size_t nblocks, double r) {
+void RegionDarts::decide(std::size_t nblocks, double r, const DartField* field) {
+    if (varying_ != (field != nullptr)) throw std::logic_error("region darts decided without their field");
     // The grid of accepted darts: cells of side 2r (at least), so the disk
     // of radius r around a dart meets at most 2 x 2 of them in the plane
     // (two words in each of two rows). Its cells are emptied of the last
     // epoch's darts first.
-    const auto cell_of = [&](const Point& q) {
-        const Point w = torus_.on() ? torus_.wrap(q) : q;
-        return row_of(w.y) * grid_columns_ + column_of(w.x);
-    };
     constexpr std::uint32_t kNone = ~std::uint32_t{0};
     for (const Dart& d : pending_) grid_[cell_of(d.p)] = kNone;
     // Everything is allocated before pending_ changes: std::bad_alloc here
@@ -140,6 +168,10 @@ void RegionDarts::decide(std::size_t nblocks, double r) {
     chain_.resize(n);
     bucket_.reserve(n + 1);
     pending_.reserve(n);
+    if (varying_) {
+        reach_.resize(n);
+        values_.reserve(n);
+    }
     // The blocks' darts copied straight into order of time, stably: ties
     // (1 in 2^53 per pair) go to the earlier in block order. The decision
     // then reads the darts in sequence.
@@ -152,6 +184,7 @@ void RegionDarts::decide(std::size_t nblocks, double r) {
         [](const Dart& d) { return d.t; }, [](const Dart& x, const Dart& y) { return x.t < y.t; }, darts_.data(),
         bucket_);
     pending_.clear();
+    values_.clear();
     next_ = 0;
     // The grid's rows for the darts a few ahead, asked for early.
     constexpr std::size_t kAhead = 8;
@@ -164,7 +197,22 @@ void RegionDarts::decide(std::size_t nblocks, double r) {
     for (std::size_t i = 0; i < std::min(n, kAhead); ++i) prefetch_rows(i);
     for (std::uint32_t i = 0; i < n; ++i) {
         if (i + kAhead < n) prefetch_rows(i + kAhead);
-        if (!(torus_.on() ? free_on_torus(i, r) : free_in_plane(i, r))) continue;
+        if (varying_) {
+            if (!free_of_field(i, r)) continue;
+            // The field at the dart that becomes the next point (it may
+            // refuse: the epoch is then left undecided).
+            double value = 0.0;
+            try {
+                value = field->value_at(darts_[i].p);
+            } catch (...) {
+                undo_decision();
+                throw;
+            }
+            reach_[i] = field->radius_of(value);
+            values_.push_back(value);
+        } else if (!(torus_.on() ? free_on_torus(i, r) : free_in_plane(i, r))) {
+            continue;
+        }
         std::uint32_t& head = grid_[cell_of(darts_[i].p)];
         chain_[i] = head;
         head = i;

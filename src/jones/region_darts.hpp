@@ -29,6 +29,15 @@
 // the active list (its bounds summed in its order), the decision and the
 // insertions run on the caller's thread.
 //
+// With a field. A new point keeps the later ones out of its own disk, whose
+// radius the field gives at the point. A dart is then free iff no earlier
+// accepted dart of the epoch holds it in its disk; the field is asked only
+// at the darts accepted, in order of time (they become the points, in that
+// order), and their values are kept for the insertions. The grid's cells
+// are 2 rmax wide. A field that refuses a point (DartField::value_at
+// throws) leaves the epoch undecided: a later call draws and decides it
+// again, and is refused at the same dart.
+//
 // Memory. An epoch is all or nothing: its darts and its tightened bounds are
 // written to buffers and committed once all of them exist; std::bad_alloc
 // leaves the process as before the epoch, so a later call draws the same.
@@ -47,6 +56,17 @@
 #include "core/torus.hpp"
 
 namespace pds {
+
+// A field's radius at the accepted darts (the Jones loop's rule).
+class DartField {
+public:
+    // The field's value at p; may throw (a value the field refuses).
+    virtual double value_at(const Point& p) const = 0;
+    virtual double radius_of(double value) const = 0;
+
+protected:
+    ~DartField() = default;
+};
 
 class RegionDarts {
 public:
@@ -80,8 +100,11 @@ public:
     // opening's epochs come before), for points in `domain` at radius r;
     // on the torus (torus.on()) `domain` is ignored: the darts, drawn in
     // unclipped cells, are decided by their distances across the periods.
+    // With a field (`varying`, in the plane only), r is its largest radius
+    // and each accepted dart's own radius comes from the field that the
+    // decisions are given.
     void start(std::uint64_t salted_seed, std::size_t epoch, const Box& domain, double r,
-               const Torus& torus = Torus{});
+               const Torus& torus = Torus{}, bool varying = false);
     void stop();
     bool on() const { return on_; }
     // Another mean for the tests: longer epochs, whose darts meet often.
@@ -93,6 +116,9 @@ public:
     // The accepted darts, handed out in order of time.
     bool has_pending() const { return next_ < pending_.size(); }
     const Dart& pending() const { return pending_[next_]; }
+    // With a field: the field's value at the next pending dart.
+    bool has_values() const { return varying_; }
+    double pending_value() const { return values_[next_]; }
     void pop() { ++next_; }
     std::size_t next_index() const { return next_; }
     // The cells of the next n pending darts (fewer at the end).
@@ -111,11 +137,14 @@ public:
     void set_listed(std::size_t sites) { listed_ = sites; }
     std::vector<Block>& blocks(std::size_t n);
     // Joins the blocks' darts in block order, decides them greedily by time
-    // (r: the radius) and makes the accepted ones pending; then commits the
-    // bounds through set(site, weight). Returns the number accepted.
+    // (r: the radius, or a field's largest) and makes the accepted ones
+    // pending; then commits the bounds through set(site, weight). Returns
+    // the number accepted. With a field (required iff started varying): if
+    // it refuses a dart, nothing is committed and the exception goes on.
     template <class SetBound>
-    std::size_t decide_and_commit(std::size_t nblocks, double r, const SetBound& set) {
-        decide(nblocks, r);
+    std::size_t decide_and_commit(std::size_t nblocks, double r, const SetBound& set,
+                                  const DartField* field = nullptr) {
+        decide(nblocks, r, field);
         for (std::size_t b = 0; b < nblocks; ++b)
             for (const Bound& x : blocks_[b].bounds) set(x.site, x.weight);
         ++epoch_;
@@ -130,11 +159,16 @@ public:
     const Stats& stats() const { return stats_; }
 
 private:
-    void decide(std::size_t nblocks, double r);
+    void decide(std::size_t nblocks, double r, const DartField* field);
     // Dart i is free of the accepted darts in the grid (the plane's, and
     // the torus's, whose cells wrap around and divide the periods).
     bool free_in_plane(std::uint32_t i, double r) const;
+    // The same against the accepted darts' own radii (reach_).
+    bool free_of_field(std::uint32_t i, double rmax) const;
+    // Takes back the accepted darts of an epoch left undecided.
+    void undo_decision();
     bool free_on_torus(std::uint32_t i, double r) const;
+    std::size_t cell_of(const Point& q) const;  // the grid cell holding q (wrapped on the torus)
     std::size_t column_of(double x) const;
     std::size_t row_of(double y) const;
 
@@ -154,6 +188,9 @@ private:
     double side_x_ = 0, side_y_ = 0;      // its cells' sides
     std::size_t grid_columns_ = 0, grid_rows_ = 0;
     Torus torus_;                         // off in the plane
+    bool varying_ = false;                // a field: each accepted dart has its own radius
+    std::vector<double> reach_;           // with a field: an accepted dart's radius (by dart)
+    std::vector<double> values_;          // with a field: the pending darts' values
     std::vector<Dart> pending_;           // accepted, in order of time
     std::size_t next_ = 0;
     Stats stats_;

@@ -132,6 +132,7 @@ void Delaunay::prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t 
     // (the link edge) is read from the ring edge's own record.
     for (std::size_t k = 0; k < n && m < kMax; ++k) {
         const EdgeRef first = vertex_edge_[vertices[k]];
+        if (first == kNoEdge) continue;  // a hidden disk: no ring
         EdgeRef e = first;
         do {
             const EdgeRef link = mesh_.lnext(e);

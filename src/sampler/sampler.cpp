@@ -273,6 +273,9 @@ void Sampler::hand_over() {
     }
     darts_->hand_over_to(*jones_, poll);  // sets the fixed points it held (set_fixed)
     darts_.reset();
+    // A field's opening is the one-thread dart stage; with threads its
+    // darts are carried on in the free regions, whose draws they share.
+    if (parallel_ && varying_field()) jones_->carry_darts(SpaceTimeStream::salted(seed_), 0);
 }
 
 bool Sampler::step() {

@@ -225,11 +225,13 @@ START_TEST(refine_scales_every_radius)
 }
 END_TEST
 
-/* A field that misbehaves on demand: out of bounds while *bad is set. */
+/* A field that misbehaves on demand: out of bounds while *bad is set, or
+ * from call number bad_from on (0: never). */
 struct flaky {
     double r0;
     int bad;
     int calls;
+    int bad_from;
 };
 
 static double flaky_field(void *user, double x, double y)
@@ -238,14 +240,16 @@ static double flaky_field(void *user, double x, double y)
     (void)x;
     (void)y;
     ++f->calls;
+    if (f->bad_from > 0 && f->calls >= f->bad_from)
+        return 10 * f->r0;
     return f->bad == 1 ? 10 * f->r0 : f->bad == 2 ? NAN : f->r0 * (1.0 + x);
 }
 
 START_TEST(a_bad_value_stops_the_run_and_keeps_the_points)
 {
-    struct flaky f = {0.03, 0, 0};
+    struct flaky f = {0.03, 0, 0, 0};
     pds_sampler *s = sampler_new(1.0, 21), *twin = sampler_new(1.0, 21);
-    struct flaky g = {0.03, 0, 0};
+    struct flaky g = {0.03, 0, 0, 0};
     sampler_snapshot snap;
     size_t added = 99;
     int mode;
@@ -269,6 +273,49 @@ START_TEST(a_bad_value_stops_the_run_and_keeps_the_points)
     assert_same_future(s, twin, "after a bad value");
     pds_destroy(s);
     pds_destroy(twin);
+}
+END_TEST
+
+/* With threads, after the field's dart stage: the free regions' darts ask
+ * the field as each is accepted, an epoch at a time. A value refused in the
+ * middle of an epoch's decision (its sixth call from here) stops the call
+ * once the points of earlier epochs are added, and undoes that epoch's
+ * decision; the next calls add nothing and change nothing; fixed, the run
+ * goes on as one that never failed. */
+START_TEST(a_bad_value_with_threads_stops_the_run_and_keeps_the_points)
+{
+    struct flaky f = {0.01, 0, 0, 0}, g = {0.01, 0, 0, 0}, h = {0.01, 0, 0, 0};
+    pds_sampler *s = sampler_new(1.0, 22), *twin = sampler_new(1.0, 22), *whole = sampler_new(1.0, 22);
+    sampler_snapshot snap;
+    size_t added = 0, total;
+    ck_assert_int_eq(pds_set_radius_fn(s, flaky_field, &f, 0.01, 0.02), 0);
+    ck_assert_int_eq(pds_set_radius_fn(twin, flaky_field, &g, 0.01, 0.02), 0);
+    ck_assert_int_eq(pds_set_radius_fn(whole, flaky_field, &h, 0.01, 0.02), 0);
+    ck_assert_int_eq(pds_set_threads(s, 2), 0);
+    ck_assert_int_eq(pds_set_threads(twin, 2), 0);
+    ck_assert_int_eq(pds_set_threads(whole, 2), 0);
+    ck_assert_int_eq(pds_run(whole, 0, NULL), PDS_DONE);
+    total = pds_count(whole);
+    /* Past the hand-over (the dart stage places about three in four). */
+    ck_assert_int_eq(pds_run(s, total * 9 / 10, NULL), PDS_MORE);
+    f.bad_from = f.calls + 6;
+    assert_failed(s, pds_run(s, 0, &added), PDS_EINVAL, "bad value, threads");
+    ck_assert_ptr_nonnull(strstr(pds_errmsg(s), "radius function returned"));
+    ck_assert_uint_lt(pds_count(s), total);
+    snapshot_take(s, &snap);
+    assert_failed(s, pds_run(s, 0, &added), PDS_EINVAL, "bad value again, threads");
+    ck_assert_uint_eq(added, 0);
+    snapshot_check(s, &snap, "bad value again, threads");
+    assert_failed(s, pds_step(s), PDS_EINVAL, "bad value, step, threads");
+    snapshot_check(s, &snap, "bad value, step, threads");
+    snapshot_free(&snap);
+    f.bad_from = 0;
+    ck_assert_int_eq(pds_run(twin, pds_count(s), NULL), PDS_MORE);
+    assert_same_future(s, twin, "after a bad value, threads");
+    ck_assert_uint_eq(pds_count(s), total);
+    pds_destroy(s);
+    pds_destroy(twin);
+    pds_destroy(whole);
 }
 END_TEST
 
@@ -464,6 +511,7 @@ Suite *field_suite(void)
     tcase_add_test(t, same_bytes_however_split);
     tcase_add_test(t, refine_scales_every_radius);
     tcase_add_test(t, a_bad_value_stops_the_run_and_keeps_the_points);
+    tcase_add_test(t, a_bad_value_with_threads_stops_the_run_and_keeps_the_points);
     tcase_add_test(t, bad_fields_are_refused);
     tcase_add_test(t, smallest_radius_judged_at_the_first_point);
     tcase_add_test(t, radii_without_a_field_and_bad_arguments);

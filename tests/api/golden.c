@@ -27,7 +27,10 @@
  * loop alone), and pinned in calls of 97 points too. Many fixed points
  * pinned from 1.12.0 on, whose hand-over inserts them along the curve
  * (before, in the caller's order; without threads, more than about the
- * square root of the points ran the Jones loop alone).
+ * square root of the points ran the Jones loop alone). Fields with threads
+ * pinned from 1.13.0 on, whose darts go on in the free regions after the
+ * field's dart stage (before, their threads gave the default process's
+ * points, the first fingerprint below).
  */
 #include <math.h>
 #include <stdint.h>
@@ -122,16 +125,22 @@ START_TEST(pinned_outputs)
 END_TEST
 
 /* A varying field in a rectangle: a 4 x 3 radius map (1:3, so it opens with
- * the field's dart stage), whole and in calls of 37 points. */
+ * the field's dart stage), whole and in calls of 37 points; by the default
+ * process and by the parallel one on 1, 2 and 3 threads (threads 0: no
+ * pds_set_threads). */
 struct golden_field {
+    unsigned threads;
     size_t chunk;
     size_t count;
     uint64_t hash;
 };
 
 static const struct golden_field field_cases[] = {
-    {0, 11486, 0xd923e04fabc74ff9ull},
-    {37, 11486, 0xd923e04fabc74ff9ull}, /* split: same bytes */
+    {0, 0, 11486, 0xd923e04fabc74ff9ull},
+    {0, 37, 11486, 0xd923e04fabc74ff9ull}, /* split: same bytes */
+    {1, 0, 11494, 0xe22997052b4d3471ull},
+    {2, 0, 11494, 0xe22997052b4d3471ull},
+    {3, 37, 11494, 0xe22997052b4d3471ull},
 };
 
 START_TEST(pinned_field_outputs)
@@ -143,6 +152,8 @@ START_TEST(pinned_field_outputs)
     ck_assert_int_eq(pds_create(&s, 0.03, 5), 0);
     ck_assert_int_eq(pds_set_domain(s, -1.0, 3.0, 2.0, 4.5), 0);
     ck_assert_int_eq(pds_set_radius_map(s, 4, 3, map), 0);
+    if (g->threads != 0)
+        ck_assert_int_eq(pds_set_threads(s, g->threads), 0);
     run_all(s, g->chunk);
     assert_pinned(s, g->count, g->hash, "field case", _i);
 }

@@ -14,9 +14,9 @@
  *
  * Determinism is checked in every mode a run can be in: the one-radius
  * rectangle, the torus (square; wider than tall, refined; in count mode),
- * count mode, a chain of refines, a radius map, a polygon with a hole (one
- * radius, refined, in count mode), a mask, and fixed points (in the polygon;
- * in the square in count mode). Each is
+ * count mode, a chain of refines, a radius map (in the square; in the
+ * polygon), a polygon with a hole (one radius, refined, in count mode), a
+ * mask, and fixed points (in the polygon; in the square in count mode). Each is
  * run once with 1 thread, one pds_run per radius (the reference), then
  *   - with 2, 3, 4, 5 and 8 threads, the same calls;
  *   - split into pds_run calls of 1, 7 and 1000 points in turn, the thread
@@ -96,6 +96,12 @@ static void fixed_points(pds_sampler *s)
     ck_assert_int_eq(pds_set_fixed(s, xy, c, 3), 0);
 }
 
+static void polygon_with_radius_map(pds_sampler *s)
+{
+    polygon(s);
+    radius_map(s);
+}
+
 static void polygon_with_fixed_points(pds_sampler *s)
 {
     polygon(s);
@@ -110,6 +116,7 @@ static const mode modes[] = {
     {"pds_set_count", NULL, {{1.0}, {1.0}}, {3000, 1000}},
     {"refine", NULL, {{0.03, 0.02, 0.01}, {0.08, 0.06, 0.04}}, {0, 0}},
     {"radius map", radius_map, {{1.0}, {1.0}}, {0, 0}},
+    {"radius map in a polygon with a hole", polygon_with_radius_map, {{1.0}, {1.0}}, {0, 0}},
     {"polygon with a hole", polygon, {{0.015}, {0.06}}, {0, 0}},
     {"polygon, refine", polygon, {{0.03, 0.02}, {0.09, 0.07}}, {0, 0}},
     {"polygon, pds_set_count", polygon, {{1.0}, {1.0}}, {3000, 1000}},

@@ -2,9 +2,9 @@
 runs the single-thread process; an int selects the parallel process, whose
 points depend on the seed and settings but never on the count, byte for byte.
 The one-radius rectangle, polygon and mask (library 1.8 for the last two),
-torus and fixed points (library 1.9), with count or refine too, have a
-parallel process; radius maps run on one thread and give the same points
-either way."""
+torus and fixed points (library 1.9), with count or refine too, and radius
+maps in the plane (library 1.13) have a parallel process; a radius map on
+the torus runs on one thread and gives the same points either way."""
 
 import copy
 import pickle
@@ -24,7 +24,8 @@ COUNTS = (2, 3, 8)
 
 # The modes, as Sampler arguments: the rectangle, a polygon with a hole, a
 # mask with a hole, the torus and fixed points, whose dart stages use the
-# threads, with count too; then a radius map, which runs on one thread.
+# threads, with count too, and a radius map (its darts carried on in the free
+# regions); then a radius map on the torus, which runs on one thread.
 L_SHAPE = [[(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)],
            [(0.3, 0.3), (0.7, 0.3), (0.7, 0.7), (0.3, 0.7)]]
 MASK = [[True] * 4 + [False] * 4,  # row 0 along y1: a ring over a bar
@@ -43,9 +44,11 @@ PARALLEL = {  # the modes with a parallel process of their own
     "torus with count": dict(radius=None, count=3000, periodic=True, bounds=((0, 0), (2, 1))),
     "polygon with fixed points": dict(radius=0.02, domain=L_SHAPE,
                                       fixed=[(0.15, 0.15), (1.5, 0.5)]),
+    "radius map": dict(radius=None, radius_map=[[0.01, 0.02, 0.03], [0.02, 0.03, 0.02]]),
 }
 ONE_THREAD = {  # the modes that run on one thread whatever was asked
-    "radius map": dict(radius=None, radius_map=[[0.01, 0.02, 0.03], [0.02, 0.03, 0.02]]),
+    "radius map on the torus": dict(radius=None, radius_map=[[0.01, 0.02, 0.03], [0.02, 0.03, 0.02]],
+                                    periodic=True),
 }
 MODES = dict(PARALLEL, **ONE_THREAD)
 

@@ -5,8 +5,8 @@
  * Contract (include/poissondisk.h, DESIGN.md): the library keeps no global
  * state; distinct handles may be used from distinct threads at once. Each of
  * N_THREADS threads runs its own script on its own handle: create, set_domain
- * (then, for two of them, a polygon with a hole; for one, the torus; for
- * one, fixed points),
+ * (then, for two of them, a polygon with a hole, one of these with a radius
+ * map; for one, the torus; for one, fixed points),
  * a bounded run, free_area in the middle of the run, run to the end, refine,
  * run to the end, count/radius/points, verify, free_area, a refused call and
  * its message, destroy. In between it calls the global functions (pds_strerror,
@@ -47,13 +47,14 @@ struct script {
     int polygon;            /* an octagon with a square hole inside the domain */
     int periodic;           /* the domain made a torus */
     int fixed;              /* three fixed points, one a large obstacle */
+    int field;              /* a 2 x 1 radius map, r0 to 2 r0 */
 };
 
 static const struct script scripts[N_THREADS] = {
-    {1, 0.020, 0.012, 0.0, 0.0, 1.0, 1.0, 100, {1, 2}, 0, 0, 1},
-    {0x9E3779B97F4A7C15u, 0.030, 0.020, -3.0, 10.0, 1.0, 11.0, 1, {2, 1}, 1, 0, 0},
-    {42, 0.004, 0.0035, 0.0, 0.0, 2.0, 0.5, 2000, {3, 0}, 1, 0, 0}, /* several blocks of free cells */
-    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500, {0, 4}, 0, 1, 0},
+    {1, 0.020, 0.012, 0.0, 0.0, 1.0, 1.0, 100, {1, 2}, 0, 0, 1, 0},
+    {0x9E3779B97F4A7C15u, 0.030, 0.020, -3.0, 10.0, 1.0, 11.0, 1, {2, 1}, 1, 0, 0, 0},
+    {42, 0.004, 0.0035, 0.0, 0.0, 2.0, 0.5, 2000, {3, 0}, 1, 0, 0, 1}, /* several blocks of free cells */
+    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500, {0, 4}, 0, 1, 0, 0},
 };
 
 /* A growable byte buffer: everything the calls of one script returned. */
@@ -163,6 +164,11 @@ static void run_script(const struct script *sc, int alone, struct transcript *t,
         static const double at[6] = {0.5, 0.5, 0.2, 0.8, 0.9, 0.1};
         static const double c[3] = {0.25, 0.0, 0.05};
         sum->set_domain = rc = pds_set_fixed(s, at, c, 3);
+        put_int(t, rc);
+    }
+    if (sc->field && rc == 0) {
+        const double map[2] = {sc->r0, 2 * sc->r0};
+        sum->set_domain = rc = pds_set_radius_map(s, 2, 1, map);
         put_int(t, rc);
     }
     put_int(t, pds_set_threads(s, alone ? 1 : sc->threads[0]));

@@ -16,9 +16,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
 #include <vector>
 
 #include "dart_throwing.hpp"
+#include "polygon_rings.hpp"
 #include "radius/radius_field.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
@@ -42,6 +46,7 @@ struct Config {
     unsigned threads = 0;            // > 0: the parallel opening (set_threads) on that many
     double region_darts_per_cell = 0;  // > 0: the free regions' epochs of that mean length
     int runs = 0;                    // seeds 1..runs (the dart thrower: 10^6 + seed)
+    std::vector<std::vector<double>> rings;  // in the plane: a polygon (x, y lists) within box
 };
 
 struct Sample {
@@ -110,6 +115,7 @@ inline double ks_scaled(std::vector<double> a, std::vector<double> b) {
 // s (made with radius c.r, or 1 with a field) set up as c says.
 inline void configure(pds::Sampler& s, const Config& c) {
     s.set_domain(c.box);
+    if (!c.rings.empty()) s.set_polygon(std::make_shared<const pds::Polygon>(rings_of(c.rings)));
     s.set_periodic(c.periodic);
     if (c.field) s.set_field(pds::RadiusField::function(c.field, nullptr, c.rmin, c.rmax));
     if (c.stages == Stages::jones_only) s.skip_dart_stage();
@@ -155,6 +161,9 @@ inline void assert_same_law(const Sample& sampler, const Sample& darts) {
     const double z_pairs = z_score(sampler.close_pairs, darts.close_pairs);
     const double z_earlier = z_score(sampler.to_earlier, darts.to_earlier);
     const double ks = ks_scaled(sampler.count, darts.count);
+    if (std::getenv("PDS_LAW_PRINT"))
+        std::printf("law: mean N %.3f / %.3f (z %.2f), close pairs z %.2f, nearest earlier z %.2f, KS %.3f\n",
+                    mean(sampler.count), mean(darts.count), z_count, z_pairs, z_earlier, ks);
     ck_assert_msg(std::fabs(z_count) < 4.5, "mean N: sampler %.3f, dart throwing %.3f (z = %.2f)",
                   mean(sampler.count), mean(darts.count), z_count);
     ck_assert_msg(std::fabs(z_pairs) < 4.5, "close pairs: sampler %.3f, dart throwing %.3f (z = %.2f)",
@@ -214,6 +223,10 @@ inline void compare(const Config& c) {
         compare_with(c, dart_throwing(oracle::Torus{c.box}, field));
     else if (c.periodic)
         compare_with(c, dart_throwing(oracle::Torus{c.box}, one));
+    else if (!c.rings.empty() && c.field)
+        compare_with(c, dart_throwing(oracle::InPolygon{c.rings}, field));
+    else if (!c.rings.empty())
+        compare_with(c, dart_throwing(oracle::InPolygon{c.rings}, one));
     else if (c.field)
         compare_with(c, dart_throwing(oracle::Plane{c.box}, field));
     else

@@ -1,6 +1,8 @@
 // test_field.cpp - the variable radius (radius_field.hpp) through the
 // sampler: its law against saturated dart throwing under the same rule
-// (law_compare.hpp, dart_throwing.hpp) for a gradient and a step field; the rule and
+// (law_compare.hpp, dart_throwing.hpp) for a gradient and a step field, also
+// with threads (the free regions' darts, in epochs of the default length and
+// 40 times as long); the rule and
 // maximality by brute force; the density along a linear field; and equal
 // radii through the weighted path giving the plain sampler's points.
 #include <cmath>
@@ -27,9 +29,12 @@ using law::run_to_the_end;
 // Over the unit square (its dart stage and the Jones loop both placing a
 // real share of the points), or the unit torus (which has no dart stage for
 // a varying field: the Jones loop alone).
-void compare_field_laws(oracle::Field field, double rmin, double rmax, int runs, bool periodic = false) {
+void compare_field_laws(oracle::Field field, double rmin, double rmax, int runs, bool periodic = false,
+                        unsigned threads = 0, double region_darts_per_cell = 0) {
     law::Config c;
     c.periodic = periodic;
+    c.threads = threads;
+    c.region_darts_per_cell = region_darts_per_cell;
     c.field = field;
     c.rmin = rmin;
     c.rmax = rmax;
@@ -89,6 +94,35 @@ END_TEST
 
 START_TEST(law_of_a_step_field) {
     compare_field_laws(step, 0.04, 0.1, test_light() ? 30 : 2000);
+}
+END_TEST
+
+START_TEST(law_of_a_gradient_field_on_threads) {
+    // The field's dart stage, then its darts carried on in the free regions
+    // on 1, 2 and 3 threads (3 oversubscribes a 2-core machine).
+    compare_field_laws(gradient, 0.05, 0.1, test_light() ? 30 : 2000, false, static_cast<unsigned>(_i));
+}
+END_TEST
+
+START_TEST(law_of_a_step_field_in_long_region_epochs) {
+    // Epochs 40 times as long: darts of one epoch often fall in one
+    // another's disks, so the law depends on each accepted dart keeping the
+    // later ones out by its own radius (the step's two radii differ by 2.5).
+    compare_field_laws(step, 0.04, 0.1, test_light() ? 30 : 2000, false, 2, 4.0);
+}
+END_TEST
+
+START_TEST(law_of_a_gradient_field_in_a_polygon_on_threads) {
+    // An L with a square hole in the unit square: cells the outline cuts,
+    // drawn from by the free regions' darts too (2 threads).
+    law::Config c;
+    c.rings = {{0, 0, 1, 0, 1, 0.5, 0.5, 0.5, 0.5, 1, 0, 1}, {0.15, 0.15, 0.35, 0.15, 0.35, 0.35, 0.15, 0.35}};
+    c.field = gradient;
+    c.rmin = 0.05;
+    c.rmax = 0.1;
+    c.runs = test_light() ? 30 : 2000;
+    c.threads = 2;
+    law::compare(c);
 }
 END_TEST
 
@@ -199,6 +233,9 @@ Suite* field_suite() {
     tcase_add_test(t, reference_is_maximal);
     tcase_add_test(t, law_of_a_gradient_field);
     tcase_add_test(t, law_of_a_step_field);
+    tcase_add_loop_test(t, law_of_a_gradient_field_on_threads, 1, 4);
+    tcase_add_test(t, law_of_a_step_field_in_long_region_epochs);
+    tcase_add_test(t, law_of_a_gradient_field_in_a_polygon_on_threads);
     tcase_add_test(t, law_of_a_step_field_on_the_torus);
     tcase_add_test(t, rule_and_maximality_by_brute_force);
     tcase_add_test(t, density_follows_a_linear_field);

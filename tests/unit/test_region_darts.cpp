@@ -3,17 +3,23 @@
 // order of time, against a brute-force one, over blocks, across epochs and
 // at the domain's edges; and in a run it places a real share of the points,
 // which stay the same on any number of threads and are dropped by a refine;
-// a cell's count is Poisson whatever its mean.
+// a cell's count is Poisson whatever its mean. With a field: each accepted
+// dart keeps the later ones out of its own disk, the field is asked once per
+// accepted dart in order of time, a refusal leaves the epoch undecided, and a
+// run's points stay the same on any number of threads.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <vector>
 
 #include "core/predicates.hpp"
 #include "core/rng.hpp"
 #include "core/space_time_stream.hpp"
 #include "jones/region_darts.hpp"
+#include "radius/radius_field.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
 
@@ -36,12 +42,44 @@ std::vector<Dart> greedy(const std::vector<Dart>& darts, double r) {
     return kept;
 }
 
+// A 1:4 field along x over the unit square, r = 0.02 + 0.06 x, which
+// records where it is asked and can refuse its call number `refuse_at`.
+struct GradientField final : pds::DartField {
+    static double radius_at(const pds::Point& p) { return 0.02 + 0.06 * p.x; }
+    double value_at(const pds::Point& p) const override {
+        if (asked.size() == refuse_at) throw std::range_error("refused");
+        asked.push_back(p);
+        return radius_at(p);
+    }
+    double radius_of(double value) const override { return value; }
+    mutable std::vector<pds::Point> asked;
+    std::size_t refuse_at = std::numeric_limits<std::size_t>::max();
+};
+
+// Greedy in order of time by brute force, each kept dart holding the later
+// ones out of its disk of radius radius(dart).
+template <class Radius>
+std::vector<Dart> greedy_by(const std::vector<Dart>& darts, const Radius& radius) {
+    std::vector<std::size_t> order(darts.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return darts[a].t < darts[b].t; });
+    std::vector<Dart> kept;
+    for (std::size_t i : order) {
+        bool free = true;
+        for (const Dart& k : kept)
+            if (pds::compare_distance(darts[i].p, k.p, radius(k.p)) < 0) free = false;
+        if (free) kept.push_back(darts[i]);
+    }
+    return kept;
+}
+
 // Hands `darts` to `rd` split over `nblocks` blocks in list order, decides
-// them and returns what became pending.
-std::vector<Dart> decide(pds::RegionDarts& rd, const std::vector<Dart>& darts, std::size_t nblocks, double r) {
+// them (with `field`, if any) and returns what became pending.
+std::vector<Dart> decide(pds::RegionDarts& rd, const std::vector<Dart>& darts, std::size_t nblocks, double r,
+                         const pds::DartField* field = nullptr) {
     std::vector<pds::RegionDarts::Block>& blocks = rd.blocks(nblocks);
     for (std::size_t i = 0; i < darts.size(); ++i) blocks[i * nblocks / darts.size()].darts.push_back(darts[i]);
-    rd.decide_and_commit(nblocks, r, [](pds::SiteIndex, double) {});
+    rd.decide_and_commit(nblocks, r, [](pds::SiteIndex, double) {}, field);
     std::vector<Dart> out;
     for (; rd.has_pending(); rd.pop()) out.push_back(rd.pending());
     return out;
@@ -151,6 +189,121 @@ START_TEST(refine_ends_the_free_regions_darts) {
 }
 END_TEST
 
+START_TEST(field_decision_keeps_later_darts_out_of_each_disk) {
+    // Three epochs of darts decided by the 1:4 field: the greedy set in
+    // order of time, each accepted dart's disk its own radius. Deciding by
+    // the largest or the smallest radius gives other sets, so the test
+    // sees which radius is used.
+    const pds::Box box{0, 0, 1, 1};
+    const double rmax = GradientField::radius_at({1, 0});
+    pds::RegionDarts rd;
+    rd.start(1, 0, box, rmax, pds::Torus{}, true);
+    ck_assert(rd.has_values());
+    pds::Rng rng(23);
+    for (int epoch = 0; epoch < 3; ++epoch) {
+        const std::vector<Dart> darts = random_darts(rng, box, 2000);
+        GradientField field;
+        std::vector<pds::RegionDarts::Block>& blocks = rd.blocks(4);
+        for (std::size_t i = 0; i < darts.size(); ++i) blocks[i * 4 / darts.size()].darts.push_back(darts[i]);
+        rd.decide_and_commit(4, rmax, [](pds::SiteIndex, double) {}, &field);
+        std::vector<Dart> got;
+        std::vector<double> values;
+        for (; rd.has_pending(); rd.pop()) {
+            got.push_back(rd.pending());
+            values.push_back(rd.pending_value());
+        }
+        const std::vector<Dart> want = greedy_by(darts, GradientField::radius_at);
+        assert_same_darts(got, want, "field epoch");
+        // Asked once per accepted dart, in order of time; the values kept.
+        ck_assert_uint_eq(field.asked.size(), got.size());
+        for (std::size_t i = 0; i < got.size(); ++i) {
+            ck_assert(field.asked[i].x == got[i].p.x && field.asked[i].y == got[i].p.y);
+            ck_assert(values[i] == GradientField::radius_at(got[i].p));
+        }
+        const auto by_rmax = greedy_by(darts, [&](const pds::Point&) { return rmax; });
+        const auto by_rmin = greedy_by(darts, [&](const pds::Point&) { return 0.02; });
+        ck_assert_uint_lt(by_rmax.size(), got.size());
+        ck_assert_uint_gt(by_rmin.size(), got.size());
+    }
+}
+END_TEST
+
+START_TEST(refused_field_value_leaves_the_epoch_undecided) {
+    // The field refuses its sixth call: nothing is pending, no bound is
+    // committed, the epoch is the same; deciding the same darts again
+    // gives the greedy set (the grid kept none of the undone darts).
+    const pds::Box box{0, 0, 1, 1};
+    const double rmax = GradientField::radius_at({1, 0});
+    pds::RegionDarts rd;
+    rd.start(1, 3, box, rmax, pds::Torus{}, true);
+    pds::Rng rng(29);
+    const std::vector<Dart> darts = random_darts(rng, box, 800);
+    GradientField refusing;
+    refusing.refuse_at = 5;
+    std::vector<pds::RegionDarts::Block>& blocks = rd.blocks(2);
+    for (std::size_t i = 0; i < darts.size(); ++i) blocks[i * 2 / darts.size()].darts.push_back(darts[i]);
+    blocks[0].bounds.push_back(pds::RegionDarts::Bound{7, 0.5});
+    std::size_t committed = 0;
+    bool refused = false;
+    try {
+        rd.decide_and_commit(2, rmax, [&](pds::SiteIndex, double) { ++committed; }, &refusing);
+    } catch (const std::range_error&) {
+        refused = true;
+    }
+    ck_assert(refused);
+    ck_assert(!rd.has_pending());
+    ck_assert_uint_eq(committed, 0);
+    ck_assert_uint_eq(rd.epoch(), 3);
+    ck_assert_uint_eq(rd.stats().epochs, 0);
+    GradientField field;
+    assert_same_darts(decide(rd, darts, 2, rmax, &field), greedy_by(darts, GradientField::radius_at), "again");
+    ck_assert_uint_eq(rd.epoch(), 4);
+}
+END_TEST
+
+namespace {
+
+double gradient_field(void*, double x, double) { return 0.004 * (1.0 + 2.0 * x); }
+
+// Counts the calls of a gradient field (1:3 along x).
+struct CallCount {
+    std::size_t calls = 0;
+    static double radius(void* self, double x, double y) {
+        ++static_cast<CallCount*>(self)->calls;
+        return gradient_field(nullptr, x, y);
+    }
+};
+
+}  // namespace
+
+START_TEST(field_run_places_a_share_the_same_on_any_threads) {
+    // About 24,000 points; the field's dart stage, then its darts carried
+    // on in the free regions with threads: the same points on 1, 2 and 3,
+    // other than without threads, the field asked once per point.
+    std::vector<double> first, alone;
+    for (unsigned threads = 0; threads <= 3; ++threads) {
+        CallCount count;
+        pds::Sampler s(1.0, 8);
+        s.set_field(pds::RadiusField::function(&CallCount::radius, &count, 0.004, 0.012));
+        if (threads != 0) s.set_threads(threads);
+        std::size_t added = 0;
+        ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+        ck_assert_uint_eq(count.calls, s.count());
+        const pds::RegionDarts::Stats& st = s.jones().region_stats();
+        const double share = static_cast<double>(st.points) / static_cast<double>(s.count());
+        if (threads == 0) ck_assert_uint_eq(st.points, 0);
+        else ck_assert_msg(share > 0.1 && share < 0.4, "the free regions' darts placed %.3f of the points", share);
+        std::vector<double> xy(2 * s.count());
+        s.copy_points(0, s.count(), xy.data());
+        if (threads == 0) alone = xy;
+        else if (threads == 1) first = xy;
+        else ck_assert_msg(xy == first, "%u threads: other points", threads);
+        ck_assert_msg(s.verify().failure.empty(), "verify: %s", s.verify().failure.c_str());
+    }
+    ck_assert(first != alone);
+}
+END_TEST
+
 START_TEST(poisson_counts_of_large_means) {
     // Over 4000 streams, the counts' mean and variance are the mean's, far
     // past one inversion's cap of 63 (and past e^-mean's underflow at 1000).
@@ -198,6 +351,9 @@ Suite* region_darts_suite() {
     tcase_add_test(t, refine_ends_the_free_regions_darts);
     tcase_add_test(t, poisson_counts_of_large_means);
     tcase_add_test(t, a_cell_far_above_the_others_gets_its_whole_count);
+    tcase_add_test(t, field_decision_keeps_later_darts_out_of_each_disk);
+    tcase_add_test(t, refused_field_value_leaves_the_epoch_undecided);
+    tcase_add_test(t, field_run_places_a_share_the_same_on_any_threads);
     suite_add_tcase(s, t);
     return s;
 }
