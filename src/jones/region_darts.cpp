@@ -50,6 +50,8 @@ std::size_t RegionDarts::row_of(double y) const {
 }
 
 bool RegionDarts::free_in_plane(std::uint32_t i, double r) const {
+    // With a field, r is the largest radius, and each accepted dart holds
+    // others out of its own disk.
     constexpr std::uint32_t kNone = ~std::uint32_t{0};
     const Point& p = darts_[i].p;
     const std::size_t x0 = column_of(p.x - r), x1 = column_of(p.x + r);
@@ -57,19 +59,7 @@ bool RegionDarts::free_in_plane(std::uint32_t i, double r) const {
     for (std::size_t y = y0; y <= y1; ++y)
         for (std::size_t x = x0; x <= x1; ++x)
             for (std::uint32_t j = grid_[y * grid_columns_ + x]; j != kNone; j = chain_[j])
-                if (compare_distance(p, darts_[j].p, r) < 0) return false;
-    return true;
-}
-
-bool RegionDarts::free_of_field(std::uint32_t i, double rmax) const {
-    constexpr std::uint32_t kNone = ~std::uint32_t{0};
-    const Point& p = darts_[i].p;
-    const std::size_t x0 = column_of(p.x - rmax), x1 = column_of(p.x + rmax);
-    const std::size_t y0 = row_of(p.y - rmax), y1 = row_of(p.y + rmax);
-    for (std::size_t y = y0; y <= y1; ++y)
-        for (std::size_t x = x0; x <= x1; ++x)
-            for (std::uint32_t j = grid_[y * grid_columns_ + x]; j != kNone; j = chain_[j])
-                if (compare_distance(p, darts_[j].p, reach_[j]) < 0) return false;
+                if (compare_distance(p, darts_[j].p, varying_ ? reach_[j] : r) < 0) return false;
     return true;
 }
 
@@ -198,7 +188,7 @@ void RegionDarts::decide(std::size_t nblocks, double r, const DartField* field) 
     for (std::uint32_t i = 0; i < n; ++i) {
         if (i + kAhead < n) prefetch_rows(i + kAhead);
         if (varying_) {
-            if (!free_of_field(i, r)) continue;
+            if (!free_in_plane(i, r)) continue;
             // The field at the dart that becomes the next point (it may
             // refuse: the epoch is then left undecided).
             double value = 0.0;

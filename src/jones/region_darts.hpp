@@ -161,10 +161,9 @@ public:
 private:
     void decide(std::size_t nblocks, double r, const DartField* field);
     // Dart i is free of the accepted darts in the grid (the plane's, and
-    // the torus's, whose cells wrap around and divide the periods).
+    // the torus's, whose cells wrap around and divide the periods); with a
+    // field, of their own disks (reach_) within the largest radius r.
     bool free_in_plane(std::uint32_t i, double r) const;
-    // The same against the accepted darts' own radii (reach_).
-    bool free_of_field(std::uint32_t i, double rmax) const;
     // Takes back the accepted darts of an epoch left undecided.
     void undo_decision();
     bool free_on_torus(std::uint32_t i, double r) const;

@@ -73,12 +73,19 @@ std::vector<Dart> greedy_by(const std::vector<Dart>& darts, const Radius& radius
     return kept;
 }
 
-// Hands `darts` to `rd` split over `nblocks` blocks in list order, decides
-// them (with `field`, if any) and returns what became pending.
-std::vector<Dart> decide(pds::RegionDarts& rd, const std::vector<Dart>& darts, std::size_t nblocks, double r,
-                         const pds::DartField* field = nullptr) {
+// Hands `darts` to `rd` split over `nblocks` blocks in list order.
+std::vector<pds::RegionDarts::Block>& fill_blocks(pds::RegionDarts& rd, const std::vector<Dart>& darts,
+                                                  std::size_t nblocks) {
     std::vector<pds::RegionDarts::Block>& blocks = rd.blocks(nblocks);
     for (std::size_t i = 0; i < darts.size(); ++i) blocks[i * nblocks / darts.size()].darts.push_back(darts[i]);
+    return blocks;
+}
+
+// Hands `darts` to `rd` as fill_blocks does, decides them (with `field`, if
+// any) and returns what became pending.
+std::vector<Dart> decide(pds::RegionDarts& rd, const std::vector<Dart>& darts, std::size_t nblocks, double r,
+                         const pds::DartField* field = nullptr) {
+    fill_blocks(rd, darts, nblocks);
     rd.decide_and_commit(nblocks, r, [](pds::SiteIndex, double) {}, field);
     std::vector<Dart> out;
     for (; rd.has_pending(); rd.pop()) out.push_back(rd.pending());
@@ -203,8 +210,7 @@ START_TEST(field_decision_keeps_later_darts_out_of_each_disk) {
     for (int epoch = 0; epoch < 3; ++epoch) {
         const std::vector<Dart> darts = random_darts(rng, box, 2000);
         GradientField field;
-        std::vector<pds::RegionDarts::Block>& blocks = rd.blocks(4);
-        for (std::size_t i = 0; i < darts.size(); ++i) blocks[i * 4 / darts.size()].darts.push_back(darts[i]);
+        fill_blocks(rd, darts, 4);
         rd.decide_and_commit(4, rmax, [](pds::SiteIndex, double) {}, &field);
         std::vector<Dart> got;
         std::vector<double> values;
@@ -240,9 +246,7 @@ START_TEST(refused_field_value_leaves_the_epoch_undecided) {
     const std::vector<Dart> darts = random_darts(rng, box, 800);
     GradientField refusing;
     refusing.refuse_at = 5;
-    std::vector<pds::RegionDarts::Block>& blocks = rd.blocks(2);
-    for (std::size_t i = 0; i < darts.size(); ++i) blocks[i * 2 / darts.size()].darts.push_back(darts[i]);
-    blocks[0].bounds.push_back(pds::RegionDarts::Bound{7, 0.5});
+    fill_blocks(rd, darts, 2)[0].bounds.push_back(pds::RegionDarts::Bound{7, 0.5});
     std::size_t committed = 0;
     bool refused = false;
     try {
