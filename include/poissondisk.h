@@ -48,7 +48,7 @@ extern "C" {
 
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
-#define PDS_VERSION_MINOR 12
+#define PDS_VERSION_MINOR 13
 #define PDS_VERSION_PATCH 0
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
@@ -379,7 +379,10 @@ PDS_API int pds_set_radius_map(pds_sampler *s, size_t w, size_t h, const double 
 
 /*
  * A radius function: the radius at user point (x, y) of the domain, in
- * [rmin, rmax]. Called once per point, when it is placed, and not at all
+ * [rmin, rmax]. Called once per point, when it is placed (with
+ * pds_set_threads, when its dart is accepted: a pds_refine before the
+ * point is added drops it, its value asked in vain; a value refused there
+ * leaves out the points that epoch accepted before it), and not at all
  * when rmin == rmax (the field is then constant); with a progress callback
  * set, also 4096 times over a grid at the first pds_run, for the estimate of
  * the final count (values out of bounds there count as rmax, no error),
@@ -502,8 +505,8 @@ PDS_API int pds_set_mask(pds_sampler *s, size_t w, size_t h, const unsigned char
  * and other points), with it in the parallel process, its points the same
  * for every thread count (since 1.9; see pds_set_threads). A radius field
  * opens with its layered dart grids around fixed points too, where it does
- * without them (since 1.11; see pds_set_radius_map), on one thread either
- * way. A polygon spread thin over its box (islands far apart) and
+ * without them (since 1.11; see pds_set_radius_map), with threads then
+ * going on with darts in the free regions (since 1.13). A polygon spread thin over its box (islands far apart) and
  * clearances whose boxes together span many times the domain's box run
  * the Jones loop from the first point, with threads or not. Many
  * scattered fixed points open with darts too, inserted at the hand-over
@@ -540,12 +543,17 @@ PDS_API int pds_set_fixed(pds_sampler *s, const double *xy, const double *cleara
  * never called pds_set_threads, which runs the single-thread process of 1.4
  * (the faster one on one core). With pds_set_fixed
  * and one radius the parallel process runs too, its darts kept out of the
- * clearances. Variable
- * radii, with fixed points or not (a field on the torus too), run on one
- * thread either way, as do a polygon spread thin over its box (islands far
- * apart), an outline too large to raster over the dart grid, and fixed
- * points whose clearances' boxes together span many times the domain's box
- * (the Jones loop alone, with threads or not); polygons and masks had the
+ * clearances. A radius
+ * field in a rectangle, polygon or mask, with fixed points or not, opens
+ * with the single-thread process's layered dart grids and then goes on
+ * with darts in the free regions, drawn by the threads together, each point
+ * keeping the later ones out of its own disk (since 1.13; before, the
+ * single-thread process's points). A field on the torus or with rmax over
+ * 8 rmin runs on one thread either way, as do a polygon spread thin over
+ * its box (islands far apart), an outline too large to raster over the
+ * dart grid, and fixed points whose clearances' boxes together span many
+ * times the domain's box (the Jones loop alone, with threads or not);
+ * polygons and masks had the
  * single-thread process's points before 1.8, the torus and fixed points
  * before 1.9 (fixed points had other points with threads in 1.9, whose
  * hand-over inserted every point one by one, and without threads before
@@ -555,7 +563,8 @@ PDS_API int pds_set_fixed(pds_sampler *s, const double *xy, const double *cleara
  * between the calls of one run (from the next call that adds points).
  * Threads start and end inside the calls that add points; the progress
  * callback and the radius function are called only from the caller's
- * thread. A thread that cannot be started is done without: the run goes on
+ * thread (the function at a point when its dart is accepted, up to one
+ * epoch of darts before the call that returns it). A thread that cannot be started is done without: the run goes on
  * with fewer, and the same points.
  * Returns 0, PDS_EINVAL (s NULL, n > 1024), PDS_ESTATE (points exist already
  * from the single-thread process; called from inside the progress callback

@@ -49,7 +49,9 @@ export interface SamplerOptions {
   count?: number;
   /** A variable radius from a map (radius null). */
   radiusMap?: RadiusMap;
-  /** A variable radius from a function, with the bounds of its values (radius null). */
+  /** A variable radius from a function, with the bounds of its values (radius null). Called once
+   *  per point; with threads, when its dart is accepted, up to one epoch of darts before run()
+   *  returns the point. */
   radiusFn?: (x: number, y: number) => number;
   rmin?: number;
   rmax?: number;

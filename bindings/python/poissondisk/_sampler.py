@@ -74,8 +74,11 @@ class Sampler:
             threads (0: one per core, at most 1024, else ValueError), whose
             points do not depend on the count but differ from the default's.
             The one-radius rectangle, polygon, mask or torus (with count,
-            refine or fixed too) uses threads; radius maps give the same
-            points either way. See the `threads` property.
+            refine or fixed too) uses threads, and so does a radius map
+            (library 1.13; before, the single-thread process's points),
+            except with periodic or its largest radius over 8 times its
+            smallest, where it gives the same points either way. See the
+            `threads` property.
         radius_map: a variable radius (library 1.3): a 2-D array-like of
             shape (h, w) of radii, each finite and > 0, spread over the
             domain: row 0 along y0, column 0 along x0, bilinear between
@@ -83,14 +86,19 @@ class Sampler:
         radius_fn, rmin, rmax: a variable radius from a callable
             fn(x, y) -> float, with the bounds of its values, both
             required, finite, 0 < rmin <= rmax. It is called once per
-            point as it is placed and, with a progress callback, 4096 times
-            over a grid at the first run() for the progress estimate (not
-            at all when rmin == rmax). A value outside [rmin, rmax] or not
-            finite stops run()/step() with InvalidArgumentError before the
-            point is added; an exception raised by fn stops it too and
-            comes out of run()/step(). Either way the points so far stay
-            and the sampler can go on. fn may read the sampler but not
-            change or close it (StateError).
+            point as it is placed (with threads, when its dart is
+            accepted, up to one epoch of darts before run() returns the
+            point; a refine() in between drops such darts) and, with a
+            progress callback, 4096 times over a grid at the first run()
+            for the progress estimate (not at all when rmin == rmax). A
+            value outside [rmin, rmax] or not finite stops run()/step()
+            with InvalidArgumentError before the point is added; an
+            exception raised by fn stops it too and comes out of
+            run()/step(). Either way the points so far stay and the
+            sampler can go on (with threads, the darts of that epoch
+            accepted before it are not added; the next call meets the same
+            value again). fn may read the sampler but not change or close
+            it (StateError).
 
     With a field, point i gets the radius r_i = r(p_i) where it lands, and
     each later point keeps out of its closed disk: |p_j - p_i| >= r_i for
