@@ -470,6 +470,7 @@ check-alloc: $(ALLOC_BIN)
 	$(ALLOC_BIN) fixed-large
 	$(ALLOC_BIN) fixed-one-thread
 	$(ALLOC_BIN) fixed-large-one-thread
+	$(ALLOC_BIN) field-threads
 	$(ALLOC_BIN)
 
 # ---- benchmark -----------------------------------------------------------------------

@@ -26,7 +26,9 @@
  * torus, "fixed-threads" in the star with fixed points, "fixed-large" the
  * same with points enough for the weighted mesh built whole;
  * "fixed-one-thread" and "fixed-large-one-thread" the same two without
- * threads (the single-thread dart stage holds the fixed points). The default,
+ * threads (the single-thread dart stage holds the fixed points);
+ * "field-threads" the star with the radius function on 2 threads (the
+ * field's darts go on in the free regions, each asked for its radius). The default,
  * ~7000-point sequence tries every k in calls that make at most 3 * SPAN
  * allocations; in larger ones (pds_verify's exact arithmetic makes tens of
  * thousands) the first SPAN, the last SPAN and SPAN spread evenly in
@@ -67,7 +69,7 @@ struct config {
     int periodic; /* the torus: copies allocate as points are added */
     int shape;    /* the domain: the rectangle, a polygon, a mask, a polygon with a field */
 };
-enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS, POLYGON_THREADS, FIXED_THREADS, FIXED };
+enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS, POLYGON_THREADS, FIXED_THREADS, FIXED, FIELD_THREADS };
 static const struct config kSmall = {"small", 0.05, 0.035, 100, 50, 1, 0, RECTANGLE};
 static const struct config kLarge = {"large", 0.01, 0.007, 2000, 500, 0, 0, RECTANGLE};
 static const struct config kTorus = {"torus", 0.05, 0.035, 100, 50, 1, 1, RECTANGLE};
@@ -99,6 +101,8 @@ static const struct config kFixedLarge = {"fixed-large", 0.0055, 0.0045, 3000, 5
  * for the whole build at the hand-over and at the refine, sampled. */
 static const struct config kFixedOne = {"fixed-one-thread", 0.025, 0.02, 300, 100, 1, 0, FIXED};
 static const struct config kFixedLargeOne = {"fixed-large-one-thread", 0.0055, 0.0045, 3000, 500, 0, 0, FIXED};
+/* The star with the field on 2 threads, every allocation tried. */
+static const struct config kFieldThreads = {"field-threads", 0.06, 0.045, 100, 50, 1, 0, FIELD_THREADS};
 static const struct config *cfg = &kLarge;
 #define RADIUS (cfg->radius)
 #define REFINED (cfg->refined)
@@ -392,11 +396,12 @@ static void do_shape(struct trial *t, pds_sampler *s)
 {
     int rc = 0;
     if (cfg->shape == POLYGON || cfg->shape == POLYGON_FIELD || cfg->shape == POLYGON_THREADS ||
-        cfg->shape == FIXED_THREADS || cfg->shape == FIXED)
+        cfg->shape == FIXED_THREADS || cfg->shape == FIXED || cfg->shape == FIELD_THREADS)
         rc = set_domain_part(t, s, 0);
     if (cfg->shape == MASK) rc = set_domain_part(t, s, 1);
-    if (cfg->shape == POLYGON_FIELD && rc == 0) rc = set_domain_part(t, s, 2);
-    if ((cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS) && rc == 0)
+    if ((cfg->shape == POLYGON_FIELD || cfg->shape == FIELD_THREADS) && rc == 0) rc = set_domain_part(t, s, 2);
+    if ((cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS ||
+         cfg->shape == FIELD_THREADS) && rc == 0)
         rc = set_domain_part(t, s, 3);
     if ((cfg->shape == FIXED_THREADS || cfg->shape == FIXED) && rc == 0) rc = set_domain_part(t, s, 4);
     outcome(t, s, rc, pds_free_area(s), "pds_set_polygon/mask");
@@ -585,12 +590,15 @@ int main(int argc, char **argv)
         cfg = &kFixedOne;
     else if (argc > 1 && strcmp(argv[1], "fixed-large-one-thread") == 0)
         cfg = &kFixedLargeOne;
+    else if (argc > 1 && strcmp(argv[1], "field-threads") == 0)
+        cfg = &kFieldThreads;
     else if (argc > 1) {
         printf("usage: alloc_fail [small|torus|polygon|mask|field|threads|polygon-threads|torus-threads|fixed-threads|"
-               "fixed-large|fixed-one-thread|fixed-large-one-thread]\n");
+               "fixed-large|fixed-one-thread|fixed-large-one-thread|field-threads]\n");
         return 2;
     }
-    if (cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS)
+    if (cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS ||
+        cfg->shape == FIELD_THREADS)
         warm_up_threads();
     all = cfg->every_k || (env != NULL && env[0] != '\0' && strcmp(env, "0") != 0);
     printf("alloc-fail: sequence \"%s\": R = %g, refined to %g\n", cfg->name, cfg->radius, cfg->refined);
