@@ -113,8 +113,8 @@ bool JonesLoop<Space, Rule>::draw_region_epoch() {
     };
     const RuleField field(*this);
     regions_.decide_and_commit(
-        nblocks, regions_.has_values() ? rule_.rmax() : r_,
-        [&](SiteIndex site, double w) { tree_.set_leaf_only(site, w); }, regions_.has_values() ? &field : nullptr);
+        nblocks, [&](SiteIndex site, double w) { tree_.set_leaf_only(site, w); },
+        regions_.has_values() ? &field : nullptr);
     return true;
 }
 

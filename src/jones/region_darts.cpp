@@ -19,6 +19,7 @@ void RegionDarts::start(std::uint64_t salted_seed, std::size_t epoch, const Box&
     on_ = true;
     salted_ = salted_seed;
     epoch_ = epoch;
+    r_ = r;
     torus_ = torus;
     varying_ = varying;
     // The grid is allocated at the first decision (the hand-over allocates
@@ -49,25 +50,28 @@ std::size_t RegionDarts::row_of(double y) const {
     return std::min(grid_rows_ - 1, static_cast<std::size_t>(std::max(0.0, std::floor((y - grid_y0_) / side_y_))));
 }
 
-bool RegionDarts::free_in_plane(std::uint32_t i, double r) const {
+template <bool kVarying>
+bool RegionDarts::free_in_plane(std::uint32_t i) const {
     // With a field, r is the largest radius, and each accepted dart holds
     // others out of its own disk.
     constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    const double r = r_;
     const Point& p = darts_[i].p;
     const std::size_t x0 = column_of(p.x - r), x1 = column_of(p.x + r);
     const std::size_t y0 = row_of(p.y - r), y1 = row_of(p.y + r);
     for (std::size_t y = y0; y <= y1; ++y)
         for (std::size_t x = x0; x <= x1; ++x)
             for (std::uint32_t j = grid_[y * grid_columns_ + x]; j != kNone; j = chain_[j])
-                if (compare_distance(p, darts_[j].p, varying_ ? reach_[j] : r) < 0) return false;
+                if (compare_distance(p, darts_[j].p, kVarying ? reach_[j] : r) < 0) return false;
     return true;
 }
 
-bool RegionDarts::free_on_torus(std::uint32_t i, double r) const {
+bool RegionDarts::free_on_torus(std::uint32_t i) const {
     // The cells (wrapped) that the disk around p meets, widened by far more
     // than the rounding of a cell index, so the cell of every copy within r
     // is among them; at most three along an axis, as a cell is 2r wide.
     constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    const double r = r_;
     const Point p = torus_.wrap(darts_[i].p);
     const auto cells = [](double v, double v0, double side, std::size_t n, double reach, std::size_t* out) {
         const double slack = side * 0x1.0p-30;
@@ -140,13 +144,14 @@ std::vector<RegionDarts::Block>& RegionDarts::blocks(std::size_t n) {
     return blocks_;
 }
 
-void RegionDarts::decide(std::size_t nblocks, double r, const DartField* field) {
+void RegionDarts::decide(std::size_t nblocks, const DartField* field) {
     if (varying_ != (field != nullptr)) throw std::logic_error("region darts decided without their field");
     // The grid of accepted darts: cells of side 2r (at least), so the disk
     // of radius r around a dart meets at most 2 x 2 of them in the plane
     // (two words in each of two rows). Its cells are emptied of the last
     // epoch's darts first.
     constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    const double r = r_;
     for (const Dart& d : pending_) grid_[cell_of(d.p)] = kNone;
     // Everything is allocated before pending_ changes: std::bad_alloc here
     // leaves the points that were pending (none: an epoch starts when they
@@ -188,7 +193,7 @@ void RegionDarts::decide(std::size_t nblocks, double r, const DartField* field) 
     for (std::uint32_t i = 0; i < n; ++i) {
         if (i + kAhead < n) prefetch_rows(i + kAhead);
         if (varying_) {
-            if (!free_in_plane(i, r)) continue;
+            if (!free_in_plane<true>(i)) continue;
             // The field at the dart that becomes the next point (it may
             // refuse: the epoch is then left undecided).
             double value = 0.0;
@@ -200,7 +205,7 @@ void RegionDarts::decide(std::size_t nblocks, double r, const DartField* field) 
             }
             reach_[i] = field->radius_of(value);
             values_.push_back(value);
-        } else if (!(torus_.on() ? free_on_torus(i, r) : free_in_plane(i, r))) {
+        } else if (!(torus_.on() ? free_on_torus(i) : free_in_plane<false>(i))) {
             continue;
         }
         std::uint32_t& head = grid_[cell_of(darts_[i].p)];

@@ -137,14 +137,13 @@ public:
     void set_listed(std::size_t sites) { listed_ = sites; }
     std::vector<Block>& blocks(std::size_t n);
     // Joins the blocks' darts in block order, decides them greedily by time
-    // (r: the radius, or a field's largest) and makes the accepted ones
-    // pending; then commits the bounds through set(site, weight). Returns
-    // the number accepted. With a field (required iff started varying): if
-    // it refuses a dart, nothing is committed and the exception goes on.
+    // (by the radius given to start) and makes the accepted ones pending;
+    // then commits the bounds through set(site, weight). Returns the number
+    // accepted. With a field (required iff started varying): if it refuses
+    // a dart, nothing is committed and the exception goes on.
     template <class SetBound>
-    std::size_t decide_and_commit(std::size_t nblocks, double r, const SetBound& set,
-                                  const DartField* field = nullptr) {
-        decide(nblocks, r, field);
+    std::size_t decide_and_commit(std::size_t nblocks, const SetBound& set, const DartField* field = nullptr) {
+        decide(nblocks, field);
         for (std::size_t b = 0; b < nblocks; ++b)
             for (const Bound& x : blocks_[b].bounds) set(x.site, x.weight);
         ++epoch_;
@@ -159,14 +158,16 @@ public:
     const Stats& stats() const { return stats_; }
 
 private:
-    void decide(std::size_t nblocks, double r, const DartField* field);
+    void decide(std::size_t nblocks, const DartField* field);
     // Dart i is free of the accepted darts in the grid (the plane's, and
     // the torus's, whose cells wrap around and divide the periods); with a
-    // field, of their own disks (reach_) within the largest radius r.
-    bool free_in_plane(std::uint32_t i, double r) const;
+    // field (kVarying), of their own disks (reach_) within the largest
+    // radius r_. A template, so one radius pays no test per comparison.
+    template <bool kVarying>
+    bool free_in_plane(std::uint32_t i) const;
     // Takes back the accepted darts of an epoch left undecided.
     void undo_decision();
-    bool free_on_torus(std::uint32_t i, double r) const;
+    bool free_on_torus(std::uint32_t i) const;
     std::size_t cell_of(const Point& q) const;  // the grid cell holding q (wrapped on the torus)
     std::size_t column_of(double x) const;
     std::size_t row_of(double y) const;
@@ -176,6 +177,7 @@ private:
     double darts_per_cell_ = kDartsPerCell;
     std::uint64_t salted_ = 0;
     std::size_t epoch_ = 0;
+    double r_ = 0;                   // the decision's radius (a field's largest)
     std::size_t listed_ = 0;         // sites 0 .. listed_-1 were put on the active list
     std::vector<SiteIndex> active_;  // sites whose bound may be positive, in order
     std::vector<Block> blocks_;

@@ -83,20 +83,28 @@ std::vector<pds::RegionDarts::Block>& fill_blocks(pds::RegionDarts& rd, const st
 
 // Hands `darts` to `rd` as fill_blocks does, decides them (with `field`, if
 // any) and returns what became pending.
-std::vector<Dart> decide(pds::RegionDarts& rd, const std::vector<Dart>& darts, std::size_t nblocks, double r,
+std::vector<Dart> decide(pds::RegionDarts& rd, const std::vector<Dart>& darts, std::size_t nblocks,
                          const pds::DartField* field = nullptr) {
     fill_blocks(rd, darts, nblocks);
-    rd.decide_and_commit(nblocks, r, [](pds::SiteIndex, double) {}, field);
+    rd.decide_and_commit(nblocks, [](pds::SiteIndex, double) {}, field);
     std::vector<Dart> out;
     for (; rd.has_pending(); rd.pop()) out.push_back(rd.pending());
     return out;
+}
+
+// The gradient field's largest radius, over the unit square.
+const double kFieldRmax = GradientField::radius_at({1, 0});
+
+// Starts `rd` in the unit square for the gradient field, from `epoch`.
+void start_with_field(pds::RegionDarts& rd, std::size_t epoch) {
+    rd.start(1, epoch, pds::Box{0, 0, 1, 1}, kFieldRmax, pds::Torus{}, true);
 }
 
 // One epoch of `darts` in the unit square.
 std::vector<Dart> decide_once(const std::vector<Dart>& darts, std::size_t nblocks, double r) {
     pds::RegionDarts rd;
     rd.start(1, 0, pds::Box{0, 0, 1, 1}, r);
-    return decide(rd, darts, nblocks, r);
+    return decide(rd, darts, nblocks);
 }
 
 void assert_same_darts(const std::vector<Dart>& got, const std::vector<Dart>& want, const char* what) {
@@ -130,7 +138,7 @@ START_TEST(decision_is_the_greedy_set_in_order_of_time) {
     pds::Rng rng(17);
     for (int epoch = 0; epoch < 4; ++epoch) {
         const std::vector<Dart> darts = random_darts(rng, box, 1500);
-        const std::vector<Dart> got = decide(rd, darts, 1 + static_cast<std::size_t>(epoch) * 3, r);
+        const std::vector<Dart> got = decide(rd, darts, 1 + static_cast<std::size_t>(epoch) * 3);
         assert_same_darts(got, greedy(darts, r), "epoch");
         ck_assert_uint_gt(got.size(), 50);
         ck_assert_uint_lt(got.size(), 1000);
@@ -202,16 +210,15 @@ START_TEST(field_decision_keeps_later_darts_out_of_each_disk) {
     // the largest or the smallest radius gives other sets, so the test
     // sees which radius is used.
     const pds::Box box{0, 0, 1, 1};
-    const double rmax = GradientField::radius_at({1, 0});
     pds::RegionDarts rd;
-    rd.start(1, 0, box, rmax, pds::Torus{}, true);
+    start_with_field(rd, 0);
     ck_assert(rd.has_values());
     pds::Rng rng(23);
     for (int epoch = 0; epoch < 3; ++epoch) {
         const std::vector<Dart> darts = random_darts(rng, box, 2000);
         GradientField field;
         fill_blocks(rd, darts, 4);
-        rd.decide_and_commit(4, rmax, [](pds::SiteIndex, double) {}, &field);
+        rd.decide_and_commit(4, [](pds::SiteIndex, double) {}, &field);
         std::vector<Dart> got;
         std::vector<double> values;
         for (; rd.has_pending(); rd.pop()) {
@@ -226,7 +233,7 @@ START_TEST(field_decision_keeps_later_darts_out_of_each_disk) {
             ck_assert(field.asked[i].x == got[i].p.x && field.asked[i].y == got[i].p.y);
             ck_assert(values[i] == GradientField::radius_at(got[i].p));
         }
-        const auto by_rmax = greedy_by(darts, [&](const pds::Point&) { return rmax; });
+        const auto by_rmax = greedy_by(darts, [&](const pds::Point&) { return kFieldRmax; });
         const auto by_rmin = greedy_by(darts, [&](const pds::Point&) { return 0.02; });
         ck_assert_uint_lt(by_rmax.size(), got.size());
         ck_assert_uint_gt(by_rmin.size(), got.size());
@@ -238,19 +245,17 @@ START_TEST(refused_field_value_leaves_the_epoch_undecided) {
     // The field refuses its sixth call: nothing is pending, no bound is
     // committed, the epoch is the same; deciding the same darts again
     // gives the greedy set (the grid kept none of the undone darts).
-    const pds::Box box{0, 0, 1, 1};
-    const double rmax = GradientField::radius_at({1, 0});
     pds::RegionDarts rd;
-    rd.start(1, 3, box, rmax, pds::Torus{}, true);
+    start_with_field(rd, 3);
     pds::Rng rng(29);
-    const std::vector<Dart> darts = random_darts(rng, box, 800);
+    const std::vector<Dart> darts = random_darts(rng, pds::Box{0, 0, 1, 1}, 800);
     GradientField refusing;
     refusing.refuse_at = 5;
     fill_blocks(rd, darts, 2)[0].bounds.push_back(pds::RegionDarts::Bound{7, 0.5});
     std::size_t committed = 0;
     bool refused = false;
     try {
-        rd.decide_and_commit(2, rmax, [&](pds::SiteIndex, double) { ++committed; }, &refusing);
+        rd.decide_and_commit(2, [&](pds::SiteIndex, double) { ++committed; }, &refusing);
     } catch (const std::range_error&) {
         refused = true;
     }
@@ -260,7 +265,7 @@ START_TEST(refused_field_value_leaves_the_epoch_undecided) {
     ck_assert_uint_eq(rd.epoch(), 3);
     ck_assert_uint_eq(rd.stats().epochs, 0);
     GradientField field;
-    assert_same_darts(decide(rd, darts, 2, rmax, &field), greedy_by(darts, GradientField::radius_at), "again");
+    assert_same_darts(decide(rd, darts, 2, &field), greedy_by(darts, GradientField::radius_at), "again");
     ck_assert_uint_eq(rd.epoch(), 4);
 }
 END_TEST
