@@ -230,7 +230,7 @@ using DartStage = DartStageOf<DartGrid<DenseCells>>;
 // One radius where the whole grid would not fit the address space: the
 // same decisions, on a grid that keeps only its taken cells.
 using SparseDartStage = DartStageOf<DartGrid<SparseCells>>;
-// A varying radius, on the plane.
+// A varying radius, on the plane or the torus.
 using FieldDartStage = DartStageOf<LayeredGrid>;
 
 extern template class DartStageOf<DartGrid<DenseCells>>;

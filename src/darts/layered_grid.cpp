@@ -21,7 +21,8 @@ std::uint64_t cell_word(std::uint64_t sx, std::uint64_t sy, double r) {
 
 }  // namespace
 
-LayeredGrid::LayeredGrid(const Box& domain, const PointRadii& radii) : box_(domain), radii_(radii) {
+LayeredGrid::LayeredGrid(const Box& domain, const PointRadii& radii, const Torus& torus)
+    : box_(domain), radii_(radii), torus_(torus) {
     using namespace darts;
     const double rmin = radii.rmin(), rmax = radii.rmax();
     for (double low = rmin;; low *= kLayerRatio) {
@@ -132,6 +133,27 @@ void LayeredGrid::record(const Dart& d, std::uint32_t index, double value) {
     L.index[cell] = index;
     mark_layer_near(p, k);
     covered_.cover_disk(p, r);
+}
+
+bool LayeredGrid::copies_free(const Point& p, const std::vector<Point>& points,
+                              const std::vector<double>& values) const {
+    // A point's disk reaches at most the largest radius: a copy farther from
+    // the domain meets none (the slack far above the rounding of the bounds).
+    const double reach = layers_.back().high * (1.0 + 0x1.0p-20);
+    for (int sy = -1; sy <= 1; ++sy)
+        for (int sx = -1; sx <= 1; ++sx) {
+            if (sx == 0 && sy == 0) continue;
+            const Point q = torus_.shifted(p, sx, sy);
+            if (q.x < box_.x0 - reach || q.x > box_.x1 + reach || q.y < box_.y0 - reach || q.y > box_.y1 + reach)
+                continue;
+            // q's own cell is clamped to the grid's edge (its block then
+            // reaches into the padding, which is empty): judged by distance.
+            for (std::uint32_t m = tiles_[tile_of(q)]; m != 0; m &= m - 1) {
+                const Layer& L = layers_[static_cast<std::size_t>(__builtin_ctz(m))];
+                if (!free_in<false>(L, block_of(L, q), q, points, values)) return false;
+            }
+        }
+    return true;
 }
 
 void LayeredGrid::release() {

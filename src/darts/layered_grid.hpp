@@ -22,8 +22,13 @@
 // rounding leaves in doubt read the point's index from a parallel array and
 // go to the exact predicate with the exact point and radius.
 //
-// The plane only: on the torus a varying field runs the Jones loop alone
-// (opening_stage.cpp).
+// On the torus a point also stands for its copies a period away. It is
+// recorded once, in the fundamental domain; a dart within the largest
+// radius of the domain's edge is tested again at its own copies there (the
+// darts are snapped, so a copy is exact: torus.hpp), which is the same as
+// testing the dart against the points' copies. The copies' tests go through
+// the same blocks, clamped to the grid's edge, with no shortcut by the own
+// cell: every point they meet is judged by its distance.
 #ifndef PDS_LAYERED_GRID_HPP
 #define PDS_LAYERED_GRID_HPP
 
@@ -112,9 +117,10 @@ public:
         bool inside;  // drawn in a raster cell wholly inside keep_to's polygon
     };
 
-    // domain and radii in the internal frame. Allocates the grids (zeroed:
-    // address space until points land); throws std::bad_alloc.
-    LayeredGrid(const Box& domain, const PointRadii& radii);
+    // domain and radii in the internal frame; on the torus (torus.on()) the
+    // domain is its fundamental one. Allocates the grids (zeroed: address
+    // space until points land); throws std::bad_alloc.
+    LayeredGrid(const Box& domain, const PointRadii& radii, const Torus& torus = Torus{});
 
     void reserve(std::size_t) {}
     bool has_room_for(std::size_t) const { return true; }
@@ -159,7 +165,7 @@ public:
     // The hand-over's curve over the finest layer's cells.
     CurveOrder curve(const Box& domain) const;
     double radius() const { return radii_.rmax(); }
-    Torus torus() const { return Torus{}; }
+    const Torus& torus() const { return torus_; }
     const PointRadii* radii() const { return &radii_; }
 
     // Internals, for tests.
@@ -176,12 +182,18 @@ private:
     // Records that layer `layer` has a point at p, in the tiles its disk may reach.
     void mark_layer_near(const Point& p, std::size_t layer);
     // Whether p (whose block in L is b) is outside the disks of layer L's
-    // points; false at once when p's own cell is taken.
+    // points; with kOwnCell (b's own cell is p's), false at once when that
+    // cell is taken.
+    template <bool kOwnCell = true>
     bool free_in(const Layer& L, const Block& b, const Point& p, const std::vector<Point>& points,
                  const std::vector<double>& values) const;
+    // On the torus: whether p's copies a period away (those within the
+    // largest radius of the domain) are outside every disk.
+    bool copies_free(const Point& p, const std::vector<Point>& points, const std::vector<double>& values) const;
 
     Box box_;
     PointRadii radii_;
+    Torus torus_;  // off in the plane
     std::vector<Layer> layers_;
     double tile_side_;
     std::size_t tile_cols_, tile_rows_;
@@ -228,10 +240,11 @@ inline LayeredGrid::Block LayeredGrid::block_of(const Layer& L, const Point& p) 
     return b;
 }
 
+template <bool kOwnCell>
 inline bool LayeredGrid::free_in(const Layer& L, const Block& b, const Point& p, const std::vector<Point>& points,
                                  const std::vector<double>& values) const {
     // A taken cell is covered whole: its point's radius is over its diagonal.
-    if (L.cells[L.at(b.x, b.y)] != 0) return false;
+    if (kOwnCell && L.cells[L.at(b.x, b.y)] != 0) return false;
     // Whether the point in the cell i rows and j columns from the dart's (if
     // there is one) lies within its radius.
     const auto covers = [&](int i, int j) {
@@ -252,6 +265,7 @@ inline bool LayeredGrid::free_in(const Layer& L, const Block& b, const Point& p,
     };
     // A layer's radii span over one cell, so the block holds the eight
     // around the dart's own cell (grid_arithmetic.hpp reads those first).
+    if (!kOwnCell && covers(0, 0)) return false;
     return !block_covers(b.x_lo, b.x_hi, b.y_lo, b.y_hi, covers);
 }
 
@@ -265,7 +279,7 @@ inline bool LayeredGrid::is_free(const Dart& d, const std::vector<Point>& points
         const Layer& L = layers_[k];
         if (!free_in(L, k == d.block_layer ? d.block : block_of(L, d.p), d.p, points, values)) return false;
     }
-    return true;
+    return !torus_.on() || copies_free(d.p, points, values);
 }
 
 inline void LayeredGrid::throw_darts(Dart* batch, std::size_t n, Rng& rng) const {
@@ -280,6 +294,10 @@ inline void LayeredGrid::throw_darts(Dart* batch, std::size_t n, Rng& rng) const
             const PolygonRaster::Dart r = raster_.draw(rng);
             d.p = r.p;
             d.inside = r.inside;
+        } else if (torus_.on()) {
+            // On the torus grid, inside the fundamental domain (torus.hpp).
+            const double u = rng.next_double(), v = rng.next_double();
+            d.p = torus_.wrap(Point{Torus::snap(torus_.x0 + u * torus_.px), Torus::snap(torus_.y0 + v * torus_.py)});
         } else {
             d.p.x = box_.x0 + rng.next_double() * w;
             d.p.y = box_.y0 + rng.next_double() * h;

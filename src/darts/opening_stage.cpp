@@ -38,18 +38,14 @@ bool spread_thin(const Frame& frame, double r, double count_bound) {
 Opening opening_for(const Frame& frame, double count_bound, const RadiusField* field, bool space_time) {
     const bool fits = count_bound <= static_cast<double>(Frame::max_points());
     if (field) {
-        // A grid per layer of radii (layered_grid.hpp), in the plane, while
-        // the layers stay few and a maximal pattern fits the index. On the
-        // torus the loop runs alone: the copies of a point would go into
-        // every layer's padding, and the torus's mesh widens its margin as
-        // the points come (jones_stage.hpp).
-        // So does a polygon whose layers' grids, spanning its box, would
-        // have over kSparseFrom cells for each point it can hold (islands
-        // far apart): the loop's memory follows the points.
+        // A grid per layer of radii (layered_grid.hpp), in the plane or on
+        // the torus, while the layers stay few and a maximal pattern fits the
+        // index. The loop runs alone in a polygon whose layers' grids,
+        // spanning its box, would have over kSparseFrom cells for each point
+        // it can hold (islands far apart): the loop's memory follows the points.
         const bool few_layers = field->rmax() <= LayeredGrid::kMaxRatio * field->rmin();
         const double rmin = frame.r() * (field->rmin() / field->rmax());
-        return fits && few_layers && !frame.torus().on() && !spread_thin(frame, rmin, count_bound) ? Opening::field
-                                                                                                   : Opening::none;
+        return fits && few_layers && !spread_thin(frame, rmin, count_bound) ? Opening::field : Opening::none;
     }
     // One radius: a dense grid while a maximal pattern fits the index (its
     // address space then stays within a few words a point). Beyond, only
@@ -90,7 +86,8 @@ std::unique_ptr<OpeningStage> make_opening_stage(const Frame& frame, double coun
     case Opening::sparse:
         return std::make_unique<SparseDartStage>(frame.domain(), frame.shared_polygon(), frame.r(), frame.torus());
     case Opening::field:
-        return std::make_unique<FieldDartStage>(frame.domain(), frame.shared_polygon(), PointRadii(*field, frame));
+        return std::make_unique<FieldDartStage>(frame.domain(), frame.shared_polygon(), PointRadii(*field, frame),
+                                                frame.torus());
     case Opening::none:
         break;
     }

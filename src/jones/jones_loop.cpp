@@ -50,7 +50,7 @@ bool JonesLoop<Space, Rule>::has_room_for(std::size_t points) const {
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::adopt(const std::vector<Point>& points, const std::uint32_t* order,
                                    const std::vector<double>* values, const Poll& poll, MeshBuild build) {
-    if (Rule::kWeighted != (values != nullptr) || (values && Space::kPeriodic))
+    if (Rule::kWeighted != (values != nullptr))
         throw std::logic_error("hand-over without the field's values");
     if (count() != 0 || (!Space::kPeriodic && !has_room_for(points.size())))
         throw std::logic_error("hand-over without room");

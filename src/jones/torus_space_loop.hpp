@@ -82,26 +82,28 @@ VertexIndex TorusSpace::insert_with_copies(Loop& loop, const Point& p, VertexInd
 
 template <class Loop>
 void TorusSpace::adopt(Loop& loop, const std::vector<Point>& points, const std::uint32_t* order,
-                       const std::vector<double>* /*values: none on the torus*/, const Poll& poll,
-                       MeshBuild build) {
+                       const std::vector<double>* values, const Poll& poll, MeshBuild build) {
     // The points along the curve (or built whole, side by side, when the
     // stage asks for it and the mesh is not weighted), then their copies in
     // the same order (so each offset's walks stay short); then the margin
     // is settled. Room first, so a failure changes nothing; the margin is
-    // settled by the first next() (settle()), which may allocate.
+    // settled by the first next() (settle()), which may allocate. A field's
+    // points come with their values: each is inserted with its radius.
     const std::size_t n = points.size();
     std::size_t copies = 0;
     for (std::size_t i = 0; i < n; ++i)
         copies_.for_each_copy(points[order[i]], copies_.margin(), -1.0, [&](const Point&, int, int) { ++copies; });
     make_room_for_copies(loop, n + copies);
+    if (values) loop.rule_.assign_values(*values);  // within the reserved room
     const auto adopted = [&](std::uint32_t k, VertexIndex v) {
         record_vertex(loop, v);
         loop.order_.set(k, v);
     };
-    if (build != MeshBuild::whole || !loop.dt_.build_whole(points, order, n, loop.threads_, adopted)) {
+    if (values || build != MeshBuild::whole || !loop.dt_.build_whole(points, order, n, loop.threads_, adopted)) {
         VertexIndex previous = 0;
         for (std::size_t i = 0; i < n; ++i) {
-            previous = insert_vertex(loop, points[order[i]], previous);
+            const double radius = values ? loop.rule_.radius_of((*values)[order[i]]) : 0.0;
+            previous = insert_vertex(loop, points[order[i]], previous, std::nullopt, radius);
             loop.order_.set(order[i], previous);
             if ((i + 1) % Poll::kEvery == 0) poll();
         }

@@ -2,7 +2,8 @@
 // sampler: its law against saturated dart throwing under the same rule
 // (law_compare.hpp, dart_throwing.hpp) for a gradient and a step field, also
 // with threads (the free regions' darts, in epochs of the default length and
-// 40 times as long); the rule and
+// 40 times as long) and on the torus (its dart stage, and the Jones loop
+// alone); the rule and
 // maximality by brute force; the density along a linear field; and equal
 // radii through the weighted path giving the plain sampler's points.
 #include <cmath>
@@ -26,11 +27,11 @@ double step(void*, double x, double) { return x < 0.5 ? 0.04 : 0.1; }
 using Pattern = oracle::Pattern;
 using law::run_to_the_end;
 
-// Over the unit square (its dart stage and the Jones loop both placing a
-// real share of the points), or the unit torus (which has no dart stage for
-// a varying field: the Jones loop alone).
+// Over the unit square or the unit torus, its dart stage and the Jones loop
+// both placing a real share of the points (or, with `stages`, the loop alone).
 void compare_field_laws(oracle::Field field, double rmin, double rmax, int runs, bool periodic = false,
-                        unsigned threads = 0, double region_darts_per_cell = 0) {
+                        unsigned threads = 0, double region_darts_per_cell = 0,
+                        law::Stages stages = law::Stages::darts_then_jones) {
     law::Config c;
     c.periodic = periodic;
     c.threads = threads;
@@ -39,7 +40,7 @@ void compare_field_laws(oracle::Field field, double rmin, double rmax, int runs,
     c.rmin = rmin;
     c.rmax = rmax;
     c.runs = runs;
-    c.stages = periodic ? law::Stages::no_dart_stage : law::Stages::darts_then_jones;
+    c.stages = stages;
     law::compare(c);
 }
 
@@ -127,8 +128,14 @@ START_TEST(law_of_a_gradient_field_in_a_polygon_on_threads) {
 END_TEST
 
 START_TEST(law_of_a_step_field_on_the_torus) {
-    // The step wraps too: x = 0 == 1 is a second step.
+    // The step wraps too: x = 0 == 1 is a second step, which the dart
+    // stage's layers meet across the seam.
     compare_field_laws(step, 0.04, 0.1, test_light() ? 30 : 2000, true);
+}
+END_TEST
+
+START_TEST(law_of_a_step_field_on_the_torus_by_the_jones_loop_alone) {
+    compare_field_laws(step, 0.04, 0.1, test_light() ? 30 : 2000, true, 0, 0, law::Stages::jones_only);
 }
 END_TEST
 
@@ -237,6 +244,7 @@ Suite* field_suite() {
     tcase_add_test(t, law_of_a_step_field_in_long_region_epochs);
     tcase_add_test(t, law_of_a_gradient_field_in_a_polygon_on_threads);
     tcase_add_test(t, law_of_a_step_field_on_the_torus);
+    tcase_add_test(t, law_of_a_step_field_on_the_torus_by_the_jones_loop_alone);
     tcase_add_test(t, rule_and_maximality_by_brute_force);
     tcase_add_test(t, density_follows_a_linear_field);
     tcase_add_test(t, equal_radii_through_the_weighted_path_are_the_plain_points);

@@ -1,8 +1,9 @@
 // test_field_dart_stage.cpp - the dart stage of a varying radius
 // (dart_stage.hpp over layered_grid.hpp): every pair of its points keeps the
-// field's rule, checked exactly; the cells its bitmap marks lie inside their
-// disk (covered_bitmap.hpp); and its hand-over gives the Jones stage the same
-// points and values, which then ends maximal.
+// field's rule, checked exactly, in the plane and across the torus's seams;
+// the cells its bitmap marks lie inside their disk (covered_bitmap.hpp); and
+// its hand-over gives the Jones stage the same points and values, which then
+// ends maximal, in the plane and on the torus.
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -26,9 +27,9 @@ struct Field {
     pds::RadiusField field;
     pds::Frame frame;
     pds::PointRadii radii;
-    Field(pds::RadiusField::Function fn, double* r0, double ratio)
+    Field(pds::RadiusField::Function fn, double* r0, double ratio, const pds::Box& box = pds::Box{0, 0, 1, 1})
         : field(pds::RadiusField::function(fn, r0, *r0, ratio * *r0)),
-          frame(pds::Box{0, 0, 1, 1}, ratio * *r0),
+          frame(box, ratio * *r0),
           radii(field, frame) {}
 };
 
@@ -57,6 +58,34 @@ std::size_t check_rule(const pds::FieldDartStage& stage, const pds::PointRadii& 
     }
     return near_pairs;
 }
+
+// On the torus t: every later point outside every earlier disk and its
+// copies, exactly; returns the pairs within 1.01 r_i that meet across a seam.
+std::size_t check_rule_on_torus(const pds::FieldDartStage& stage, const pds::PointRadii& radii, const pds::Torus& t) {
+    std::vector<pds::Point> pts(stage.count());
+    for (std::size_t k = 0; k < pts.size(); ++k) pts[k] = stage.point(k);
+    const pds::SpatialHash grid(pts, 0, t, radii.rmax());
+    std::size_t seam_pairs = 0;
+    for (std::size_t j = 0; j < pts.size(); ++j) {
+        ck_assert(t.wrap(pts[j]).x == pts[j].x && t.wrap(pts[j]).y == pts[j].y);
+        grid.for_each_near(pts[j], [&](std::uint32_t i, int sx, int sy) {
+            if (i >= j) return;
+            const pds::Point copy = t.shifted(pts[i], sx, sy);
+            const double ri = radii.radius_of(stage.value(i));
+            ck_assert_msg(pds::compare_distance(pts[j], copy, ri) >= 0, "point %zu inside the disk of point %u's copy (%d, %d)",
+                          j, static_cast<unsigned>(i), sx, sy);
+            if ((sx != 0 || sy != 0) && pds::compare_distance(pts[j], copy, 1.01 * ri) < 0) ++seam_pairs;
+        });
+    }
+    return seam_pairs;
+}
+
+// A torus of periods 1 x 0.625 (on the torus grid) with the 1:4 gradient
+// along x, which steps from 4 r0 back to r0 across the seam at x = 0.
+struct TorusField : Field {
+    pds::Torus torus{1.0, 0.625, 0.0, 0.0};
+    explicit TorusField(double* r0) : Field(gradient, r0, 4.0, pds::Box{0, 0, 1.0, 0.625}) {}
+};
 
 }  // namespace
 
@@ -90,6 +119,96 @@ START_TEST(field_dart_points_keep_the_rule) {
         ck_assert_uint_gt(near_pairs, 100);
         ck_assert_uint_gt(exact, 0);
     }
+}
+END_TEST
+
+START_TEST(torus_field_dart_points_keep_the_rule_across_the_seams) {
+    // Each point is kept in the grid once; a dart near a seam is tested at
+    // its copies too. Without those tests, points fall inside the disks of
+    // copies across the seam (measured to fail here).
+    double r0 = test_light() ? 0.006 : 0.003;
+    const TorusField f(&r0);
+    std::size_t seam_pairs = 0;
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        pds::FieldDartStage stage(f.frame.box(), nullptr, f.radii, f.torus);
+        fill(stage, seed);
+        ck_assert_uint_gt(stage.count(), 500);
+        seam_pairs += check_rule_on_torus(stage, f.radii, f.torus);
+    }
+    ck_assert_uint_gt(seam_pairs, test_light() ? 0 : 10);
+}
+END_TEST
+
+START_TEST(torus_field_darts_are_free_exactly_when_no_copy_covers_them) {
+    // Half way through the stage, each of many darts is judged free by the
+    // grid exactly when no point's disk, nor any copy's across a seam,
+    // holds it (brute force over the spatial hash). This sees darts wrongly
+    // rejected as well as wrongly accepted: a copy's block clamped to the
+    // grid's edge that trusted its own cell rejected free darts (measured).
+    double r0 = test_light() ? 0.006 : 0.003;
+    const TorusField f(&r0);
+    pds::FieldDartStage stage(f.frame.box(), nullptr, f.radii, f.torus);
+    pds::Rng rng(3);
+    stage.reserve(200000);
+    for (std::size_t k = 0; k < (test_light() ? 700u : 2800u) && stage.next(rng) != nullptr; ++k) stage.add_next();
+    const std::vector<pds::Point>& pts = stage.points();
+    std::vector<double> values(pts.size());
+    for (std::size_t k = 0; k < pts.size(); ++k) values[k] = stage.value(k);
+    const pds::SpatialHash near(pts, 0, f.torus, f.radii.rmax());
+    std::vector<pds::LayeredGrid::Dart> darts(1 << 16);
+    std::size_t free_near_seams = 0, covered_by_copies = 0;
+    const double edge = f.radii.rmax();
+    for (int round = 0; round < (test_light() ? 1 : 4); ++round) {
+        stage.grid().throw_darts(darts.data(), darts.size(), rng);
+        for (const pds::LayeredGrid::Dart& d : darts) {
+            bool covered = false, by_copy = false;
+            near.for_each_near(d.p, [&](std::uint32_t i, int sx, int sy) {
+                if (pds::compare_distance(d.p, f.torus.shifted(pts[i], sx, sy), f.radii.radius_of(values[i])) < 0) {
+                    covered = true;
+                    by_copy = by_copy || sx != 0 || sy != 0;
+                }
+            });
+            ck_assert_msg(stage.grid().is_free(d, pts, values) == !covered, "dart (%.17g, %.17g): the grid says %s",
+                          d.p.x, d.p.y, covered ? "free" : "covered");
+            const bool near_seam = d.p.x < edge || d.p.x > 1.0 - edge || d.p.y < edge || d.p.y > 0.625 - edge;
+            if (!covered && near_seam) ++free_near_seams;
+            if (by_copy) ++covered_by_copies;
+        }
+    }
+    ck_assert_uint_gt(free_near_seams, 50);
+    ck_assert_uint_gt(covered_by_copies, 50);
+}
+END_TEST
+
+START_TEST(torus_field_hand_over_ends_maximal) {
+    // The points and their values go to the torus's Jones stage (each with
+    // its radius, and copies across the seams), which ends maximal.
+    double r0 = 0.008;
+    const TorusField f(&r0);
+    pds::FieldDartStage stage(f.frame.box(), nullptr, f.radii, f.torus);
+    fill(stage, 5);
+    const std::size_t n = stage.count();
+    ck_assert_uint_gt(n, 500);
+    std::vector<pds::Point> pts(n);
+    std::vector<double> values(n);
+    for (std::size_t k = 0; k < n; ++k) pts[k] = stage.point(k), values[k] = stage.value(k);
+    const auto jones_stage = pds::make_jones_stage(f.frame.box(), f.frame.r(), f.torus, &f.radii);
+    pds::JonesStage& jones = *jones_stage;
+    jones.reserve(4 * n);
+    stage.hand_over_to(jones);
+    jones.settle();
+    ck_assert_uint_eq(jones.count(), n);
+    for (std::size_t k = 0; k < n; ++k) {
+        ck_assert(jones.point(k).x == pts[k].x && jones.point(k).y == pts[k].y);
+        ck_assert(jones.value(k) == values[k]);
+    }
+    ck_assert(jones.free_area() > 0.0);
+    pds::Rng rng(6);
+    std::size_t added = 0;
+    for (; jones.next(rng) != nullptr; ++added) jones.add_next();
+    ck_assert_uint_gt(added, 0);
+    const pds::VerifyReport done = jones.verify();
+    ck_assert_msg(done.valid && done.maximal, "%s", done.failure.c_str());
 }
 END_TEST
 
@@ -170,6 +289,9 @@ Suite* field_dart_stage_suite() {
     tcase_add_test(t, field_dart_points_keep_the_rule);
     tcase_add_test(t, covered_bitmap_cells_lie_inside_their_disk);
     tcase_add_test(t, field_hand_over_keeps_points_and_values);
+    tcase_add_test(t, torus_field_dart_points_keep_the_rule_across_the_seams);
+    tcase_add_test(t, torus_field_darts_are_free_exactly_when_no_copy_covers_them);
+    tcase_add_test(t, torus_field_hand_over_ends_maximal);
     suite_add_tcase(s, t);
     return s;
 }
