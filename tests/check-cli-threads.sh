@@ -8,12 +8,13 @@
 # The outputs of --threads 1, 2, 4 and 0 (one per core) are compared with
 # cmp, in each mode: the one-radius rectangle, polygon, mask and torus
 # (--periodic), and --fixed, whose dart stage uses the threads (with --count
-# and --refine too), --radius-map (in the rectangle and in a polygon, whose
-# darts go on in the free regions with threads) and --radius-map --periodic.
-# Without --threads the one-radius modes and the radius maps in the plane run
-# the single-thread process (other points); --radius-map --periodic runs on
-# one thread either way (the same points). Ends with "check-cli-threads: N
-# passed, M failed" and a non-zero status if anything failed.
+# and --refine too), --radius-map (in the rectangle, in a polygon and on the
+# torus, whose darts go on in the free regions with threads), and a radius
+# map whose rmax is over 8 rmin. Without --threads the one-radius modes and
+# the radius maps run the single-thread process (other points); the map over
+# 8:1 has no dart stage and runs on one thread either way (the same points).
+# Ends with "check-cli-threads: N passed, M failed" and a non-zero status if
+# anything failed.
 
 set -u
 
@@ -74,8 +75,10 @@ same_for_threads "one radius: --periodic --verify" --radius 0.005 --periodic --d
 same_for_threads "field: --radius-map" --radius-map "$tmp/map.pgm" --rmin 0.01 --rmax 0.03 --seed 7
 same_for_threads "field: --radius-map --polygon --verify" --radius-map "$tmp/map.pgm" --rmin 0.01 --rmax 0.03 \
     --polygon "$tmp/l.txt" --verify --seed 19
-same_for_threads "--radius-map --periodic (one thread either way)" --radius-map "$tmp/map.pgm" --rmin 0.01 \
-    --rmax 0.03 --periodic --seed 20
+same_for_threads "field: --radius-map --periodic --verify" --radius-map "$tmp/map.pgm" --rmin 0.01 \
+    --rmax 0.03 --periodic --verify --seed 20
+same_for_threads "--radius-map 1:10 --periodic (one thread either way)" --radius-map "$tmp/map.pgm" \
+    --rmin 0.003 --rmax 0.03 --periodic --seed 21
 same_for_threads "one radius: --polygon" --polygon "$tmp/l.txt" --radius 0.02 --seed 8
 same_for_threads "one radius: --polygon --refine" --polygon "$tmp/l.txt" --radius 0.04 --refine 0.02 --seed 9
 same_for_threads "one radius: --polygon --count 2000" --polygon "$tmp/l.txt" --count 2000 --seed 10

@@ -21,10 +21,9 @@ void JonesLoop<Space, Rule>::carry_darts(std::uint64_t salted_seed, std::size_t 
     // The runs the parallel opening hands over: one radius for every new
     // point (with fixed points, whose clearances are power disks, too), in
     // a rectangle, a polygon or on the torus. Their darts are decided
-    // against one another by that radius. A field's, in a rectangle or a
-    // polygon: each accepted dart keeps the later ones out of its own disk.
+    // against one another by that radius. A field's, after its dart stage:
+    // each accepted dart keeps the later ones out of its own disk.
     const bool one_radius = rule_.new_radius_is(r_);
-    if (!one_radius && Space::kPeriodic) return;
     // Another salt: these streams share nothing with the opening's.
     Torus torus;
     if constexpr (Space::kPeriodic) torus = space_.copies().torus();

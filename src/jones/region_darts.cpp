@@ -14,7 +14,6 @@ namespace pds {
 
 void RegionDarts::start(std::uint64_t salted_seed, std::size_t epoch, const Box& domain, double r,
                         const Torus& torus, bool varying) {
-    if (varying && torus.on()) throw std::logic_error("region darts with a field on the torus");
     stop();
     on_ = true;
     salted_ = salted_seed;
@@ -66,6 +65,7 @@ bool RegionDarts::free_in_plane(std::uint32_t i) const {
     return true;
 }
 
+template <bool kVarying>
 bool RegionDarts::free_on_torus(std::uint32_t i) const {
     // The cells (wrapped) that the disk around p meets, widened by far more
     // than the rounding of a cell index, so the cell of every copy within r
@@ -89,7 +89,8 @@ bool RegionDarts::free_on_torus(std::uint32_t i) const {
     const std::size_t nx = cells(p.x, grid_x0_, side_x_, grid_columns_, r, xs);
     const std::size_t ny = cells(p.y, grid_y0_, side_y_, grid_rows_, r, ys);
     // A dart within r of some copy of q (the copies shifted by whole
-    // periods are exact on the torus grid).
+    // periods are exact on the torus grid); with a field, within q's own
+    // radius (at most r).
     const double reach = r * (1.0 + 0x1.0p-20);
     for (std::size_t a = 0; a < ny; ++a)
         for (std::size_t b = 0; b < nx; ++b)
@@ -99,7 +100,7 @@ bool RegionDarts::free_on_torus(std::uint32_t i) const {
                     for (int sx = -1; sx <= 1; ++sx) {
                         const Point c = torus_.shifted(q, sx, sy);
                         if (std::fabs(c.x - p.x) > reach || std::fabs(c.y - p.y) > reach) continue;
-                        if (compare_distance(p, c, r) < 0) return false;
+                        if (compare_distance(p, c, kVarying ? reach_[j] : r) < 0) return false;
                     }
             }
     return true;
@@ -193,7 +194,7 @@ void RegionDarts::decide(std::size_t nblocks, const DartField* field) {
     for (std::uint32_t i = 0; i < n; ++i) {
         if (i + kAhead < n) prefetch_rows(i + kAhead);
         if (varying_) {
-            if (!free_in_plane<true>(i)) continue;
+            if (!free<true>(i)) continue;
             // The field at the dart that becomes the next point (it may
             // refuse: the epoch is then left undecided).
             double value = 0.0;
@@ -205,7 +206,7 @@ void RegionDarts::decide(std::size_t nblocks, const DartField* field) {
             }
             reach_[i] = field->radius_of(value);
             values_.push_back(value);
-        } else if (!(torus_.on() ? free_on_torus(i) : free_in_plane<false>(i))) {
+        } else if (!free<false>(i)) {
             continue;
         }
         std::uint32_t& head = grid_[cell_of(darts_[i].p)];

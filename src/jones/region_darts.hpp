@@ -100,9 +100,8 @@ public:
     // opening's epochs come before), for points in `domain` at radius r;
     // on the torus (torus.on()) `domain` is ignored: the darts, drawn in
     // unclipped cells, are decided by their distances across the periods.
-    // With a field (`varying`, in the plane only), r is its largest radius
-    // and each accepted dart's own radius comes from the field that the
-    // decisions are given.
+    // With a field (`varying`), r is its largest radius and each accepted
+    // dart's own radius comes from the field that the decisions are given.
     void start(std::uint64_t salted_seed, std::size_t epoch, const Box& domain, double r,
                const Torus& torus = Torus{}, bool varying = false);
     void stop();
@@ -162,12 +161,17 @@ private:
     // Dart i is free of the accepted darts in the grid (the plane's, and
     // the torus's, whose cells wrap around and divide the periods); with a
     // field (kVarying), of their own disks (reach_) within the largest
-    // radius r_. A template, so one radius pays no test per comparison.
+    // radius r_. Templates, so one radius pays no test per comparison.
     template <bool kVarying>
     bool free_in_plane(std::uint32_t i) const;
+    template <bool kVarying>
+    bool free_on_torus(std::uint32_t i) const;
+    template <bool kVarying>
+    bool free(std::uint32_t i) const {
+        return torus_.on() ? free_on_torus<kVarying>(i) : free_in_plane<kVarying>(i);
+    }
     // Takes back the accepted darts of an epoch left undecided.
     void undo_decision();
-    bool free_on_torus(std::uint32_t i) const;
     std::size_t cell_of(const Point& q) const;  // the grid cell holding q (wrapped on the torus)
     std::size_t column_of(double x) const;
     std::size_t row_of(double y) const;

@@ -142,7 +142,7 @@ private:
     // under half the margin, the mesh is rebuilt with the copies of a
     // narrower one (drawn candidates are dropped, as at a refine: a decision
     // that depends on the count only, so the law and the splits' bytes are
-    // kept).
+    // kept); held back while the free regions' darts run.
     template <class Loop>
     void maybe_narrow_margin(Loop& loop);
     template <class Loop>

@@ -170,7 +170,10 @@ void TorusSpace::widen_margin(Loop& loop) {
 
 template <class Loop>
 void TorusSpace::maybe_narrow_margin(Loop& loop) {
-    if (loop.count() < next_narrowing_) return;
+    // Not while the free regions' darts run: their pending darts and active
+    // cells name vertices a rebuilt mesh would renumber. A wider margin
+    // costs only copies; the narrowing is looked at again once they end.
+    if (loop.count() < next_narrowing_ || loop.regions_.on()) return;
     next_narrowing_ = 2 * loop.count();
     const Delaunay& dt = loop.dt_;
     double need = 0.0;

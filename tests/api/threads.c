@@ -15,7 +15,7 @@
  * Determinism is checked in every mode a run can be in: the one-radius
  * rectangle, the torus (square; wider than tall, refined; in count mode),
  * count mode, a chain of refines, a radius map (in the square; in the
- * polygon), a polygon with a hole (one radius, refined, in count mode), a
+ * polygon; on the torus, refined), a polygon with a hole (one radius, refined, in count mode), a
  * mask, and fixed points (in the polygon; in the square in count mode). Each is
  * run once with 1 thread, one pds_run per radius (the reference), then
  *   - with 2, 3, 4, 5 and 8 threads, the same calls;
@@ -102,6 +102,12 @@ static void polygon_with_radius_map(pds_sampler *s)
     radius_map(s);
 }
 
+static void wide_torus_with_radius_map(pds_sampler *s)
+{
+    wide_torus(s);
+    radius_map(s);
+}
+
 static void polygon_with_fixed_points(pds_sampler *s)
 {
     polygon(s);
@@ -117,6 +123,7 @@ static const mode modes[] = {
     {"refine", NULL, {{0.03, 0.02, 0.01}, {0.08, 0.06, 0.04}}, {0, 0}},
     {"radius map", radius_map, {{1.0}, {1.0}}, {0, 0}},
     {"radius map in a polygon with a hole", polygon_with_radius_map, {{1.0}, {1.0}}, {0, 0}},
+    {"radius map on the torus 1.3 x 0.7, refine", wide_torus_with_radius_map, {{1.0, 0.024}, {1.0, 0.072}}, {0, 0}},
     {"polygon with a hole", polygon, {{0.015}, {0.06}}, {0, 0}},
     {"polygon, refine", polygon, {{0.03, 0.02}, {0.09, 0.07}}, {0, 0}},
     {"polygon, pds_set_count", polygon, {{1.0}, {1.0}}, {3000, 1000}},

@@ -6,7 +6,8 @@
 // a cell's count is Poisson whatever its mean. With a field: each accepted
 // dart keeps the later ones out of its own disk, the field is asked once per
 // accepted dart in order of time, a refusal leaves the epoch undecided, and a
-// run's points stay the same on any number of threads.
+// run's points stay the same on any number of threads, in the plane and on
+// the torus (where the disks reach across the seams).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -27,19 +28,40 @@ namespace {
 
 using Dart = pds::RegionDarts::Dart;
 
-// Greedy in order of time (ties: the earlier in the list), by brute force.
-std::vector<Dart> greedy(const std::vector<Dart>& darts, double r) {
+// Greedy in order of time (ties: the earlier in the list), by brute force:
+// a dart is kept unless holds(k, dart) for an earlier kept dart k.
+template <class Holds>
+std::vector<Dart> greedy_with(const std::vector<Dart>& darts, const Holds& holds) {
     std::vector<std::size_t> order(darts.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return darts[a].t < darts[b].t; });
     std::vector<Dart> kept;
-    for (std::size_t i : order) {
-        bool free = true;
-        for (const Dart& k : kept)
-            if (pds::compare_distance(darts[i].p, k.p, r) < 0) free = false;
-        if (free) kept.push_back(darts[i]);
-    }
+    for (std::size_t i : order)
+        if (std::none_of(kept.begin(), kept.end(), [&](const Dart& k) { return holds(k.p, darts[i].p); }))
+            kept.push_back(darts[i]);
     return kept;
+}
+
+// Each kept dart holding the later ones out of its disk of radius
+// radius(dart); on the torus t (darts inside its fundamental domain, on its
+// grid), out of its copies' a period away too.
+template <class Radius>
+std::vector<Dart> greedy_by(const std::vector<Dart>& darts, const Radius& radius) {
+    return greedy_with(darts, [&](const pds::Point& k, const pds::Point& p) {
+        return pds::compare_distance(p, k, radius(k)) < 0;
+    });
+}
+template <class Radius>
+std::vector<Dart> greedy_on_torus(const std::vector<Dart>& darts, const pds::Torus& t, const Radius& radius) {
+    return greedy_with(darts, [&](const pds::Point& k, const pds::Point& p) {
+        for (int sy = -1; sy <= 1; ++sy)
+            for (int sx = -1; sx <= 1; ++sx)
+                if (pds::compare_distance(p, t.shifted(k, sx, sy), radius(k)) < 0) return true;
+        return false;
+    });
+}
+std::vector<Dart> greedy(const std::vector<Dart>& darts, double r) {
+    return greedy_by(darts, [r](const pds::Point&) { return r; });
 }
 
 // A 1:4 field along x over the unit square, r = 0.02 + 0.06 x, which
@@ -55,23 +77,6 @@ struct GradientField final : pds::DartField {
     mutable std::vector<pds::Point> asked;
     std::size_t refuse_at = std::numeric_limits<std::size_t>::max();
 };
-
-// Greedy in order of time by brute force, each kept dart holding the later
-// ones out of its disk of radius radius(dart).
-template <class Radius>
-std::vector<Dart> greedy_by(const std::vector<Dart>& darts, const Radius& radius) {
-    std::vector<std::size_t> order(darts.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return darts[a].t < darts[b].t; });
-    std::vector<Dart> kept;
-    for (std::size_t i : order) {
-        bool free = true;
-        for (const Dart& k : kept)
-            if (pds::compare_distance(darts[i].p, k.p, radius(k.p)) < 0) free = false;
-        if (free) kept.push_back(darts[i]);
-    }
-    return kept;
-}
 
 // Hands `darts` to `rd` split over `nblocks` blocks in list order.
 std::vector<pds::RegionDarts::Block>& fill_blocks(pds::RegionDarts& rd, const std::vector<Dart>& darts,
@@ -241,6 +246,35 @@ START_TEST(field_decision_keeps_later_darts_out_of_each_disk) {
 }
 END_TEST
 
+START_TEST(torus_field_decision_keeps_later_darts_out_of_each_disk_and_its_copies) {
+    // The 1:4 field on the unit torus steps from its largest radius back to
+    // its smallest across the seam at x = 0; a fifth of the darts lie
+    // within the largest radius of a seam. Deciding by the largest radius
+    // gives another set, so the test sees which radius is used there.
+    const pds::Torus torus{1.0, 1.0, 0.0, 0.0};
+    pds::RegionDarts rd;
+    rd.start(1, 0, pds::Box{0, 0, 1, 1}, kFieldRmax, torus, true);
+    pds::Rng rng(31);
+    for (int epoch = 0; epoch < 2; ++epoch) {
+        std::vector<Dart> darts = random_darts(rng, pds::Box{0, 0, 1, 1}, 1500);
+        for (std::size_t i = 0; i < darts.size(); ++i) {
+            pds::Point& p = darts[i].p;
+            if (i % 5 == 0) p.x = (i % 10 == 0 ? 0.0 : 1.0 - kFieldRmax) + kFieldRmax * rng.next_double();
+            p = torus.wrap(pds::Point{pds::Torus::snap(p.x), pds::Torus::snap(p.y)});
+        }
+        GradientField field;
+        fill_blocks(rd, darts, 3);
+        rd.decide_and_commit(3, [](pds::SiteIndex, double) {}, &field);
+        std::vector<Dart> got;
+        for (; rd.has_pending(); rd.pop()) got.push_back(rd.pending());
+        assert_same_darts(got, greedy_on_torus(darts, torus, GradientField::radius_at), "torus field epoch");
+        ck_assert_uint_eq(field.asked.size(), got.size());
+        const auto by_rmax = greedy_on_torus(darts, torus, [&](const pds::Point&) { return kFieldRmax; });
+        ck_assert_uint_lt(by_rmax.size(), got.size());
+    }
+}
+END_TEST
+
 START_TEST(refused_field_value_leaves_the_epoch_undecided) {
     // The field refuses its sixth call: nothing is pending, no bound is
     // committed, the epoch is the same; deciding the same darts again
@@ -286,13 +320,15 @@ struct CallCount {
 }  // namespace
 
 START_TEST(field_run_places_a_share_the_same_on_any_threads) {
-    // About 24,000 points; the field's dart stage, then its darts carried
-    // on in the free regions with threads: the same points on 1, 2 and 3,
-    // other than without threads, the field asked once per point.
+    // About 24,000 points, in the unit square and (_i = 1) on the unit
+    // torus; the field's dart stage, then its darts carried on in the free
+    // regions with threads: the same points on 1, 2 and 3, other than
+    // without threads, the field asked once per point.
     std::vector<double> first, alone;
     for (unsigned threads = 0; threads <= 3; ++threads) {
         CallCount count;
         pds::Sampler s(1.0, 8);
+        s.set_periodic(_i == 1);
         s.set_field(pds::RadiusField::function(&CallCount::radius, &count, 0.004, 0.012));
         if (threads != 0) s.set_threads(threads);
         std::size_t added = 0;
@@ -361,8 +397,9 @@ Suite* region_darts_suite() {
     tcase_add_test(t, poisson_counts_of_large_means);
     tcase_add_test(t, a_cell_far_above_the_others_gets_its_whole_count);
     tcase_add_test(t, field_decision_keeps_later_darts_out_of_each_disk);
+    tcase_add_test(t, torus_field_decision_keeps_later_darts_out_of_each_disk_and_its_copies);
     tcase_add_test(t, refused_field_value_leaves_the_epoch_undecided);
-    tcase_add_test(t, field_run_places_a_share_the_same_on_any_threads);
+    tcase_add_loop_test(t, field_run_places_a_share_the_same_on_any_threads, 0, 2);
     suite_add_tcase(s, t);
     return s;
 }

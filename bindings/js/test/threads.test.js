@@ -2,9 +2,10 @@
 // runs the single-thread process; a number selects the parallel process, whose
 // points depend on the seed and settings but never on the count (the
 // WebAssembly build has one thread, so not the speed either). The one-radius
-// rectangle, polygon, mask, torus and fixed points and a radius map in the
-// plane have that process; a radius map on the torus runs on one thread either
-// way. The native CLI's points at --threads 4 are the same bytes.
+// rectangle, polygon, mask, torus and fixed points and a radius map (in the
+// plane and on the torus) have that process; a radius map whose largest radius
+// is over 8 times its smallest runs on one thread either way. The native CLI's
+// points at --threads 4 are the same bytes.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { Sampler, StateError, poissonDisk } from '../src/index.js';
@@ -34,10 +35,13 @@ const PARALLEL = {  // the modes with a parallel process of their own
   'torus with count': [null, { periodic: true, bounds: [0, 0, 2, 1], count: 3000 }],
   'polygon with fixed points': [0.02, { polygon: L_SHAPE, fixed: [[0.15, 0.15], [1.5, 0.5]] }],
   'radius map': [null, { radiusMap: { width: 3, height: 2, radii: [0.008, 0.01, 0.012, 0.01, 0.012, 0.01] } }],
-};
-const ONE_THREAD = {  // the modes that run on one thread whatever was asked
   'radius map on the torus': [null, {
     radiusMap: { width: 3, height: 2, radii: [0.008, 0.01, 0.012, 0.01, 0.012, 0.01] }, periodic: true,
+  }],
+};
+const ONE_THREAD = {  // the modes that run on one thread whatever was asked
+  'radius map of 1:10 on the torus': [null, {
+    radiusMap: { width: 3, height: 2, radii: [0.003, 0.01, 0.03, 0.01, 0.03, 0.01] }, periodic: true,
   }],
 };
 
