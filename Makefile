@@ -471,6 +471,7 @@ check-alloc: $(ALLOC_BIN)
 	$(ALLOC_BIN) fixed-one-thread
 	$(ALLOC_BIN) fixed-large-one-thread
 	$(ALLOC_BIN) field-threads
+	$(ALLOC_BIN) field-torus-threads
 	$(ALLOC_BIN)
 
 # ---- benchmark -----------------------------------------------------------------------

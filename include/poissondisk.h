@@ -48,7 +48,7 @@ extern "C" {
 
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
-#define PDS_VERSION_MINOR 13
+#define PDS_VERSION_MINOR 14
 #define PDS_VERSION_PATCH 0
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
@@ -342,12 +342,13 @@ PDS_API int pds_set_progress(pds_sampler *s, pds_progress_fn fn, void *user) PDS
  * field is evaluated at points of the fundamental domain; rmax must not
  * exceed half the shorter period, and a varying field needs the longer
  * period at most 16 times the shorter, PDS_ERANGE at the first point); not with
- * pds_set_count (PDS_EINVAL, either way round). In a rectangle, polygon or
- * mask a varying field with rmax at most 8 times rmin opens with dart
- * throwing, a grid per layer of radii (since 1.3.2; around fixed points
- * since 1.11); on a torus, for a wider field, or in a polygon spread thin
- * over its box, the Jones loop runs from the first point. Either way the
- * law is the same.
+ * pds_set_count (PDS_EINVAL, either way round). In a rectangle, polygon,
+ * mask or torus a varying field with rmax at most 8 times rmin opens with
+ * dart throwing, a grid per layer of radii (since 1.3.2; around fixed
+ * points since 1.11; on the torus since 1.14, each point recorded once and
+ * a dart near a seam tested at its copies a period away); for a wider
+ * field, or in a polygon spread thin over its box, the Jones loop runs
+ * from the first point. Either way the law is the same.
  * With a varying field the count limit is judged at the first point on a
  * bound that holds for every seed: Oler's bound at rmin (as for a constant
  * radius rmin), or for a map, when smaller, the sum of Oler's bounds over
@@ -544,16 +545,17 @@ PDS_API int pds_set_fixed(pds_sampler *s, const double *xy, const double *cleara
  * (the faster one on one core). With pds_set_fixed
  * and one radius the parallel process runs too, its darts kept out of the
  * clearances. A radius
- * field in a rectangle, polygon or mask, with fixed points or not, opens
- * with the single-thread process's layered dart grids and then goes on
- * with darts in the free regions, drawn by the threads together, each point
- * keeping the later ones out of its own disk (since 1.13; before, the
- * single-thread process's points). A field on the torus or with rmax over
- * 8 rmin runs on one thread either way, as do a polygon spread thin over
- * its box (islands far apart), an outline too large to raster over the
- * dart grid, and fixed points whose clearances' boxes together span many
- * times the domain's box (the Jones loop alone, with threads or not);
- * polygons and masks had the
+ * field in a rectangle, polygon or mask, with fixed points or not, or on
+ * the torus, opens with the single-thread process's layered dart grids and
+ * then goes on with darts in the free regions, drawn by the threads
+ * together, each point keeping the later ones out of its own disk, on the
+ * torus out of its copies across the seams too (since 1.13; on the torus
+ * since 1.14; before, the single-thread process's points). A field with
+ * rmax over 8 rmin runs on one thread either way, on any domain, as do a
+ * polygon spread thin over its box (islands far apart), an outline too
+ * large to raster over the dart grid, and fixed points whose clearances'
+ * boxes together span many times the domain's box (the Jones loop alone,
+ * with threads or not); polygons and masks had the
  * single-thread process's points before 1.8, the torus and fixed points
  * before 1.9 (fixed points had other points with threads in 1.9, whose
  * hand-over inserted every point one by one, and without threads before

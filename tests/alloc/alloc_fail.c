@@ -28,7 +28,8 @@
  * "fixed-one-thread" and "fixed-large-one-thread" the same two without
  * threads (the single-thread dart stage holds the fixed points);
  * "field-threads" the star with the radius function on 2 threads (the
- * field's darts go on in the free regions, each asked for its radius). The default,
+ * field's darts go on in the free regions, each asked for its radius), and
+ * "field-torus-threads" the radius function on the torus on 2 threads. The default,
  * ~7000-point sequence tries every k in calls that make at most 3 * SPAN
  * allocations; in larger ones (pds_verify's exact arithmetic makes tens of
  * thousands) the first SPAN, the last SPAN and SPAN spread evenly in
@@ -69,7 +70,10 @@ struct config {
     int periodic; /* the torus: copies allocate as points are added */
     int shape;    /* the domain: the rectangle, a polygon, a mask, a polygon with a field */
 };
-enum { RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS, POLYGON_THREADS, FIXED_THREADS, FIXED, FIELD_THREADS };
+enum {
+    RECTANGLE, POLYGON, MASK, POLYGON_FIELD, THREADS, POLYGON_THREADS, FIXED_THREADS, FIXED, FIELD_THREADS,
+    TORUS_FIELD_THREADS
+};
 static const struct config kSmall = {"small", 0.05, 0.035, 100, 50, 1, 0, RECTANGLE};
 static const struct config kLarge = {"large", 0.01, 0.007, 2000, 500, 0, 0, RECTANGLE};
 static const struct config kTorus = {"torus", 0.05, 0.035, 100, 50, 1, 1, RECTANGLE};
@@ -103,6 +107,11 @@ static const struct config kFixedOne = {"fixed-one-thread", 0.025, 0.02, 300, 10
 static const struct config kFixedLargeOne = {"fixed-large-one-thread", 0.0055, 0.0045, 3000, 500, 0, 0, FIXED};
 /* The star with the field on 2 threads, every allocation tried. */
 static const struct config kFieldThreads = {"field-threads", 0.06, 0.045, 100, 50, 1, 0, FIELD_THREADS};
+/* The field on the torus on 2 threads: the layers' darts tested at their
+ * copies, the hand-over's points inserted with their radii and copies, the
+ * free regions' darts decided across the seams; every allocation tried. */
+static const struct config kFieldTorusThreads = {"field-torus-threads", 0.06, 0.045, 100, 50, 1, 1,
+                                                 TORUS_FIELD_THREADS};
 static const struct config *cfg = &kLarge;
 #define RADIUS (cfg->radius)
 #define REFINED (cfg->refined)
@@ -399,9 +408,11 @@ static void do_shape(struct trial *t, pds_sampler *s)
         cfg->shape == FIXED_THREADS || cfg->shape == FIXED || cfg->shape == FIELD_THREADS)
         rc = set_domain_part(t, s, 0);
     if (cfg->shape == MASK) rc = set_domain_part(t, s, 1);
-    if ((cfg->shape == POLYGON_FIELD || cfg->shape == FIELD_THREADS) && rc == 0) rc = set_domain_part(t, s, 2);
+    if ((cfg->shape == POLYGON_FIELD || cfg->shape == FIELD_THREADS || cfg->shape == TORUS_FIELD_THREADS) &&
+        rc == 0)
+        rc = set_domain_part(t, s, 2);
     if ((cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS ||
-         cfg->shape == FIELD_THREADS) && rc == 0)
+         cfg->shape == FIELD_THREADS || cfg->shape == TORUS_FIELD_THREADS) && rc == 0)
         rc = set_domain_part(t, s, 3);
     if ((cfg->shape == FIXED_THREADS || cfg->shape == FIXED) && rc == 0) rc = set_domain_part(t, s, 4);
     outcome(t, s, rc, pds_free_area(s), "pds_set_polygon/mask");
@@ -592,13 +603,15 @@ int main(int argc, char **argv)
         cfg = &kFixedLargeOne;
     else if (argc > 1 && strcmp(argv[1], "field-threads") == 0)
         cfg = &kFieldThreads;
+    else if (argc > 1 && strcmp(argv[1], "field-torus-threads") == 0)
+        cfg = &kFieldTorusThreads;
     else if (argc > 1) {
         printf("usage: alloc_fail [small|torus|polygon|mask|field|threads|polygon-threads|torus-threads|fixed-threads|"
-               "fixed-large|fixed-one-thread|fixed-large-one-thread|field-threads]\n");
+               "fixed-large|fixed-one-thread|fixed-large-one-thread|field-threads|field-torus-threads]\n");
         return 2;
     }
     if (cfg->shape == THREADS || cfg->shape == POLYGON_THREADS || cfg->shape == FIXED_THREADS ||
-        cfg->shape == FIELD_THREADS)
+        cfg->shape == FIELD_THREADS || cfg->shape == TORUS_FIELD_THREADS)
         warm_up_threads();
     all = cfg->every_k || (env != NULL && env[0] != '\0' && strcmp(env, "0") != 0);
     printf("alloc-fail: sequence \"%s\": R = %g, refined to %g\n", cfg->name, cfg->radius, cfg->refined);

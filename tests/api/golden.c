@@ -30,7 +30,10 @@
  * square root of the points ran the Jones loop alone). Fields with threads
  * pinned from 1.13.0 on, whose darts go on in the free regions after the
  * field's dart stage (before, their threads gave the default process's
- * points, the first fingerprint below).
+ * points, the first fingerprint below). Fields on the torus pinned from
+ * 1.14.0 on, whose single-thread process opens with the field's dart stage
+ * (before, the Jones loop alone) and whose threads carry its darts on in the
+ * free regions.
  */
 #include <math.h>
 #include <stdint.h>
@@ -124,11 +127,12 @@ START_TEST(pinned_outputs)
 }
 END_TEST
 
-/* A varying field in a rectangle: a 4 x 3 radius map (1:3, so it opens with
- * the field's dart stage), whole and in calls of 37 points; by the default
- * process and by the parallel one on 1, 2 and 3 threads (threads 0: no
- * pds_set_threads). */
+/* A varying field in a rectangle, and on the torus of the same box: a 4 x 3
+ * radius map (1:3, so it opens with the field's dart stage), whole and in
+ * calls of 37 points; by the default process and by the parallel one on 1, 2
+ * and 3 threads (threads 0: no pds_set_threads). */
 struct golden_field {
+    int torus;
     unsigned threads;
     size_t chunk;
     size_t count;
@@ -136,11 +140,16 @@ struct golden_field {
 };
 
 static const struct golden_field field_cases[] = {
-    {0, 0, 11486, 0xd923e04fabc74ff9ull},
-    {0, 37, 11486, 0xd923e04fabc74ff9ull}, /* split: same bytes */
-    {1, 0, 11494, 0xe22997052b4d3471ull},
-    {2, 0, 11494, 0xe22997052b4d3471ull},
-    {3, 37, 11494, 0xe22997052b4d3471ull},
+    {0, 0, 0, 11486, 0xd923e04fabc74ff9ull},
+    {0, 0, 37, 11486, 0xd923e04fabc74ff9ull}, /* split: same bytes */
+    {0, 1, 0, 11494, 0xe22997052b4d3471ull},
+    {0, 2, 0, 11494, 0xe22997052b4d3471ull},
+    {0, 3, 37, 11494, 0xe22997052b4d3471ull},
+    {1, 0, 0, 11304, 0x8985e608bcbb08d1ull},
+    {1, 0, 37, 11304, 0x8985e608bcbb08d1ull}, /* split: same bytes */
+    {1, 1, 0, 11337, 0x0f4453bd6a19a355ull},
+    {1, 2, 0, 11337, 0x0f4453bd6a19a355ull},
+    {1, 3, 37, 11337, 0x0f4453bd6a19a355ull},
 };
 
 START_TEST(pinned_field_outputs)
@@ -152,6 +161,8 @@ START_TEST(pinned_field_outputs)
     ck_assert_int_eq(pds_create(&s, 0.03, 5), 0);
     ck_assert_int_eq(pds_set_domain(s, -1.0, 3.0, 2.0, 4.5), 0);
     ck_assert_int_eq(pds_set_radius_map(s, 4, 3, map), 0);
+    if (g->torus)
+        ck_assert_int_eq(pds_set_periodic(s, 1), 0);
     if (g->threads != 0)
         ck_assert_int_eq(pds_set_threads(s, g->threads), 0);
     run_all(s, g->chunk);
