@@ -6,7 +6,7 @@
  * state; distinct handles may be used from distinct threads at once. Each of
  * N_THREADS threads runs its own script on its own handle: create, set_domain
  * (then, for two of them, a polygon with a hole, one of these with a radius
- * map; for one, the torus; for one, fixed points),
+ * map; for one, the torus, with a radius map; for one, fixed points),
  * a bounded run, free_area in the middle of the run, run to the end, refine,
  * run to the end, count/radius/points, verify, free_area, a refused call and
  * its message, destroy. In between it calls the global functions (pds_strerror,
@@ -54,7 +54,7 @@ static const struct script scripts[N_THREADS] = {
     {1, 0.020, 0.012, 0.0, 0.0, 1.0, 1.0, 100, {1, 2}, 0, 0, 1, 0},
     {0x9E3779B97F4A7C15u, 0.030, 0.020, -3.0, 10.0, 1.0, 11.0, 1, {2, 1}, 1, 0, 0, 0},
     {42, 0.004, 0.0035, 0.0, 0.0, 2.0, 0.5, 2000, {3, 0}, 1, 0, 0, 1}, /* several blocks of free cells */
-    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500, {0, 4}, 0, 1, 0, 0},
+    {UINT64_MAX, 0.020, 0.011, 1000.0, -3.0, 1001.0, -2.0, 500, {0, 4}, 0, 1, 0, 1}, /* its darts across the seams */
 };
 
 /* A growable byte buffer: everything the calls of one script returned. */
