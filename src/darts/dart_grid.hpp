@@ -88,6 +88,8 @@ public:
     void record(const Dart& d, std::uint32_t index);
     // Frees the cells: the stage is over.
     void release() { cells_.release(); }
+    // One radius needs no memory budget: its points fill the cells they touch.
+    static bool past_memory_budget() { return false; }
 
     // The sampling rule's scale: the grid's cells (those kept, with keep_to).
     GridCell cell_count() const { return keep_ ? GridCell{kept_cells_} : GridCell{cols_} * rows_; }

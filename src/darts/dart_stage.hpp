@@ -30,7 +30,8 @@
 //
 // A Grid gives: Dart, kVarying (points keep field values), throw_darts,
 // is_free, record (with the value when kVarying, asked first of value_at),
-// reserve / has_room_for, release, cell_count (the window's scale), curve,
+// reserve / has_room_for, release, past_memory_budget (the stage ends once
+// its pages outgrow the points), cell_count (the window's scale), curve,
 // radius, torus, radii. The calls per dart are the grid's inline ones: no
 // virtual call.
 #ifndef PDS_DART_STAGE_HPP
@@ -142,12 +143,17 @@ public:
         }
     }
 
+    void set_memory_budget(double bytes_per_point, std::size_t floor_bytes) override {
+        if constexpr (Grid::kVarying) grid_.set_memory_budget(bytes_per_point, floor_bytes);
+    }
+
     std::size_t count() const override { return points_.size(); }
     const Point& point(PointIndex k) const override { return points_[k]; }
     double value(PointIndex k) const override { return has_values() ? values_[k] : 0.0; }
     // Throws darts until one is free and returns it. Returns nullptr once
     // the stage is over (the acceptance rate over a window of darts fell
-    // below kMinAcceptance), and from then on.
+    // below kMinAcceptance, or the grid passed its memory budget), and from
+    // then on.
     const Point* next(Rng& rng) override {
         const Dart* d = queue_.next(
             [&](const Dart& x) {
@@ -172,6 +178,8 @@ public:
         }
         points_.push_back(d.p);
         queue_.take();
+        // A stopping time like the acceptance rule: decided by the points so far.
+        if (grid_.past_memory_budget()) queue_.end();
     }
     double free_area() const override { return jones_of_points()->free_area(); }
     // Failures name points in the order added.

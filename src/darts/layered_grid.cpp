@@ -10,6 +10,11 @@ namespace pds {
 
 namespace {
 
+// The memory budget's unit: a page, as most systems' ordinary pages.
+constexpr std::size_t kPageBytes = 4096;
+constexpr std::size_t kCellsPerPage = kPageBytes / sizeof(std::uint64_t);
+constexpr std::size_t kIndicesPerPage = kPageBytes / sizeof(std::uint32_t);
+
 // A cell's word: the offsets in steps (bits 0-15, 16-31), the radius as a
 // float (32-63).
 std::uint64_t cell_word(std::uint64_t sx, std::uint64_t sy, double r) {
@@ -22,7 +27,7 @@ std::uint64_t cell_word(std::uint64_t sx, std::uint64_t sy, double r) {
 }  // namespace
 
 LayeredGrid::LayeredGrid(const Box& domain, const PointRadii& radii, const Torus& torus)
-    : box_(domain), radii_(radii), torus_(torus) {
+    : box_(domain), radii_(radii), torus_(torus), area_(domain.width() * domain.height()) {
     using namespace darts;
     const double rmin = radii.rmin(), rmax = radii.rmax();
     for (double low = rmin;; low *= kLayerRatio) {
@@ -48,9 +53,17 @@ LayeredGrid::LayeredGrid(const Box& domain, const PointRadii& radii, const Torus
     tiles_.assign(tile_cols_ * tile_rows_, 0);
     const Layer& finest = layers_.front();
     covered_ = CoveredBitmap(box_.x0, box_.y0, finest.side, finest.cols, finest.rows);
+    const RadiusField& field = radii.field();
+    if (!field.calls_user()) {
+        RadiusField::MeanInverseSquare mean;
+        while (!mean.done()) mean.step(field, radii.frame().user_domain());
+        const double scale = radii.radius_of(field.rmax()) / field.rmax();  // internal radius per value
+        map_inverse_square_ = mean.mean() / (scale * scale);
+    }
 }
 
 void LayeredGrid::keep_to(const Polygon& polygon) {
+    area_ = polygon.area();
     if (!raster_suits(polygon, box_)) return;
     // Past its budget, no raster: darts over the box.
     const Layer& finest = layers_.front();
@@ -102,12 +115,24 @@ void LayeredGrid::allocate_cells(Layer& L) {
     L.cells.reset(static_cast<Cell*>(std::calloc(total, sizeof(Cell))));
     L.index.reset(static_cast<std::uint32_t*>(std::calloc(total, sizeof(std::uint32_t))));
     if (!L.cells || !L.index) throw std::bad_alloc();
+    L.cell_pages.assign(total / kCellsPerPage + 1, false);
+    L.index_pages.assign(total / kIndicesPerPage + 1, false);
 }
 
 std::size_t LayeredGrid::layer_of(double r) const {
     std::size_t k = 0;
     while (k + 1 < layers_.size() && r >= layers_[k + 1].low) ++k;
     return k;
+}
+
+void LayeredGrid::touch(Layer& L, std::size_t cell) {
+    const auto first_touch = [&](std::vector<bool>& pages, std::size_t page) {
+        if (pages[page]) return;
+        pages[page] = true;
+        touched_bytes_ += kPageBytes;
+    };
+    first_touch(L.cell_pages, cell / kCellsPerPage);
+    first_touch(L.index_pages, cell / kIndicesPerPage);
 }
 
 void LayeredGrid::mark_layer_near(const Point& p, std::size_t layer) {
@@ -131,6 +156,9 @@ void LayeredGrid::record(const Dart& d, std::uint32_t index, double value) {
     const std::size_t cell = L.at(b.x, b.y);
     L.cells[cell] = cell_word(sx, sy, r);
     L.index[cell] = index;
+    touch(layers_[k], cell);
+    ++recorded_;
+    squares_ += r * r;
     mark_layer_near(p, k);
     covered_.cover_disk(p, r);
 }

@@ -59,9 +59,34 @@ class LayeredGrid {
 public:
     static constexpr bool kVarying = true;  // each point keeps its field value
     // Fields whose largest radius is at most this many times the smallest
-    // get the grids: the layers' address space grows as the square of the
-    // ratio (their pages are touched only where points land).
-    static constexpr double kMaxRatio = 8.0;
+    // get the grids. Their address space follows the smallest radius (a
+    // few words for each point a pattern of it could hold); their pages are
+    // touched only where points land, and the memory budget below bounds
+    // what they touch.
+    static constexpr double kMaxRatio = 16.0;
+    // The memory budget: the stage ends once the pages its grids touched
+    // pass this many bytes for each point the maximal pattern is expected
+    // to hold, above a floor. A smooth field fills the pages it touches
+    // (about 50 bytes for each point of the pattern, measured at 1:2 to
+    // 1:16); a fine-grained one scatters its small radii, and each lone
+    // point in a fine layer touches a page of cells and one of indices
+    // (470-560 bytes a point of the pattern, measured with noise maps).
+    // The budget is a little over what the Jones loop's mesh takes for a
+    // field's pattern (170-210 bytes a point measured): a fine-grained
+    // field's peak at 10^6 points stays within about 1.6 times the loop's
+    // alone (3.4 times without the budget), and a map grained coarser than
+    // its largest radius keeps its darts' speed.
+    static constexpr double kBudgetBytesPerPoint = 256.0;
+    static constexpr std::size_t kBudgetFloorBytes = std::size_t{16} << 20;
+    // The expected count: a maximal pattern has about kMaximalCover / pi
+    // points for each r^2 of area (4 times the packing fraction of random
+    // sequential adsorption), so area kMaximalCover / pi times the mean of
+    // 1 / r^2. A map's mean is taken over the domain at the start; a
+    // function is asked only where points land, so its mean is judged from
+    // the points so far (the count of them over the sum of their r^2: low
+    // early, when they are spread evenly and the small radii's crowds have
+    // yet to come, so the budget then errs on the side of memory).
+    static constexpr double kMaximalCover = 4.0 * 0.547;
 
 private:
     static constexpr double kLayerRatio = 1.39;  // reach: 1.39 sqrt 2 / 0.99 = 1.986 cells
@@ -88,6 +113,8 @@ private:
         std::size_t bricks_x;
         std::unique_ptr<Cell[], Free> cells;
         std::unique_ptr<std::uint32_t[], Free> index;  // a taken cell's point
+        // The pages of cells and of indices a point has been written to.
+        std::vector<bool> cell_pages, index_pages;
         // The lower left corner of padded column x, row y: one formula, for
         // writing and reading offsets alike.
         double corner_x(std::size_t x) const { return x0 + static_cast<double>(x) * side; }
@@ -158,6 +185,23 @@ public:
     void record(const Dart& d, std::uint32_t index, double value);
     // Frees the grids: the stage is over.
     void release();
+    // Whether the pages the grids touched are past the memory budget (the
+    // stage then ends).
+    bool past_memory_budget() const {
+        if (touched_bytes_ <= budget_floor_) return false;
+        const double inverse_square =
+            map_inverse_square_ > 0.0 ? map_inverse_square_ : static_cast<double>(recorded_) / squares_;
+        const double expected = kMaximalCover / M_PI * area_ * inverse_square;
+        return static_cast<double>(touched_bytes_ - budget_floor_) > budget_per_point_ * expected;
+    }
+    // The bytes of the pages points were written to (4 KiB pages; the
+    // budget is an estimate where pages are larger).
+    std::size_t touched_bytes() const { return touched_bytes_; }
+    // Another budget (tests: the hand-over it causes, in small runs).
+    void set_memory_budget(double per_point, std::size_t floor) {
+        budget_per_point_ = per_point;
+        budget_floor_ = floor;
+    }
 
     // The sampling rule's scale: the coarsest layer's cells (with a raster,
     // the share of them its cells cover).
@@ -181,6 +225,9 @@ private:
     std::size_t tile_of(const Point& p) const;
     // Records that layer `layer` has a point at p, in the tiles its disk may reach.
     void mark_layer_near(const Point& p, std::size_t layer);
+    // Counts the pages of L's cell and index that a point written there
+    // touches for the first time.
+    void touch(Layer& L, std::size_t cell);
     // Whether p (whose block in L is b) is outside the disks of layer L's
     // points; with kOwnCell (b's own cell is p's), false at once when that
     // cell is taken.
@@ -202,6 +249,16 @@ private:
     CoveredBitmap covered_;  // the finest layer's cells inside one disk
     PolygonRaster raster_;   // keep_to's, on the finest layer's cells; or none
     mutable std::size_t exact_checks_ = 0;
+    // The memory budget's state: the domain's area (a polygon's, with
+    // keep_to); a map's mean of 1 / r^2 (0 for a function); the points
+    // recorded and the sum of their r^2.
+    double area_;
+    double map_inverse_square_ = 0.0;
+    std::size_t recorded_ = 0;
+    double squares_ = 0.0;
+    std::size_t touched_bytes_ = 0;
+    double budget_per_point_ = kBudgetBytesPerPoint;
+    std::size_t budget_floor_ = kBudgetFloorBytes;
 };
 
 // The per-dart calls, inline: the stage's loop (dart_stage.hpp) runs them

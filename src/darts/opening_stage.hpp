@@ -37,6 +37,10 @@ public:
     // Threads the stage may use from its next step on (at least 1); a stage
     // that runs on one thread ignores it. Never changes the points.
     virtual void set_threads(unsigned) {}
+    // Another memory budget for a stage that has one (a field's layered
+    // grids: layered_grid.hpp), bytes a point above a floor (tests: the
+    // hand-over it causes, in small runs).
+    virtual void set_memory_budget(double /*bytes_per_point*/, std::size_t /*floor_bytes*/) {}
     // Fixed points (internal frame) with their values, before the first
     // point: the stage holds them as its first points, keeps its darts out
     // of their clearance disks (radii.radius_of(value)), gives its own

@@ -43,6 +43,7 @@ public:
     double rmax() const { return frame_.r(); }
     double rmin() const { return radius_of(field_->rmin()); }
     const Frame& frame() const { return frame_; }
+    const RadiusField& field() const { return *field_; }
     // Every new point gets the same radius (a constant field: fixed points
     // in a run of one radius).
     bool constant() const { return field_->rmin() == field_->rmax(); }

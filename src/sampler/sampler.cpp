@@ -176,6 +176,7 @@ void Sampler::prepare(std::size_t points) {
         if (use_darts())
             darts = make_opening_stage(frame_, smallest_frame().count_bound(), varying_field() ? &*field_ : nullptr,
                                        parallel_ ? std::optional<std::uint64_t>(seed_) : std::nullopt);
+        if (darts && dart_budget_) darts->set_memory_budget(dart_budget_->first, dart_budget_->second);
         std::size_t fixed = 0;
         if (has_fixed()) {
             std::vector<Point> at;

@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "darts/opening_stage.hpp"
@@ -131,6 +132,11 @@ public:
     // Epochs of the free regions' darts of another mean length
     // (JonesStage::set_region_darts_per_cell); requires count() == 0.
     void set_region_darts_per_cell(double mean) { region_darts_per_cell_ = mean; }
+    // Another memory budget for the opening stage's grids
+    // (OpeningStage::set_memory_budget); requires count() == 0.
+    void set_dart_memory_budget(double bytes_per_point, std::size_t floor_bytes) {
+        dart_budget_ = {bytes_per_point, floor_bytes};
+    }
     // No opening: the free regions' dart process from the second point on,
     // as after the parallel opening's hand-over (JonesStage::carry_darts);
     // requires count() == 0.
@@ -214,6 +220,7 @@ private:
     bool region_draws_ = false;  // draw_cut_cells_by_region()
     double region_darts_per_cell_ = 0.0;  // set_region_darts_per_cell(); 0: the default
     bool region_darts_from_start_ = false;  // carry_region_darts_from_start()
+    std::optional<std::pair<double, std::size_t>> dart_budget_;  // set_dart_memory_budget()
     unsigned threads_ = 1;
     bool parallel_ = false;  // set_threads was called: the space-time opening
     std::size_t count_target_ = 0;

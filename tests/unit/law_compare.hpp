@@ -45,6 +45,7 @@ struct Config {
     Stages stages = Stages::darts_then_jones;
     unsigned threads = 0;            // > 0: the parallel opening (set_threads) on that many
     double region_darts_per_cell = 0;  // > 0: the free regions' epochs of that mean length
+    double dart_budget_per_point = 0;  // > 0: the dart stage's memory budget, bytes a point (no floor)
     int runs = 0;                    // seeds 1..runs (the dart thrower: 10^6 + seed)
     std::vector<std::vector<double>> rings;  // in the plane: a polygon (x, y lists) within box
 };
@@ -121,6 +122,7 @@ inline void configure(pds::Sampler& s, const Config& c) {
     if (c.stages == Stages::jones_only) s.skip_dart_stage();
     if (c.threads != 0) s.set_threads(c.threads);
     if (c.region_darts_per_cell > 0) s.set_region_darts_per_cell(c.region_darts_per_cell);
+    if (c.dart_budget_per_point > 0) s.set_dart_memory_budget(c.dart_budget_per_point, 0);
 }
 
 // Runs s to the end, checks it ends maximal and returns its points and radii.
@@ -192,8 +194,9 @@ void assert_saturated(const oracle::Pattern& t, const Distance& distance, int pr
         }
 }
 
+// Returns the share of the points the dart stage placed.
 template <class Distance, class Radius>
-void compare_with(const Config& c, oracle::DartThrowing<Distance, Radius> reference) {
+double compare_with(const Config& c, oracle::DartThrowing<Distance, Radius> reference) {
     Sample sampler, darts;
     std::size_t from_darts = 0, from_regions = 0, total = 0;
     for (int seed = 1; seed <= c.runs; ++seed) {
@@ -212,25 +215,27 @@ void compare_with(const Config& c, oracle::DartThrowing<Distance, Radius> refere
     if (c.threads != 0) ck_assert_msg(regions > 0.1, "the free regions' darts placed %.3f of the points", regions);
     else ck_assert_msg(from_regions == 0, "the free regions' darts ran without threads");
     assert_same_law(sampler, darts);
+    return static_cast<double>(from_darts) / static_cast<double>(total);
 }
 
-// The sampler configured as c against dart throwing under c's rules.
-inline void compare(const Config& c) {
+// The sampler configured as c against dart throwing under c's rules;
+// returns the share of the points the dart stage placed.
+inline double compare(const Config& c) {
     using oracle::dart_throwing;
     const oracle::ConstantRadius one{c.r};
     const oracle::FieldRadius field{c.field, c.rmin, c.rmax};
     if (c.periodic && c.field)
-        compare_with(c, dart_throwing(oracle::Torus{c.box}, field));
+        return compare_with(c, dart_throwing(oracle::Torus{c.box}, field));
     else if (c.periodic)
-        compare_with(c, dart_throwing(oracle::Torus{c.box}, one));
+        return compare_with(c, dart_throwing(oracle::Torus{c.box}, one));
     else if (!c.rings.empty() && c.field)
-        compare_with(c, dart_throwing(oracle::InPolygon{c.rings}, field));
+        return compare_with(c, dart_throwing(oracle::InPolygon{c.rings}, field));
     else if (!c.rings.empty())
-        compare_with(c, dart_throwing(oracle::InPolygon{c.rings}, one));
+        return compare_with(c, dart_throwing(oracle::InPolygon{c.rings}, one));
     else if (c.field)
-        compare_with(c, dart_throwing(oracle::Plane{c.box}, field));
+        return compare_with(c, dart_throwing(oracle::Plane{c.box}, field));
     else
-        compare_with(c, dart_throwing(oracle::Plane{c.box}, one));
+        return compare_with(c, dart_throwing(oracle::Plane{c.box}, one));
 }
 
 }  // namespace law

@@ -3,11 +3,14 @@
 // (law_compare.hpp, dart_throwing.hpp) for a gradient and a step field, also
 // with threads (the free regions' darts, in epochs of the default length and
 // 40 times as long) and on the torus (its dart stage, with threads too, and
-// the Jones loop alone); the rule and
+// the Jones loop alone); a field of 1:16, and one whose dart stage ends at
+// its memory budget; the rule and
 // maximality by brute force; the density along a linear field; and equal
 // radii through the weighted path giving the plain sampler's points.
 #include <cmath>
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -23,8 +26,19 @@ namespace {
 // lose their sites and disks get hidden).
 double gradient(void*, double x, double) { return 0.05 * (1.0 + x); }
 double step(void*, double x, double) { return x < 0.5 ? 0.04 : 0.1; }
+// 1:16 along x: nine layers in the dart stage's grids.
+double wide(void*, double x, double) { return 0.02 * std::pow(16.0, x); }
+// Specks of radius 0.01 in a field of 0.08 (1:8): a 6 x 6 lattice of
+// squares 0.025 wide, each holding a few small disks.
+double specks(void*, double x, double y) {
+    const auto in_speck = [](double t) { return t * 6.0 - std::floor(t * 6.0) < 0.15; };
+    return in_speck(x) && in_speck(y) ? 0.01 : 0.08;
+}
 
 using Pattern = oracle::Pattern;
+// A budget (bytes a point, no floor) that ends the specks' dart stage about
+// half way.
+constexpr double kSpecksBudget = 185.0;
 using law::run_to_the_end;
 
 // Over the unit square or the unit torus, its dart stage and the Jones loop
@@ -142,6 +156,39 @@ START_TEST(law_of_a_step_field_on_the_torus_by_the_jones_loop_alone) {
 }
 END_TEST
 
+START_TEST(law_of_a_field_of_1_to_16) {
+    // Nine layers of grids, read where each tile says they have points.
+    compare_field_laws(wide, 0.02, 0.32, test_light() ? 30 : 2000);
+}
+END_TEST
+
+START_TEST(law_of_a_field_whose_dart_stage_ends_at_its_memory_budget) {
+    // Each speck's first points touch pages of the fine layers' grids that
+    // no other point touches, so a small budget ends the dart stage at a time
+    // its points decide (a stopping time, as the acceptance rule's end).
+    law::Config c;
+    c.field = specks;
+    c.rmin = 0.01;
+    c.rmax = 0.08;
+    c.runs = test_light() ? 30 : 2000;
+    c.dart_budget_per_point = kSpecksBudget;
+    const double share = law::compare(c);
+    // The same runs without the budget: their stage places more of the points.
+    law::Config unbounded = c;
+    unbounded.dart_budget_per_point = 0;
+    std::size_t from_darts = 0, total = 0;
+    for (int seed = 1; seed <= 20; ++seed) {
+        pds::Sampler s(1.0, static_cast<std::uint64_t>(seed));
+        law::configure(s, unbounded);
+        total += run_to_the_end(s, &from_darts).p.size();
+    }
+    const double unbounded_share = static_cast<double>(from_darts) / static_cast<double>(total);
+    if (std::getenv("PDS_LAW_PRINT")) std::printf("dart stage share %.3f, %.3f without the budget\n", share, unbounded_share);
+    ck_assert_msg(share < 0.8 * unbounded_share, "the stage placed %.3f of the points, %.3f without the budget",
+                  share, unbounded_share);
+}
+END_TEST
+
 START_TEST(rule_and_maximality_by_brute_force) {
     for (int seed = 1; seed <= (test_light() ? 2 : 4); ++seed) {
         pds::Sampler s(1.0, static_cast<std::uint64_t>(seed));
@@ -248,6 +295,8 @@ Suite* field_suite() {
     tcase_add_test(t, law_of_a_gradient_field_in_a_polygon_on_threads);
     tcase_add_loop_test(t, law_of_a_step_field_on_the_torus, 0, 4);
     tcase_add_test(t, law_of_a_step_field_on_the_torus_by_the_jones_loop_alone);
+    tcase_add_test(t, law_of_a_field_of_1_to_16);
+    tcase_add_test(t, law_of_a_field_whose_dart_stage_ends_at_its_memory_budget);
     tcase_add_test(t, rule_and_maximality_by_brute_force);
     tcase_add_test(t, density_follows_a_linear_field);
     tcase_add_test(t, equal_radii_through_the_weighted_path_are_the_plain_points);

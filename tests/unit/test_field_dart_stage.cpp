@@ -3,7 +3,8 @@
 // field's rule, checked exactly, in the plane and across the torus's seams;
 // the cells its bitmap marks lie inside their disk (covered_bitmap.hpp); and
 // its hand-over gives the Jones stage the same points and values, which then
-// ends maximal, in the plane and on the torus.
+// ends maximal, in the plane and on the torus; and a fine-grained field's
+// stage ends at its memory budget.
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -22,6 +23,15 @@ namespace {
 // 1:4 along x; and a 1:2.5 step at x = 1/2.
 double gradient(void* u, double x, double) { return *static_cast<double*>(u) * (1.0 + 3.0 * x); }
 double step(void* u, double x, double) { return *static_cast<double*>(u) * (x < 0.5 ? 1.0 : 2.5); }
+// 1:8, fine-grained: each square 0.004 wide gets its own value, hashed.
+double grains(void* u, double x, double y) {
+    std::uint64_t h = static_cast<std::uint64_t>(x * 250.0) * 0x9E3779B97F4A7C15ull ^
+                      static_cast<std::uint64_t>(y * 250.0) * 0xC2B2AE3D27D4EB4Full;
+    h ^= h >> 29;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 32;
+    return *static_cast<double*>(u) * (1.0 + 7.0 * static_cast<double>(h >> 11) * 0x1.0p-53);
+}
 
 struct Field {
     pds::RadiusField field;
@@ -201,6 +211,41 @@ START_TEST(torus_field_hand_over_ends_maximal) {
 }
 END_TEST
 
+START_TEST(fine_grained_field_dart_stage_ends_at_its_memory_budget) {
+    // A fine-grained field scatters each layer's points over the domain, a
+    // few to a page of cells: with a budget of 200 bytes a point and no
+    // floor, the stage ends once its pages pass it. The budget only ends the
+    // stage: its points are the first of those the stage places without
+    // one (whose default floor this small run never reaches), and its Jones
+    // stage then ends maximal.
+    double r0 = 0.002;
+    const Field f(grains, &r0, 8.0);
+    pds::FieldDartStage unbounded(f.frame.box(), nullptr, f.radii);
+    fill(unbounded, 3);
+    ck_assert(!unbounded.grid().past_memory_budget());
+    pds::FieldDartStage bounded(f.frame.box(), nullptr, f.radii);
+    bounded.set_memory_budget(200.0, 0);
+    fill(bounded, 3);
+    ck_assert(bounded.grid().past_memory_budget());
+    ck_assert_uint_gt(bounded.count(), 100);
+    ck_assert_uint_lt(bounded.count(), unbounded.count() / 2);
+    ck_assert_uint_lt(bounded.grid().touched_bytes(), unbounded.grid().touched_bytes() / 2);
+    for (std::size_t k = 0; k < bounded.count(); ++k) {
+        ck_assert(bounded.point(k).x == unbounded.point(k).x && bounded.point(k).y == unbounded.point(k).y);
+        ck_assert(bounded.value(k) == unbounded.value(k));
+    }
+    const auto jones_stage = pds::make_jones_stage(f.frame.box(), f.frame.r(), pds::Torus{}, &f.radii);
+    pds::JonesStage& jones = *jones_stage;
+    jones.reserve(4 * unbounded.count());
+    bounded.hand_over_to(jones);
+    pds::Rng rng(4);
+    while (jones.next(rng) != nullptr) jones.add_next();
+    ck_assert_uint_gt(jones.count(), 2 * bounded.count());
+    const pds::VerifyReport done = jones.verify();
+    ck_assert_msg(done.valid && done.maximal, "%s", done.failure.c_str());
+}
+END_TEST
+
 START_TEST(covered_bitmap_cells_lie_inside_their_disk) {
     // Each marked cell's corners strictly inside the disk (a dart there is
     // covered); and the marks are nearly all the cells wholly inside, found
@@ -281,6 +326,7 @@ Suite* field_dart_stage_suite() {
     tcase_add_test(t, torus_field_dart_points_keep_the_rule_across_the_seams);
     tcase_add_test(t, torus_field_darts_are_free_exactly_when_no_copy_covers_them);
     tcase_add_test(t, torus_field_hand_over_ends_maximal);
+    tcase_add_test(t, fine_grained_field_dart_stage_ends_at_its_memory_budget);
     suite_add_tcase(s, t);
     return s;
 }
