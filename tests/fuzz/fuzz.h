@@ -253,7 +253,7 @@ void fz_count_radius(fz_state *st);
 double fz_smallest_radius(const fz_state *st);
 /* A field whose values are not all equal: the weighted path (no dart grid). */
 int fz_varying_field(const fz_state *st);
-/* A varying field with a dart stage (1.3.2): in the plane, rmax <= 8 rmin. */
+/* A varying field with a dart stage (1.3.2; on the torus since 1.14): rmax <= 16 rmin (8 before 1.15). */
 int fz_field_has_darts(const fz_state *st);
 /* The function in force may return a bad value now (band or toggle). */
 int fz_field_may_fail(const fz_state *st);

@@ -71,7 +71,7 @@ int fz_varying_field(const fz_state *st)
 
 int fz_field_has_darts(const fz_state *st)
 {
-    return fz_varying_field(st) && !st->periodic && st->f_rmax <= 8.0 * st->f_rmin;
+    return fz_varying_field(st) && st->f_rmax <= 16.0 * st->f_rmin;
 }
 
 /* The field's smallest value scaled to the radius in force R (radius_field.hpp:

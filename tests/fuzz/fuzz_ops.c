@@ -20,12 +20,12 @@
  *     only catch a library that allocates by area where it should not.
  * With a radius field (1.3) n is the bound at the field's smallest radius,
  * which is what the library reserves by, so a field with a tiny rmin is held
- * to bounded calls as a tiny radius is. Since 1.3.2 a varying field in the
- * plane with rmax <= 8 rmin opens with a dart stage whose layered grids are
- * sized by rmin (fz_field_has_darts), so it is held out of that band as a
- * constant radius is; other varying fields (on a torus, or wider) run the
- * Jones loop from the first point and get bounded calls between FZ_GRID_MAX
- * and FZ_NO_GRID too: there nothing may be allocated by area.
+ * to bounded calls as a tiny radius is. Since 1.3.2 a varying field with
+ * rmax <= 16 rmin (8 before 1.15; on a torus since 1.14) opens with a dart
+ * stage whose layered grids are sized by rmin (fz_field_has_darts), so it is
+ * held out of that band as a constant radius is; other varying fields (wider
+ * ones) run the Jones loop from the first point and get bounded calls between
+ * FZ_GRID_MAX and FZ_NO_GRID too: there nothing may be allocated by area.
  * Two more limits: with the parallel opening selected (1.5), whose first
  * point costs an epoch over every cell, bounded calls stop at FZ_GRID_MAX / 10;
  * a domain far thinner than R costs milliseconds a point (fz_cap_thin_budget).
