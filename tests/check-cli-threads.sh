@@ -10,9 +10,9 @@
 # (--periodic), and --fixed, whose dart stage uses the threads (with --count
 # and --refine too), --radius-map (in the rectangle, in a polygon and on the
 # torus, whose darts go on in the free regions with threads), and a radius
-# map whose rmax is over 8 rmin. Without --threads the one-radius modes and
+# map whose rmax is over 16 rmin. Without --threads the one-radius modes and
 # the radius maps run the single-thread process (other points); the map over
-# 8:1 has no dart stage and runs on one thread either way (the same points).
+# 16:1 has no dart stage and runs on one thread either way (the same points).
 # Ends with "check-cli-threads: N passed, M failed" and a non-zero status if
 # anything failed.
 
@@ -77,8 +77,10 @@ same_for_threads "field: --radius-map --polygon --verify" --radius-map "$tmp/map
     --polygon "$tmp/l.txt" --verify --seed 19
 same_for_threads "field: --radius-map --periodic --verify" --radius-map "$tmp/map.pgm" --rmin 0.01 \
     --rmax 0.03 --periodic --verify --seed 20
-same_for_threads "--radius-map 1:10 --periodic (one thread either way)" --radius-map "$tmp/map.pgm" \
-    --rmin 0.003 --rmax 0.03 --periodic --seed 21
+same_for_threads "field: --radius-map 1:12 --verify" --radius-map "$tmp/map.pgm" --rmin 0.0025 --rmax 0.03 \
+    --verify --seed 22
+same_for_threads "--radius-map 1:20 --periodic (one thread either way)" --radius-map "$tmp/map.pgm" \
+    --rmin 0.003 --rmax 0.06 --periodic --seed 21
 same_for_threads "one radius: --polygon" --polygon "$tmp/l.txt" --radius 0.02 --seed 8
 same_for_threads "one radius: --polygon --refine" --polygon "$tmp/l.txt" --radius 0.04 --refine 0.02 --seed 9
 same_for_threads "one radius: --polygon --count 2000" --polygon "$tmp/l.txt" --count 2000 --seed 10

@@ -4,7 +4,7 @@ points depend on the seed and settings but never on the count, byte for byte.
 The one-radius rectangle, polygon and mask (library 1.8 for the last two),
 torus and fixed points (library 1.9), with count or refine too, and radius
 maps (in the plane since library 1.13, on the torus since 1.14) have a
-parallel process; a radius map whose largest radius is over 8 times its
+parallel process; a radius map whose largest radius is over 16 times its
 smallest runs on one thread and gives the same points either way."""
 
 import copy
@@ -26,8 +26,8 @@ COUNTS = (2, 3, 8)
 # The modes, as Sampler arguments: the rectangle, a polygon with a hole, a
 # mask with a hole, the torus and fixed points, whose dart stages use the
 # threads, with count too, and a radius map in the square and on the torus
-# (its darts carried on in the free regions); then a radius map of 1:10,
-# which runs on one thread.
+# (its darts carried on in the free regions), and one of 1:12 (eight layers
+# of dart grids); then a radius map of 1:20, which runs on one thread.
 L_SHAPE = [[(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)],
            [(0.3, 0.3), (0.7, 0.3), (0.7, 0.7), (0.3, 0.7)]]
 MASK = [[True] * 4 + [False] * 4,  # row 0 along y1: a ring over a bar
@@ -49,9 +49,10 @@ PARALLEL = {  # the modes with a parallel process of their own
     "radius map": dict(radius=None, radius_map=[[0.01, 0.02, 0.03], [0.02, 0.03, 0.02]]),
     "radius map on the torus": dict(radius=None, radius_map=[[0.01, 0.02, 0.03], [0.02, 0.03, 0.02]],
                                     periodic=True),
+    "radius map of 1:12": dict(radius=None, radius_map=[[0.0025, 0.01, 0.03], [0.01, 0.03, 0.01]]),
 }
 ONE_THREAD = {  # the modes that run on one thread whatever was asked
-    "radius map of 1:10 on the torus": dict(radius=None, radius_map=[[0.003, 0.01, 0.03], [0.01, 0.03, 0.01]],
+    "radius map of 1:20 on the torus": dict(radius=None, radius_map=[[0.003, 0.01, 0.06], [0.01, 0.06, 0.01]],
                                             periodic=True),
 }
 MODES = dict(PARALLEL, **ONE_THREAD)

@@ -4,7 +4,7 @@
 // WebAssembly build has one thread, so not the speed either). The one-radius
 // rectangle, polygon, mask, torus and fixed points and a radius map (in the
 // plane and on the torus) have that process; a radius map whose largest radius
-// is over 8 times its smallest runs on one thread either way. The native CLI's
+// is over 16 times its smallest runs on one thread either way. The native CLI's
 // points at --threads 4 are the same bytes.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
@@ -38,10 +38,11 @@ const PARALLEL = {  // the modes with a parallel process of their own
   'radius map on the torus': [null, {
     radiusMap: { width: 3, height: 2, radii: [0.008, 0.01, 0.012, 0.01, 0.012, 0.01] }, periodic: true,
   }],
+  'radius map of 1:12': [null, { radiusMap: { width: 3, height: 2, radii: [0.003, 0.01, 0.036, 0.01, 0.036, 0.01] } }],
 };
 const ONE_THREAD = {  // the modes that run on one thread whatever was asked
-  'radius map of 1:10 on the torus': [null, {
-    radiusMap: { width: 3, height: 2, radii: [0.003, 0.01, 0.03, 0.01, 0.03, 0.01] }, periodic: true,
+  'radius map of 1:20 on the torus': [null, {
+    radiusMap: { width: 3, height: 2, radii: [0.003, 0.01, 0.06, 0.01, 0.06, 0.01] }, periodic: true,
   }],
 };
 
