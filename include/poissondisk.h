@@ -48,7 +48,7 @@ extern "C" {
 
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
-#define PDS_VERSION_MINOR 14
+#define PDS_VERSION_MINOR 15
 #define PDS_VERSION_PATCH 0
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
@@ -343,12 +343,21 @@ PDS_API int pds_set_progress(pds_sampler *s, pds_progress_fn fn, void *user) PDS
  * exceed half the shorter period, and a varying field needs the longer
  * period at most 16 times the shorter, PDS_ERANGE at the first point); not with
  * pds_set_count (PDS_EINVAL, either way round). In a rectangle, polygon,
- * mask or torus a varying field with rmax at most 8 times rmin opens with
+ * mask or torus a varying field with rmax at most 16 times rmin opens with
  * dart throwing, a grid per layer of radii (since 1.3.2; around fixed
  * points since 1.11; on the torus since 1.14, each point recorded once and
- * a dart near a seam tested at its copies a period away); for a wider
- * field, or in a polygon spread thin over its box, the Jones loop runs
- * from the first point. Either way the law is the same.
+ * a dart near a seam tested at its copies a period away; up to 16 times
+ * since 1.15, 8 before); for a wider field, or in a polygon spread thin
+ * over its box, the Jones loop runs from the first point. The grids' pages
+ * are touched only where points land: a smooth field fills them, but a
+ * fine-grained one (small radii scattered among large ones, as a noise
+ * image) touches new pages for nearly each of its lone small points, so
+ * the darts hand over to the Jones loop, whose memory follows the points,
+ * once the pages touched pass 256 bytes for each point the pattern is
+ * expected to hold, above 16 MiB (since 1.15; the count expected from a
+ * map's values, or from a function's at the points so far; decided by the
+ * points so far, so the points still do not depend on the thread count).
+ * Either way the law is the same.
  * With a varying field the count limit is judged at the first point on a
  * bound that holds for every seed: Oler's bound at rmin (as for a constant
  * radius rmin), or for a map, when smaller, the sum of Oler's bounds over
@@ -551,11 +560,11 @@ PDS_API int pds_set_fixed(pds_sampler *s, const double *xy, const double *cleara
  * together, each point keeping the later ones out of its own disk, on the
  * torus out of its copies across the seams too (since 1.13; on the torus
  * since 1.14; before, the single-thread process's points). A field with
- * rmax over 8 rmin runs on one thread either way, on any domain, as do a
- * polygon spread thin over its box (islands far apart), an outline too
- * large to raster over the dart grid, and fixed points whose clearances'
- * boxes together span many times the domain's box (the Jones loop alone,
- * with threads or not); polygons and masks had the
+ * rmax over 16 rmin (8 before 1.15) runs on one thread either way, on any
+ * domain, as do a polygon spread thin over its box (islands far apart), an
+ * outline too large to raster over the dart grid, and fixed points whose
+ * clearances' boxes together span many times the domain's box (the Jones
+ * loop alone, with threads or not); polygons and masks had the
  * single-thread process's points before 1.8, the torus and fixed points
  * before 1.9 (fixed points had other points with threads in 1.9, whose
  * hand-over inserted every point one by one, and without threads before

@@ -220,7 +220,7 @@ static const struct cli_option option_list[] = {
       "--threads (the single-thread process, faster on one core). A one-radius "
       "rectangle, polygon, mask or torus (with --count, --refine or --fixed too) uses "
       "them, and so does a radius map (with --periodic too), but not one whose largest "
-      "radius is over 8 times its smallest (one thread, the same points)" },
+      "radius is over 16 times its smallest (one thread, the same points)" },
     { "--verify", 0, NULL, 0, NULL, opt_flag, NULL,
       "re-check the final pattern independently; exit 1 if the check fails" },
     { "--stats", 0, NULL, 0, NULL, opt_flag, NULL,

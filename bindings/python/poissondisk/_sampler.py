@@ -77,8 +77,9 @@ class Sampler:
             refine or fixed too) uses threads, and so does a radius map
             (library 1.13, with periodic library 1.14; before, the
             single-thread process's points), except with its largest
-            radius over 8 times its smallest, where it gives the same
-            points either way. See the `threads` property.
+            radius over 16 times its smallest (8 before library 1.15),
+            where it gives the same points either way. See the `threads`
+            property.
         radius_map: a variable radius (library 1.3): a 2-D array-like of
             shape (h, w) of radii, each finite and > 0, spread over the
             domain: row 0 along y0, column 0 along x0, bilinear between
