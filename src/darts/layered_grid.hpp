@@ -74,7 +74,7 @@ public:
     // The budget is a little over what the Jones loop's mesh takes for a
     // field's pattern (170-210 bytes a point measured): a fine-grained
     // field's peak at 10^6 points stays within about 1.6 times the loop's
-    // alone (3.4 times without the budget), and a map grained coarser than
+    // alone (3 times without the budget), and a map grained coarser than
     // its largest radius keeps its darts' speed.
     static constexpr double kBudgetBytesPerPoint = 256.0;
     static constexpr std::size_t kBudgetFloorBytes = std::size_t{16} << 20;
