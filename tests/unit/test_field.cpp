@@ -183,7 +183,8 @@ START_TEST(law_of_a_field_whose_dart_stage_ends_at_its_memory_budget) {
         total += run_to_the_end(s, &from_darts).p.size();
     }
     const double unbounded_share = static_cast<double>(from_darts) / static_cast<double>(total);
-    if (std::getenv("PDS_LAW_PRINT")) std::printf("dart stage share %.3f, %.3f without the budget\n", share, unbounded_share);
+    if (std::getenv("PDS_LAW_PRINT"))
+        std::printf("dart stage share %.3f, %.3f without the budget\n", share, unbounded_share);
     ck_assert_msg(share < 0.8 * unbounded_share, "the stage placed %.3f of the points, %.3f without the budget",
                   share, unbounded_share);
 }

@@ -246,6 +246,45 @@ START_TEST(fine_grained_field_dart_stage_ends_at_its_memory_budget) {
 }
 END_TEST
 
+START_TEST(expected_count_follows_the_maximal_pattern) {
+    // The budget's expected count, for a 1:4 ramp over a 2 x 1.25 box,
+    // against the count the maximal pattern reaches: a map's (its values,
+    // taken at the start) within 10%; a function's (its values at the
+    // points so far, at the end of the stage) low, as the points then lie
+    // more evenly than the pattern's, but within a factor 2.
+    const pds::Box box{-1.0, 2.0, 1.0, 3.25};
+    double r0 = test_light() ? 0.008 : 0.004;
+    const pds::RadiusField::Function ramp = [](void* u, double x, double) {
+        return *static_cast<double*>(u) * (1.0 + 1.5 * (x + 1.0));
+    };
+    const std::size_t side = 64;
+    std::vector<double> pixels(side * side);
+    for (std::size_t j = 0; j < side; ++j)
+        for (std::size_t i = 0; i < side; ++i)
+            pixels[j * side + i] = ramp(&r0, -1.0 + 2.0 * static_cast<double>(i) / static_cast<double>(side - 1), 0.0);
+    const pds::RadiusField map = pds::RadiusField::map(side, side, pixels.data());
+    const pds::RadiusField function = pds::RadiusField::function(ramp, &r0, r0, 4.0 * r0);
+    for (const pds::RadiusField* field : {&map, &function}) {
+        const pds::Frame frame(box, field->rmax());
+        const pds::PointRadii radii(*field, frame);
+        pds::FieldDartStage stage(frame.box(), nullptr, radii);
+        fill(stage, 9);
+        const double expected = stage.grid().expected_count();
+        const auto jones_stage = pds::make_jones_stage(frame.box(), frame.r(), pds::Torus{}, &radii);
+        pds::JonesStage& jones = *jones_stage;
+        jones.reserve(4 * stage.count());
+        stage.hand_over_to(jones);
+        pds::Rng rng(10);
+        while (jones.next(rng) != nullptr) jones.add_next();
+        const double ratio = expected / static_cast<double>(jones.count());
+        if (field == &map)
+            ck_assert_msg(std::fabs(ratio - 1.0) < 0.1, "the map's expected count is %.3f of the pattern's", ratio);
+        else
+            ck_assert_msg(ratio > 0.5 && ratio < 1.0, "the function's expected count is %.3f of the pattern's", ratio);
+    }
+}
+END_TEST
+
 START_TEST(covered_bitmap_cells_lie_inside_their_disk) {
     // Each marked cell's corners strictly inside the disk (a dart there is
     // covered); and the marks are nearly all the cells wholly inside, found
@@ -327,6 +366,7 @@ Suite* field_dart_stage_suite() {
     tcase_add_test(t, torus_field_darts_are_free_exactly_when_no_copy_covers_them);
     tcase_add_test(t, torus_field_hand_over_ends_maximal);
     tcase_add_test(t, fine_grained_field_dart_stage_ends_at_its_memory_budget);
+    tcase_add_test(t, expected_count_follows_the_maximal_pattern);
     suite_add_tcase(s, t);
     return s;
 }
