@@ -27,7 +27,7 @@ std::uint64_t cell_word(std::uint64_t sx, std::uint64_t sy, double r) {
 }  // namespace
 
 LayeredGrid::LayeredGrid(const Box& domain, const PointRadii& radii, const Torus& torus)
-    : box_(domain), radii_(radii), torus_(torus), area_(domain.width() * domain.height()) {
+    : box_(domain), radii_(radii), torus_(torus) {
     using namespace darts;
     const double rmin = radii.rmin(), rmax = radii.rmax();
     for (double low = rmin;; low *= kLayerRatio) {
@@ -57,13 +57,21 @@ LayeredGrid::LayeredGrid(const Box& domain, const PointRadii& radii, const Torus
     if (!field.calls_user()) {
         RadiusField::MeanInverseSquare mean;
         while (!mean.done()) mean.step(field, radii.frame().user_domain());
-        const double scale = radii.radius_of(field.rmax()) / field.rmax();  // internal radius per value
-        map_inverse_square_ = mean.mean() / (scale * scale);
+        const Frame& frame = radii.frame();
+        map_expected_count_ = frame.expected_count(frame.user_radius() / field.rmax() / std::sqrt(mean.mean()));
     }
 }
 
+double LayeredGrid::expected_count() const {
+    if (map_expected_count_ > 0.0) return map_expected_count_;
+    // The points' rms radius, in user units (the frame's user radius over
+    // its internal one is a power of two).
+    const Frame& frame = radii_.frame();
+    const double rms = std::sqrt(squares_ / static_cast<double>(recorded_));
+    return frame.expected_count(rms * frame.user_radius() / frame.r());
+}
+
 void LayeredGrid::keep_to(const Polygon& polygon) {
-    area_ = polygon.area();
     if (!raster_suits(polygon, box_)) return;
     // Past its budget, no raster: darts over the box.
     const Layer& finest = layers_.front();

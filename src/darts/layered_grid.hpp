@@ -76,20 +76,18 @@ public:
     // its largest radius keeps its darts' speed.
     static constexpr double kBudgetBytesPerPoint = 256.0;
     static constexpr std::size_t kBudgetFloorBytes = std::size_t{16} << 20;
-    // The expected count: a maximal pattern has about kMaximalCover / pi
-    // points for each r^2 of area (4 times the packing fraction of random
-    // sequential adsorption), so area kMaximalCover / pi times the mean of
-    // 1 / r^2. A map's mean is taken over the domain at the start; a
-    // function is asked only where points land, so its mean is judged from
-    // the points so far (the count of them over the sum of their r^2: low
-    // early, when they are spread evenly and the small radii's crowds have
-    // yet to come, so the budget then errs on the side of memory). Measured
-    // on a 1:4 ramp: a map's within 1%, a function's 0.84-0.87 of the
-    // pattern's count at the stage's end. A field grained within a few
-    // radii holds fewer points than its mean says (large disks cover the
-    // small grains: 1.5 times too many for a map of 1:8 noise whose
-    // pixels are 0.25 to 2 radii wide), so there the budget is more lenient.
-    static constexpr double kMaximalCover = 4.0 * 0.547;
+    // The expected count is the frame's (a maximal pattern's, with its edge
+    // excess), at the radius R whose 1 / R^2 is the field's mean 1 / r^2. A
+    // map's mean is taken over the domain at the start; a function is asked
+    // only where points land, so its mean is judged from the points so far
+    // (their count over the sum of their r^2: low early, when they are
+    // spread evenly and the small radii's crowds have yet to come, so the
+    // budget then errs on the side of memory). Measured on a 1:4 ramp: a
+    // map's within 1%, a function's 0.84-0.87 of the pattern's count at the
+    // stage's end. A field grained within a few radii holds fewer points
+    // than its mean says (large disks cover the small grains: 1.5 times too
+    // many for a map of 1:8 noise whose pixels are 0.25 to 2 radii wide),
+    // so there the budget is more lenient.
 
 private:
     static constexpr double kLayerRatio = 1.39;  // reach: 1.39 sqrt 2 / 0.99 = 1.986 cells
@@ -194,13 +192,9 @@ public:
         if (touched_bytes_ <= budget_floor_) return false;
         return static_cast<double>(touched_bytes_ - budget_floor_) > budget_per_point_ * expected_count();
     }
-    // The count the maximal pattern is expected to reach (kMaximalCover);
-    // for a function, requires a point recorded.
-    double expected_count() const {
-        const double inverse_square =
-            map_inverse_square_ > 0.0 ? map_inverse_square_ : static_cast<double>(recorded_) / squares_;
-        return kMaximalCover / M_PI * area_ * inverse_square;
-    }
+    // The count the maximal pattern is expected to reach; for a function,
+    // requires a point recorded.
+    double expected_count() const;
     // The bytes of the pages points were written to (4 KiB pages; the
     // budget is an estimate where pages are larger).
     std::size_t touched_bytes() const { return touched_bytes_; }
@@ -256,11 +250,9 @@ private:
     CoveredBitmap covered_;  // the finest layer's cells inside one disk
     PolygonRaster raster_;   // keep_to's, on the finest layer's cells; or none
     mutable std::size_t exact_checks_ = 0;
-    // The memory budget's state: the domain's area (a polygon's, with
-    // keep_to); a map's mean of 1 / r^2 (0 for a function); the points
-    // recorded and the sum of their r^2.
-    double area_;
-    double map_inverse_square_ = 0.0;
+    // The memory budget's state: a map's expected count, taken at the start
+    // (0 for a function); the points recorded and the sum of their r^2.
+    double map_expected_count_ = 0.0;
     std::size_t recorded_ = 0;
     double squares_ = 0.0;
     std::size_t touched_bytes_ = 0;

@@ -247,7 +247,8 @@ START_TEST(fine_grained_field_dart_stage_ends_at_its_memory_budget) {
 END_TEST
 
 START_TEST(expected_count_follows_the_maximal_pattern) {
-    // The budget's expected count, for a 1:4 ramp over a 2 x 1.25 box,
+    // The budget's expected count, for a 1:4 ramp over a 2 x 1.25 box and
+    // a radius in force 1.5 times the field's largest value,
     // against the count the maximal pattern reaches: a map's (its values,
     // taken at the start) within 10%; a function's (its values at the
     // points so far, at the end of the stage) low, as the points then lie
@@ -265,7 +266,7 @@ START_TEST(expected_count_follows_the_maximal_pattern) {
     const pds::RadiusField map = pds::RadiusField::map(side, side, pixels.data());
     const pds::RadiusField function = pds::RadiusField::function(ramp, &r0, r0, 4.0 * r0);
     for (const pds::RadiusField* field : {&map, &function}) {
-        const pds::Frame frame(box, field->rmax());
+        const pds::Frame frame(box, 1.5 * field->rmax());  // every radius 1.5 times its value
         const pds::PointRadii radii(*field, frame);
         pds::FieldDartStage stage(frame.box(), nullptr, radii);
         fill(stage, 9);
