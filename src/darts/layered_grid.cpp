@@ -57,18 +57,14 @@ LayeredGrid::LayeredGrid(const Box& domain, const PointRadii& radii, const Torus
     if (!field.calls_user()) {
         RadiusField::MeanInverseSquare mean;
         while (!mean.done()) mean.step(field, radii.frame().user_domain());
-        const Frame& frame = radii.frame();
-        map_expected_count_ = frame.expected_count(frame.user_radius() / field.rmax() / std::sqrt(mean.mean()));
+        map_expected_count_ = radii.frame().expected_count(radii.user_radius_of(1.0 / std::sqrt(mean.mean())));
     }
 }
 
 double LayeredGrid::expected_count() const {
     if (map_expected_count_ > 0.0) return map_expected_count_;
-    // The points' rms radius, in user units (the frame's user radius over
-    // its internal one is a power of two).
-    const Frame& frame = radii_.frame();
-    const double rms = std::sqrt(squares_ / static_cast<double>(recorded_));
-    return frame.expected_count(rms * frame.user_radius() / frame.r());
+    const double rms_value = std::sqrt(value_squares_ / static_cast<double>(recorded_));
+    return radii_.frame().expected_count(radii_.user_radius_of(rms_value));
 }
 
 void LayeredGrid::keep_to(const Polygon& polygon) {
@@ -166,7 +162,7 @@ void LayeredGrid::record(const Dart& d, std::uint32_t index, double value) {
     L.index[cell] = index;
     touch(layers_[k], cell);
     ++recorded_;
-    squares_ += r * r;
+    value_squares_ += value * value;
     mark_layer_near(p, k);
     covered_.cover_disk(p, r);
 }

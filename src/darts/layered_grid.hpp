@@ -251,10 +251,10 @@ private:
     PolygonRaster raster_;   // keep_to's, on the finest layer's cells; or none
     mutable std::size_t exact_checks_ = 0;
     // The memory budget's state: a map's expected count, taken at the start
-    // (0 for a function); the points recorded and the sum of their r^2.
+    // (0 for a function); the points recorded and the sum of their values^2.
     double map_expected_count_ = 0.0;
     std::size_t recorded_ = 0;
-    double squares_ = 0.0;
+    double value_squares_ = 0.0;
     std::size_t touched_bytes_ = 0;
     double budget_per_point_ = kBudgetBytesPerPoint;
     std::size_t budget_floor_ = kBudgetFloorBytes;

@@ -247,9 +247,9 @@ START_TEST(fine_grained_field_dart_stage_ends_at_its_memory_budget) {
 END_TEST
 
 START_TEST(expected_count_follows_the_maximal_pattern) {
-    // The budget's expected count, for a 1:4 ramp over a 2 x 1.25 box and
-    // a radius in force 1.5 times the field's largest value,
-    // against the count the maximal pattern reaches: a map's (its values,
+    // The budget's expected count, for a 1:4 ramp over a 2 x 1.25 box and a
+    // radius in force 1.5 times the field's largest value, against the
+    // count the maximal pattern reaches: a map's (its values,
     // taken at the start) within 10%; a function's (its values at the
     // points so far, at the end of the stage) low, as the points then lie
     // more evenly than the pattern's, but within a factor 2.
