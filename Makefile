@@ -10,7 +10,7 @@
 #                   nothing installed; about a minute on an idle machine
 #   make bench      benchmark figures against two baselines (not assertions);
 #                   make bench-quick: the two smaller sizes only; make bench-phases:
-#                   where one run's time goes, stage by stage (PHASES_ARGS='N SEED')
+#                   where one run's time goes, stage by stage (PHASES_ARGS='[--threads T] N SEED')
 #   make install    PREFIX, DESTDIR, LIBDIR, INCLUDEDIR, BINDIR, MANDIR, PKGCONFIGDIR
 #   make install-python   pip-install bindings/python (offline) for SYSTEM_PYTHON
 #                   (/usr/bin/python3); make uninstall-python
@@ -501,10 +501,11 @@ bench-domains: $(B)/bench-domains
 
 # Where the time of one run goes (bench/phases.cpp): the stages of a pds_run
 # timed one by one, with the darts thrown and the Jones loop's selections.
-# PHASES_ARGS: [N [SEED]], default 10^6 points, seed 1.
+# PHASES_ARGS: [--threads N] [N [SEED]], default 10^6 points, seed 1; --threads N
+# times the parallel process (pds_set_threads) instead of the default one.
 PHASES_BIN := $(B)/bench-phases
 $(PHASES_BIN): bench/phases.cpp include/poissondisk.h $(LIB_A)
-	$(CXX) -std=c++17 -Iinclude -Isrc $(PDS_WARN) -O2 $(CXXFLAGS) -o $@ bench/phases.cpp $(LIB_A) -lm
+	$(CXX) -std=c++17 -Iinclude -Isrc $(PDS_WARN) -O2 $(CXXFLAGS) -o $@ bench/phases.cpp $(LIB_A) -lm -pthread
 
 bench-phases: $(PHASES_BIN)
 	$(PHASES_BIN) $(PHASES_ARGS)

@@ -1,21 +1,34 @@
 // phases.cpp - where the time of one run goes (make bench-phases).
 //
-//   build/bench-phases [--check] [N [SEED]]
+//   build/bench-phases [--check] [--threads N] [N [SEED]]
 //
 // Samples the unit square at R = sqrt(0.6966/N) (the bench's radius) with the
-// library's own stages, called one by one in the order pds_run calls them:
-// the dart stage, the hand-over's insertion order, the hand-over itself
-// (triangulating the dart points, measuring every cell, building the tree)
-// and the Jones loop. It prints each phase's time with what it counted: darts
-// thrown, and the loop's cell selections with those a stale bound rejected
-// (the lazy areas of jones_loop.hpp). The measuring part of the hand-over is
-// timed by measuring every cell once more afterwards, the insertion is the
-// rest. Wall-clock times of one run: compare phases within a run, and runs
-// on one machine.
+// library's own stages, called one by one in the order pds_run calls them.
 //
-// --check also runs pds_run with the same radius and seed and fails unless
-// both give the same points, coordinate for coordinate: what is timed here is
-// the library's path, not an imitation of it (make check-bench runs it).
+// The default process (no --threads): the dart stage, the hand-over's
+// insertion order, the hand-over itself (triangulating the dart points,
+// measuring every cell, building the tree) and the Jones loop. It prints each
+// phase's time with what it counted: darts thrown, and the loop's cell
+// selections with those a stale bound rejected (the lazy areas of
+// jones_loop.hpp). The measuring part of the hand-over is timed by measuring
+// every cell once more afterwards, the insertion is the rest.
+//
+// The parallel process (--threads N, as pds_set_threads(s, N)): the opening's
+// epochs, the hand-over (order, mesh built whole, every cell measured), the
+// free regions' epochs (draws side by side, decisions on the caller's
+// thread), their points' insertions (on the caller's thread alone) and the
+// Jones loop's last points. Run with N = 1 and 2 and compare the rows: the
+// insertions are the part that does not shrink with more threads. From the
+// hand-over on each point's two calls are timed apart, so those rows carry
+// a few clock reads a point (tens of nanoseconds).
+//
+// Wall-clock times of one run: compare phases within a run, and runs on one
+// machine.
+//
+// --check also runs pds_run with the same radius, seed and threads, and fails
+// unless both give the same points, coordinate for coordinate: what is timed
+// here is the library's path, not an imitation of it (make check-bench runs
+// it).
 //
 // A developer's tool: it includes the library's internal headers (src/) and
 // links its static archive.
@@ -28,6 +41,7 @@
 #include <vector>
 
 #include "darts/dart_stage.hpp"
+#include "darts/space_time_stage.hpp"
 #include "jones/jones_stage.hpp"
 #include "jones/mesh_cells.hpp"
 #include "poissondisk.h"
@@ -39,21 +53,121 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 int usage() {
-    std::fprintf(stderr, "usage: bench-phases [--check] [N [SEED]]   (N >= 100, default 1000000; SEED default 1)\n");
+    std::fprintf(stderr,
+                 "usage: bench-phases [--check] [--threads N] [N [SEED]]   (N >= 100, default 1000000; SEED default 1;"
+                 " threads 1 to 64)\n");
     return 2;
 }
 
-// The points of a pds_run with the same radius and seed; false on an error.
-bool library_points(double radius, std::uint64_t seed, std::vector<double>* xy) {
+// The points of a pds_run with the same radius and seed (and threads, if
+// not 0: the parallel process); false on an error.
+bool library_points(double radius, std::uint64_t seed, unsigned threads, std::vector<double>* xy) {
     pds_sampler* s = nullptr;
     if (pds_create(&s, radius, seed) != 0) return false;
-    bool ok = pds_run(s, 0, nullptr) == PDS_DONE;
+    bool ok = threads == 0 || pds_set_threads(s, threads) == 0;
+    ok = ok && pds_run(s, 0, nullptr) == PDS_DONE;
     if (ok) {
         xy->resize(2 * pds_count(s));
         ok = pds_points(s, 0, pds_count(s), xy->data()) == pds_count(s);
     }
     pds_destroy(s);
     return ok;
+}
+
+// --check: whether pds_run gives the points the stages gave; prints the verdict.
+template <class PointAt>
+int check_against_library(double radius, std::uint64_t seed, unsigned threads, std::size_t total,
+                          const PointAt& point_at) {
+    std::vector<double> xy;
+    if (!library_points(radius, seed, threads, &xy)) {
+        std::fprintf(stderr, "bench-phases: pds_run failed\n");
+        return 1;
+    }
+    bool same = xy.size() == 2 * total;
+    for (std::size_t k = 0; same && k < total; ++k) {
+        const pds::Point p = point_at(k);
+        same = xy[2 * k] == p.x && xy[2 * k + 1] == p.y;
+    }
+    std::printf("check: pds_run gives %zu points, %s\n", xy.size() / 2, same ? "the same" : "NOT the same");
+    return same ? 0 : 1;
+}
+
+double per(double a, std::size_t b) { return b == 0 ? 0.0 : a / static_cast<double>(b); }
+
+// The parallel process on `threads` threads, as Sampler::prepare sets it up:
+// the space-time opening, then the Jones stage, which carries the darts on
+// in the free regions from the hand-over.
+int parallel_phases(double n_target, std::uint64_t seed, unsigned threads, bool check) {
+    using Clock = std::chrono::steady_clock;
+    const double radius = std::sqrt(0.6966 / n_target);
+    const pds::Box square{0.0, 0.0, 1.0, 1.0};
+    const auto room = static_cast<std::size_t>(1.2 * n_target) + 1000;
+    pds::Rng rng(seed);
+    pds::SpaceTimeDartStage opening(square, nullptr, radius, seed);
+    const auto jones_stage = pds::make_jones_stage(square, radius);
+    pds::JonesStage& jones = *jones_stage;
+    jones.set_threads(threads);
+    opening.set_threads(threads);
+    opening.reserve(room);
+    jones.reserve(room);
+
+    auto t = Clock::now();
+    while (opening.next(rng)) opening.add_next();
+    const double t_opening = seconds_since(t);
+    const std::size_t opened = opening.count(), epochs = opening.epochs();
+
+    t = Clock::now();
+    opening.hand_over_to(jones);
+    const double t_handover = seconds_since(t);
+
+    // A point is the free regions' while the process has made more points
+    // than it has handed out; the call that made them drew an epoch.
+    double t_epochs = 0.0, t_insert = 0.0, t_loop = 0.0;
+    std::size_t region_points = 0, loop_points = 0;
+    for (;;) {
+        const auto t0 = Clock::now();
+        if (jones.next(rng) == nullptr) {
+            t_loop += seconds_since(t0);
+            break;
+        }
+        const auto t1 = Clock::now();
+        const bool region = region_points < jones.region_stats().points;
+        jones.add_next();
+        const auto t2 = Clock::now();
+        if (region) {
+            t_epochs += std::chrono::duration<double>(t1 - t0).count();
+            t_insert += std::chrono::duration<double>(t2 - t1).count();
+            ++region_points;
+        } else {
+            t_loop += std::chrono::duration<double>(t2 - t0).count();
+            ++loop_points;
+        }
+    }
+    const pds::RegionDarts::Stats& rs = jones.region_stats();
+    const std::size_t total = jones.count();
+    const double t_all = t_opening + t_handover + t_epochs + t_insert + t_loop;
+    const auto share = [&](double x) { return 100.0 * x / t_all; };
+
+    std::printf("poissondisk %s phases, parallel process on %u thread%s: unit square, N=%.0f, R=%.6g, seed %llu: "
+                "%zu points\n",
+                pds_version_string(), threads, threads == 1 ? "" : "s", n_target, radius,
+                static_cast<unsigned long long>(seed), total);
+    std::printf("phase                 seconds  share     points  per point  counted\n");
+    std::printf("opening epochs       %8.4f  %4.1f%%  %9zu  %6.0f ns  %zu epochs\n", t_opening, share(t_opening),
+                opened, 1e9 * per(t_opening, opened), epochs);
+    std::printf("hand-over            %8.4f  %4.1f%%  %9zu  %6.0f ns  (order, mesh built whole, every cell measured)\n",
+                t_handover, share(t_handover), opened, 1e9 * per(t_handover, opened));
+    std::printf("region epochs        %8.4f  %4.1f%%  %9zu  %6.0f ns  %zu epochs, %zu darts kept, %zu points placed "
+                "(drawn side by side, decided on the caller's thread)\n",
+                t_epochs, share(t_epochs), region_points, 1e9 * per(t_epochs, region_points), rs.epochs, rs.darts,
+                rs.points);
+    std::printf("region insertions    %8.4f  %4.1f%%  %9zu  %6.0f ns  (on the caller's thread alone)\n", t_insert,
+                share(t_insert), region_points, 1e9 * per(t_insert, region_points));
+    std::printf("Jones loop           %8.4f  %4.1f%%  %9zu  %6.0f ns\n", t_loop, share(t_loop), loop_points,
+                1e9 * per(t_loop, loop_points));
+    std::printf("total                %8.4f  100%%   %9zu  %6.0f ns\n", t_all, total, 1e9 * per(t_all, total));
+    if (!check) return 0;
+    return check_against_library(radius, seed, threads, total, [&](std::size_t k) { return jones.point(k); });
 }
 
 }  // namespace
@@ -65,9 +179,16 @@ int main(int argc, char** argv) {
         check = true;
         ++arg;
     }
+    unsigned threads = 0;  // 0: the default process
+    char* end = nullptr;
+    if (arg < argc && std::strcmp(argv[arg], "--threads") == 0) {
+        if (++arg == argc) return usage();
+        const unsigned long n = std::strtoul(argv[arg++], &end, 10);
+        if (*end != '\0' || n < 1 || n > 64) return usage();
+        threads = static_cast<unsigned>(n);
+    }
     double n_target = 1e6;
     std::uint64_t seed = 1;
-    char* end = nullptr;
     if (arg < argc) {
         n_target = std::strtod(argv[arg++], &end);
         if (*end != '\0' || !(n_target >= 100.0 && n_target <= 1e9)) return usage();
@@ -77,6 +198,7 @@ int main(int argc, char** argv) {
         if (*end != '\0') return usage();
     }
     if (arg != argc) return usage();
+    if (threads != 0) return parallel_phases(n_target, seed, threads, check);
 
     const double radius = std::sqrt(0.6966 / n_target);
     const pds::Box square{0.0, 0.0, 1.0, 1.0};
@@ -117,7 +239,6 @@ int main(int argc, char** argv) {
     const pds::JonesStats& st = jones.stats();
     const double t_all = t_darts + t_order + t_adopt + t_loop;
     const auto share = [&](double x) { return 100.0 * x / t_all; };
-    const auto per = [](double a, std::size_t b) { return b == 0 ? 0.0 : a / static_cast<double>(b); };
 
     std::printf("poissondisk %s phases: unit square, N=%.0f, R=%.6g, seed %llu: %zu points\n",
                 pds_version_string(), n_target, radius, static_cast<unsigned long long>(seed), total);
@@ -138,14 +259,5 @@ int main(int argc, char** argv) {
     std::printf("total                %8.4f  100%%   %9zu  %6.0f ns\n", t_all, total, 1e9 * per(t_all, total));
 
     if (!check) return 0;
-    std::vector<double> xy;
-    if (!library_points(radius, seed, &xy)) {
-        std::fprintf(stderr, "bench-phases: pds_run failed\n");
-        return 1;
-    }
-    bool same = xy.size() == 2 * total;
-    for (std::size_t k = 0; same && k < total; ++k)
-        same = xy[2 * k] == jones.point(k).x && xy[2 * k + 1] == jones.point(k).y;
-    std::printf("check: pds_run gives %zu points, %s\n", xy.size() / 2, same ? "the same" : "NOT the same");
-    return same ? 0 : 1;
+    return check_against_library(radius, seed, 0, total, [&](std::size_t k) { return jones.point(k); });
 }

@@ -14,7 +14,8 @@
 # the argument errors. Timings
 # are only checked to be positive: nothing here depends on the machine's speed.
 # Last, with a second argument, bench-phases: its --check (the stages called
-# one by one give pds_run's points) and its table.
+# one by one give pds_run's points), for the default process and the
+# parallel one (--threads), and its tables.
 # Ends with "check-bench: N passed, M failed" and a non-zero status on failure.
 
 set -u
@@ -179,10 +180,34 @@ if [ -n "$phases" ]; then
             /^Jones loop / { l = $5; sel = $8; stale = $13; zero = $15 }
             END { exit !(thrown >= d && sel - stale >= l && zero <= stale && zero > 0) }' "$tmp/p.out"
     done
-    "$phases" 50 > "$tmp/p.out" 2> "$tmp/p.err"
-    rc=$?
-    expect "bench-phases 50: exit 2 (got $rc)" [ "$rc" -eq 2 ]
-    expect "bench-phases 50: the usage" grep -q '^usage: ' "$tmp/p.err"
+    # The parallel process, on 1 and 2 threads (the same points: pds_run's
+    # with pds_set_threads).
+    for run in "--threads 2 20000 1" "--threads 1 3000 5"; do
+        # shellcheck disable=SC2086
+        "$phases" --check $run > "$tmp/p.out" 2>&1
+        rc=$?
+        expect "bench-phases --check $run: exit 0 (got $rc)" [ "$rc" -eq 0 ]
+        expect "bench-phases --check $run: the same points as pds_run" grep -q '^check: pds_run gives [0-9]* points, the same$' "$tmp/p.out"
+        for phase in 'opening epochs' 'hand-over' 'region epochs' 'region insertions' 'Jones loop' total; do
+            expect "bench-phases $run: a '$phase' row" grep -q "^$phase  *[0-9]" "$tmp/p.out"
+        done
+        # The opening's, the free regions' and the loop's points add up to
+        # the total; the opening and the free regions both made some, every
+        # point the free regions placed was timed as theirs, and they kept
+        # at least a dart for each.
+        expect "bench-phases $run: the phases' points add up" awk '
+            /^opening epochs / { o = $5 + 0 } /^hand-over / { h = $4 + 0 }
+            /^region epochs / { r = $5 + 0; kept = $10 + 0; placed = $13 + 0 }
+            /^region insertions / { i = $5 + 0 } /^Jones loop / { l = $5 + 0 } /^total / { t = $4 + 0 }
+            END { exit !(o > 0 && r > 0 && h == o && i == r && placed == r && kept >= r && o + r + l == t) }' "$tmp/p.out"
+    done
+    for args in 50 "--threads 0 1000" "--threads" "--threads 65 1000"; do
+        # shellcheck disable=SC2086
+        "$phases" $args > "$tmp/p.out" 2> "$tmp/p.err"
+        rc=$?
+        expect "bench-phases $args: exit 2 (got $rc)" [ "$rc" -eq 2 ]
+        expect "bench-phases $args: the usage" grep -q '^usage: ' "$tmp/p.err"
+    done
 fi
 
 finish
