@@ -46,6 +46,8 @@ Delaunay::Delaunay(const Box& domain, bool weighted, double ghost_radius) : weig
 }
 
 void Delaunay::reserve(std::size_t vertices) {
+    // The arrays may move: never while another thread may read them.
+    if (shared_) throw std::logic_error("Delaunay::reserve while the mesh is shared");
     // An insertion adds three edges (four and deletes one when the point lands
     // on an edge), so 3 records per vertex always suffice; build_whole() takes
     // a few more for its parts' arenas.
@@ -98,6 +100,7 @@ EdgeRef Delaunay::locate(const Point& p, EdgeRef e) const {
     throw std::logic_error("point location did not terminate");
 }
 
+template <bool kShared>
 void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) const {
     constexpr int kMaxSteps = 12;  // typical rings have about 6 edges
     EdgeRef edge[kMaxBatch], first[kMaxBatch];
@@ -107,16 +110,28 @@ void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) cons
         pds::prefetch(&points_[vertices[k]]);
         if (weighted_) pds::prefetch(&radii_[vertices[k]]);
     }
-    for (std::size_t k = 0; k < n; ++k) edge[k] = first[k] = vertex_edge_[vertices[k]];
+    for (std::size_t k = 0; k < n; ++k) edge[k] = first[k] = load_vertex_edge<kShared>(vertices[k]);
     // One step of every ring per round: the loads of a round are independent.
+    // Shared, a ring may be caught mid-change (a deleted record's link is
+    // the free list's, possibly kNoEdge): a ref or vertex out of the arrays
+    // ends its walk.
     for (int step = 0; step < kMaxSteps; ++step) {
         bool any = false;
         for (std::size_t k = 0; k < n; ++k) {
             if (edge[k] == kNoEdge) continue;
-            pds::prefetch(&points_[mesh_.dest(edge[k])]);
-            if (weighted_) pds::prefetch(&radii_[mesh_.dest(edge[k])]);
-            const EdgeRef next = mesh_.onext(edge[k]);
-            pds::prefetch(mesh_.record_address(next));
+            if constexpr (kShared) {
+                if (!mesh_.within(edge[k])) {
+                    edge[k] = kNoEdge;
+                    continue;
+                }
+            }
+            const std::uint32_t dest = mesh_.load_org<kShared>(QuadEdgeMesh::sym(edge[k]));
+            if (!kShared || dest < points_.capacity()) {
+                pds::prefetch(&points_[dest]);
+                if (weighted_) pds::prefetch(&radii_[dest]);
+            }
+            const EdgeRef next = mesh_.load_onext<kShared>(edge[k]);
+            if (!kShared || mesh_.within(next)) pds::prefetch(mesh_.record_address(next));
             edge[k] = next == first[k] ? kNoEdge : next;
             any = true;
         }
@@ -124,53 +139,78 @@ void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) cons
     }
 }
 
+template <bool kShared>
 void Delaunay::prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t n) const {
     constexpr std::size_t kMax = 16 * kMaxBatch;  // rings have about 6 edges: ample
     EdgeRef edge[kMax];
     std::size_t m = 0;
     // Round 1: each ring edge c -> a; its left triangle's third side a -> b
     // (the link edge) is read from the ring edge's own record.
+    // Shared, refs and vertices out of the arrays end a walk, as above.
     for (std::size_t k = 0; k < n && m < kMax; ++k) {
-        const EdgeRef first = vertex_edge_[vertices[k]];
+        const EdgeRef first = load_vertex_edge<kShared>(vertices[k]);
         if (first == kNoEdge) continue;  // a hidden disk: no ring
+        if (kShared && !mesh_.within(first)) continue;
         EdgeRef e = first;
         do {
-            const EdgeRef link = mesh_.lnext(e);
+            const EdgeRef link = QuadEdgeMesh::rot(mesh_.load_onext<kShared>(QuadEdgeMesh::rot_inv(e)));  // lnext
+            if (kShared && !mesh_.within(link)) break;
             pds::prefetch(mesh_.record_address(link));
             edge[m++] = link;
-            e = mesh_.onext(e);
-        } while (e != first && m < kMax);
+            e = mesh_.load_onext<kShared>(e);
+        } while (e != first && m < kMax && (!kShared || mesh_.within(e)));
     }
     // Round 2: behind each link edge, the edge to the far corner of the
     // triangle on its other side (what the flip test reads).
+    std::size_t kept = 0;
     for (std::size_t i = 0; i < m; ++i) {
-        edge[i] = mesh_.oprev(edge[i]);
-        pds::prefetch(mesh_.record_address(edge[i]));
+        const EdgeRef behind = QuadEdgeMesh::rot(mesh_.load_onext<kShared>(QuadEdgeMesh::rot(edge[i])));  // oprev
+        if (kShared && !mesh_.within(behind)) continue;
+        pds::prefetch(mesh_.record_address(behind));
+        edge[kept++] = behind;
     }
     // Round 3: the far corners themselves (and their radii).
-    for (std::size_t i = 0; i < m; ++i) {
-        pds::prefetch(&points_[mesh_.dest(edge[i])]);
-        if (weighted_) pds::prefetch(&radii_[mesh_.dest(edge[i])]);
+    for (std::size_t i = 0; i < kept; ++i) {
+        const std::uint32_t dest = mesh_.load_org<kShared>(QuadEdgeMesh::sym(edge[i]));
+        if (kShared && dest >= points_.capacity()) continue;
+        pds::prefetch(&points_[dest]);
+        if (weighted_) pds::prefetch(&radii_[dest]);
     }
 }
 
+template void Delaunay::prefetch_rings<false>(const std::uint32_t*, std::size_t) const;
+template void Delaunay::prefetch_rings<true>(const std::uint32_t*, std::size_t) const;
+template void Delaunay::prefetch_beyond_rings<false>(const std::uint32_t*, std::size_t) const;
+template void Delaunay::prefetch_beyond_rings<true>(const std::uint32_t*, std::size_t) const;
+
+template <bool kShared>
 void Delaunay::swap_edge(EdgeRef e) {
     // The endpoints lose e: point their entry edges at edges they keep. Written
     // unconditionally: a store does not wait for the cache, a test would.
     const EdgeRef a = mesh_.oprev(e), b = mesh_.oprev(QuadEdgeMesh::sym(e));
-    vertex_edge_[mesh_.org(e)] = a;
-    vertex_edge_[mesh_.dest(e)] = b;
-    mesh_.swap(e);
+    set_vertex_edge<kShared>(mesh_.org(e), a);
+    set_vertex_edge<kShared>(mesh_.dest(e), b);
+    mesh_.swap<kShared>(e);
 }
 
+template <bool kShared>
 void Delaunay::delete_edge(EdgeRef e) {
     const std::uint32_t o = mesh_.org(e), d = mesh_.dest(e);
-    if (vertex_edge_[o] == e) vertex_edge_[o] = mesh_.onext(e);
-    if (vertex_edge_[d] == QuadEdgeMesh::sym(e)) vertex_edge_[d] = mesh_.onext(QuadEdgeMesh::sym(e));
-    mesh_.delete_edge(e);
+    if (vertex_edge_[o] == e) set_vertex_edge<kShared>(o, mesh_.onext(e));
+    if (vertex_edge_[d] == QuadEdgeMesh::sym(e)) set_vertex_edge<kShared>(d, mesh_.onext(QuadEdgeMesh::sym(e)));
+    mesh_.delete_edge<kShared>(e);
 }
 
 std::uint32_t Delaunay::insert(const Point& p, std::uint32_t near) {
+    return shared_ ? insert_as<true>(p, near) : insert_as<false>(p, near);
+}
+
+std::uint32_t Delaunay::insert(const Point& p, double r, std::uint32_t near) {
+    return shared_ ? insert_as<true>(p, r, near) : insert_as<false>(p, r, near);
+}
+
+template <bool kShared>
+std::uint32_t Delaunay::insert_as(const Point& p, std::uint32_t near) {
     if (weighted_) throw std::logic_error("Delaunay::insert without a radius on a weighted mesh");
     if (!has_room_for_one()) throw std::logic_error("Delaunay::insert without reserved room");
     EdgeRef e = locate(p, vertex_edge_[near]);
@@ -182,7 +222,7 @@ std::uint32_t Delaunay::insert(const Point& p, std::uint32_t near) {
     const std::uint32_t v = static_cast<std::uint32_t>(points_.size());
     points_.push_back(p);
     vertex_edge_.push_back(kNoEdge);
-    const EdgeRef start = connect_spokes(e, v, on_edge, &e);
+    const EdgeRef start = connect_spokes<kShared>(e, v, on_edge, &e);
 
     // Restore the Delaunay property: examine the edges opposite p, flip those
     // whose far corner lies inside the circle through p and the edge.
@@ -191,7 +231,7 @@ std::uint32_t Delaunay::insert(const Point& p, std::uint32_t near) {
         const Point& far = points_[mesh_.dest(t)];
         if (right_of(far, e) &&
             incircle(points_[mesh_.org(e)], far, points_[mesh_.dest(e)], p) > 0) {
-            swap_edge(e);
+            swap_edge<kShared>(e);
             e = mesh_.oprev(e);
         } else if (mesh_.onext(e) == start) {
             break;
@@ -202,23 +242,24 @@ std::uint32_t Delaunay::insert(const Point& p, std::uint32_t near) {
     return v;
 }
 
+template <bool kShared>
 EdgeRef Delaunay::connect_spokes(EdgeRef e, VertexIndex v, bool on_edge, EdgeRef* link) {
     if (on_edge) {
         // p lies on e (strictly inside it, since it is in the closed triangle
         // and not a corner): remove e and fill the quadrilateral instead.
         const EdgeRef t = mesh_.oprev(e);
-        delete_edge(e);
+        delete_edge<kShared>(e);
         e = t;
     }
     // Connect p to every corner of the (triangle or quadrilateral) face.
-    EdgeRef base = mesh_.make_edge(mesh_.org(e), v);
-    mesh_.splice(base, e);
+    EdgeRef base = mesh_.make_edge<kShared>(mesh_.org(e), v);
+    mesh_.splice<kShared>(base, e);
     const EdgeRef start = base;
     do {
-        base = mesh_.connect(e, QuadEdgeMesh::sym(base));
+        base = mesh_.connect<kShared>(e, QuadEdgeMesh::sym(base));
         e = mesh_.oprev(base);
     } while (mesh_.lnext(e) != start);
-    vertex_edge_[v] = QuadEdgeMesh::sym(start);
+    set_vertex_edge<kShared>(v, QuadEdgeMesh::sym(start));
     *link = e;  // a link edge (opposite v, v on its left)
     return start;
 }
@@ -229,19 +270,21 @@ std::size_t Delaunay::degree(VertexIndex v) const {
     return n;
 }
 
+template <bool kShared>
 void Delaunay::hide_vertex(VertexIndex a, VertexIndex v) {
     // Deleting a's three edges merges its triangles into one.
     while (vertex_edge_[a] != kNoEdge) {
         const EdgeRef e = vertex_edge_[a];
         const EdgeRef next = mesh_.onext(e);
-        delete_edge(e);
-        vertex_edge_[a] = next == e ? kNoEdge : next;
+        delete_edge<kShared>(e);
+        set_vertex_edge<kShared>(a, next == e ? kNoEdge : next);
     }
     hidden_by_[a] = v;
     ++hidden_count_;
 }
 
-std::uint32_t Delaunay::insert(const Point& p, double r, std::uint32_t near) {
+template <bool kShared>
+std::uint32_t Delaunay::insert_as(const Point& p, double r, std::uint32_t near) {
     if (!weighted_) throw std::logic_error("Delaunay::insert with a radius on an unweighted mesh");
     if (!has_room_for_one()) throw std::logic_error("Delaunay::insert without reserved room");
     EdgeRef e = locate(p, vertex_edge_[visible(near)]);
@@ -264,7 +307,7 @@ std::uint32_t Delaunay::insert(const Point& p, double r, std::uint32_t near) {
     }
     const bool on_edge = orient2d(o, d, p) == 0;
     std::size_t degree_v = on_edge ? 4 : 3;
-    connect_spokes(e, v, on_edge, &e);
+    connect_spokes<kShared>(e, v, on_edge, &e);
 
     // Edelsbrunner-Shah flips, around v clockwise (e: a link edge a -> b
     // with v on its left, far corner f across it). Every link edge must end
@@ -287,18 +330,18 @@ std::uint32_t Delaunay::insert(const Point& p, double r, std::uint32_t near) {
         const int side_a = orient2d(p, pf, points_[a]), side_b = orient2d(p, pf, points_[b]);
         if (side_a < 0 && side_b > 0) {
             // Convex: the 2-2 flip; look at the first of the two new link edges.
-            swap_edge(e);
+            swap_edge<kShared>(e);
             e = mesh_.oprev(e);
             ++degree_v;
         } else if (side_a > 0 && !is_ghost(a) && degree(a) == 3) {
             // a is inside triangle (v, f, b) and only joins them: 3-1.
             const EdgeRef fb = mesh_.lnext(t);
-            hide_vertex(a, v);
+            hide_vertex<kShared>(a, v);
             e = fb;
             --degree_v;
         } else if (side_b < 0 && !is_ghost(b) && degree(b) == 3) {
             // b is inside triangle (v, a, f): 3-1, leaving link edge a -> f.
-            hide_vertex(b, v);
+            hide_vertex<kShared>(b, v);
             e = t;
             --degree_v;
         } else if (side_b == 0 && !is_ghost(b) && degree(b) == 4 && strictly_between(p, points_[b], pf)) {
@@ -306,14 +349,14 @@ std::uint32_t Delaunay::insert(const Point& p, double r, std::uint32_t near) {
             // test puts lifted b above lifted v f: b is hidden, though no
             // triangle of v holds it. The 3-1 flip of this degenerate case:
             // b's four edges go, and v joins f (b's place as a neighbour).
-            hide_vertex(b, v);
-            mesh_.connect(t, mesh_.lprev(t));  // f -> v, in the face a f c v
+            hide_vertex<kShared>(b, v);
+            mesh_.connect<kShared>(t, mesh_.lprev(t));  // f -> v, in the face a f c v
             e = t;
         } else if (side_a == 0 && !is_ghost(a) && degree(a) == 4 && strictly_between(p, points_[a], pf)) {
             // The same for a on the segment from v to f.
             const EdgeRef fb = mesh_.lnext(t);
-            hide_vertex(a, v);
-            mesh_.connect(mesh_.lnext(fb), fb);  // v -> f, in the face f b v c
+            hide_vertex<kShared>(a, v);
+            mesh_.connect<kShared>(mesh_.lnext(fb), fb);  // v -> f, in the face f b v c
             e = fb;
         } else {
             // Not flippable now; another link edge is (the Lemma).

@@ -42,6 +42,7 @@
 #include "core/point.hpp"
 #include "core/predicates.hpp"
 #include "core/prefetch.hpp"
+#include "core/relaxed.hpp"
 #include "mesh/quadedge.hpp"
 
 namespace pds {
@@ -81,6 +82,13 @@ public:
     // The same for the disk (p, r) on a weighted mesh; the vertex may be
     // hidden at once, and others may become hidden.
     std::uint32_t insert(const Point& p, double r, std::uint32_t near);
+    // While on, the insertions write the links and the entry edges by
+    // relaxed atomic stores, so that a thread started after set_shared(true)
+    // may run prefetch_rings and prefetch_beyond_rings meanwhile; off (the
+    // default) they write plainly, which the compiler optimizes better.
+    // Changing the mesh in any other way needs it off and that thread gone
+    // (reserve() refuses with std::logic_error while it is on).
+    void set_shared(bool on) { shared_ = on; }
 
     // Inserts points[order[0]], points[order[1]], ... (n of them), each walk
     // starting at the vertex inserted before it: a neighbour when the order
@@ -169,11 +177,16 @@ public:
 
     // Asks the memory system for the vertex rings (edges and neighbour
     // points) of n vertices, walking all rings in step so that their cache
-    // misses overlap. A hint only: no effect on results.
+    // misses overlap. A hint only: no effect on results. With kShared they
+    // may run on another thread while this one inserts, if set_shared(true)
+    // was called before that thread started (jones/ring_prefetcher.hpp):
+    // they then read the links by relaxed loads.
+    template <bool kShared = false>
     void prefetch_rings(const std::uint32_t* vertices, std::size_t n) const;
     // For vertices whose rings are cached: asks for the triangles just beyond
     // them (the link edges, the edges behind those, and their far vertices),
     // which inserting a point next to such a vertex reads when it flips edges.
+    template <bool kShared = false>
     void prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t n) const;
 
 private:
@@ -181,12 +194,33 @@ private:
     bool right_of(const Point& p, EdgeRef e) const {
         return orient2d(p, points_[mesh_.dest(e)], points_[mesh_.org(e)]) > 0;
     }
+    // The insertions, with the mesh's writes shared (set_shared) or not.
+    template <bool kShared>
+    std::uint32_t insert_as(const Point& p, std::uint32_t near);
+    template <bool kShared>
+    std::uint32_t insert_as(const Point& p, double r, std::uint32_t near);
+    template <bool kShared>
+    EdgeRef load_vertex_edge(VertexIndex v) const {
+        if constexpr (kShared) return load_relaxed(vertex_edge_[v]);
+        return vertex_edge_[v];
+    }
+    template <bool kShared>
+    void set_vertex_edge(VertexIndex v, EdgeRef e) {
+        if constexpr (kShared)
+            store_relaxed(vertex_edge_[v], e);
+        else
+            vertex_edge_[v] = e;
+    }
+    template <bool kShared>
     void swap_edge(EdgeRef e);
+    template <bool kShared>
     void delete_edge(EdgeRef e);
     // The new vertex's spokes to the corners of the face left of e (p on e
     // when on_edge): its ring before any flip; returns the first spoke.
+    template <bool kShared>
     EdgeRef connect_spokes(EdgeRef e, VertexIndex v, bool on_edge, EdgeRef* link);
     // Removes vertex a, of degree 3, hidden by v.
+    template <bool kShared>
     void hide_vertex(VertexIndex a, VertexIndex v);
     std::size_t degree(VertexIndex v) const;
 
@@ -194,6 +228,7 @@ private:
     std::vector<Point> points_;
     std::vector<EdgeRef> vertex_edge_;
     bool weighted_ = false;
+    bool shared_ = false;  // set_shared
     std::vector<double> radii_;             // weighted only: per vertex (ghosts 0)
     std::vector<VertexIndex> hidden_by_;    // weighted only: who hid it, if hidden
     std::size_t hidden_count_ = 0;

@@ -21,15 +21,6 @@ std::size_t QuadEdgeMesh::spare_records() const {
     return free_count_ + (rec_.capacity() - rec_.size());
 }
 
-void QuadEdgeMesh::delete_edge(EdgeRef e) {
-    e &= ~3u;
-    detach(e);
-    next_of(e) = free_list_;
-    free_list_ = e;
-    ++free_count_;
-    --live_edges_;
-}
-
 bool QuadEdgeMesh::lay_out_for_arenas(std::size_t records) {
     if (records > rec_.capacity()) return false;
     rec_.resize(records);  // within the room: does not allocate
@@ -44,7 +35,7 @@ QuadEdgeMesh::Arena QuadEdgeMesh::join(Arena a, const Arena& b) {
     for (; a.next != a.end; ++a.next) {
         const EdgeRef e = 4 * a.next;
         set_endpoints(e, kNoVertex, kNoVertex);
-        next_of(e) = a.free_head;
+        set_next(e, a.free_head);
         if (a.free_head == kNoEdge) a.free_tail = e;
         a.free_head = e;
         ++a.free_count;
@@ -53,7 +44,7 @@ QuadEdgeMesh::Arena QuadEdgeMesh::join(Arena a, const Arena& b) {
         a.free_head = b.free_head;
         a.free_tail = b.free_tail;
     } else if (b.free_head != kNoEdge) {
-        next_of(a.free_tail) = b.free_head;
+        set_next(a.free_tail, b.free_head);
         a.free_tail = b.free_tail;
     }
     a.free_count += b.free_count;
