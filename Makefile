@@ -21,7 +21,8 @@
 #                       thread (built normally; part of make check)
 #   make check-sanitizers   not part of make check (slow): check-asan, the unit and API
 #                       suites under ASan+UBSan (in build/asan), then check-tsan, the
-#                       thread test under ThreadSanitizer (in build/tsan)
+#                       thread test and the worker_pool and ring_prefetcher unit
+#                       suites under ThreadSanitizer (in build/tsan)
 #   make fuzz       libFuzzer on the public API for FUZZ_SECONDS (300; clang), crashes in
 #                   build/fuzz/; make check replays a fixed walk of 1500 inputs (check-fuzz)
 
@@ -379,6 +380,10 @@ $(B)/asan/tests/api: $(API_SRC) $(wildcard tests/api/*.h) include/poissondisk.h 
 	@mkdir -p $(@D)
 	$(CC) $(PDS_TEST_CFLAGS) $(CFLAGS) $(ASAN_FLAGS) -o $@ $(API_SRC) -L$(B)/asan -lpoissondisk \
 	    -Wl,-rpath,'$$ORIGIN/..' $(CHECK_LIBS) -lm
+$(B)/tsan/tests/unit: $(UNIT_SRC) $(filter-out %/capi%.o,$(TSAN_OBJ)) $(wildcard tests/unit/*.hpp)
+	@mkdir -p $(@D)
+	$(CXX) $(PDS_TEST_CXXFLAGS) $(CXXFLAGS) $(TSAN_FLAGS) -o $@ $(UNIT_SRC) \
+	    $(filter-out %/capi%.o,$(TSAN_OBJ)) $(CHECK_LIBS)
 $(B)/tsan/tests/threads: tests/threads/threads.c include/poissondisk.h $(B)/tsan/libpoissondisk.so
 	@mkdir -p $(@D)
 	$(CC) $(PDS_TEST_CFLAGS) $(CFLAGS) $(TSAN_FLAGS) -pthread -o $@ $< -L$(B)/tsan -lpoissondisk \
@@ -388,8 +393,12 @@ check-asan: $(B)/asan/tests/unit $(B)/asan/tests/api
 	$(ASAN_ENV) $(B)/asan/tests/unit
 	$(ASAN_ENV) $(B)/asan/tests/api
 
-check-tsan: $(B)/tsan/tests/threads
+# The suites whose threads share data: the pool, and the helper that walks
+# the mesh while the caller inserts.
+TSAN_SUITES := worker_pool ring_prefetcher
+check-tsan: $(B)/tsan/tests/threads $(B)/tsan/tests/unit
 	$(TSAN_ENV) $(B)/tsan/tests/threads
+	for suite in $(TSAN_SUITES); do $(TSAN_ENV) CK_RUN_SUITE=$$suite $(B)/tsan/tests/unit || exit 1; done
 
 check-sanitizers: deps
 	@$(MAKE) --no-print-directory check-asan

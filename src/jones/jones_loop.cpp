@@ -30,7 +30,9 @@ JonesLoop<Space, Rule>::JonesLoop(const Rectangle& domain, double r, const Torus
 
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::reserve(std::size_t points) {
-    // Each reserve either succeeds or leaves its container as it was.
+    // Each reserve either succeeds or leaves its container as it was. The
+    // helper reads the mesh's arrays: it stops before they may move.
+    quiet_helper();
     const std::size_t vertices = vertices_for(points);
     dt_.reserve(vertices + Delaunay::kGhosts);
     tree_.reserve(vertices);
@@ -54,12 +56,14 @@ void JonesLoop<Space, Rule>::adopt(const std::vector<Point>& points, const std::
         throw std::logic_error("hand-over without the field's values");
     if (count() != 0 || (!Space::kPeriodic && !has_room_for(points.size())))
         throw std::logic_error("hand-over without room");
+    quiet_helper();
     order_.resize(points.size());
     space_.adopt(*this, points, order, values, poll, build);
 }
 
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::set_radius(double r, const PointRadii* radii) {
+    quiet_helper();  // a field's mesh is rebuilt
     settle();
     rule_.rescale(*this, radii);
     regions_.stop();  // its darts were drawn for the old radius

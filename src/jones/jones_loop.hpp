@@ -62,6 +62,7 @@
 #include "jones/jones_stage.hpp"
 #include "jones/point_order.hpp"
 #include "jones/region_darts.hpp"
+#include "jones/ring_prefetcher.hpp"
 #include "mesh/delaunay.hpp"
 
 namespace pds {
@@ -113,6 +114,16 @@ public:
     void carry_darts(std::uint64_t salted_seed, std::size_t epoch) override;
     const RegionDarts::Stats& region_stats() const override { return regions_.stats(); }
     void set_region_darts_per_cell(double mean) override { regions_.set_darts_per_cell(mean); }
+    void allow_helper(bool on) override {
+        helper_allowed_ = on;
+        if (!on) quiet_helper();
+    }
+    // Stops the helper (joins it): before the darts or the mesh's arrays
+    // move, or the mesh changes otherwise than by insertions.
+    void quiet_helper() {
+        prefetcher_.stop();
+        dt_.set_shared(false);
+    }
 
 private:
     friend Space;
@@ -212,6 +223,10 @@ private:
     std::size_t fixed_ = 0;  // the first points are fixed (set_fixed)
     unsigned threads_ = 1;   // for measure_all_cells (set_threads)
     RegionDarts regions_;    // on from the parallel opening's hand-over (carry_darts)
+    // Walks the rings ahead of the regions' insertions, with threads, inside
+    // pds_run (allow_helper); stopped before the darts or the mesh may move.
+    RingPrefetcher prefetcher_;
+    bool helper_allowed_ = false;
 };
 
 }  // namespace pds

@@ -27,6 +27,7 @@ void JonesLoop<Space, Rule>::carry_darts(std::uint64_t salted_seed, std::size_t 
     // Another salt: these streams share nothing with the opening's.
     Torus torus;
     if constexpr (Space::kPeriodic) torus = space_.copies().torus();
+    quiet_helper();
     regions_.start(mix64(salted_seed ^ 0x6A09E667F3BCC909ull), epoch, space_.clip_box(),
                    one_radius ? r_ : rule_.rmax(), torus, !one_radius);
 }
@@ -34,12 +35,18 @@ void JonesLoop<Space, Rule>::carry_darts(std::uint64_t salted_seed, std::size_t 
 template <class Space, class Rule>
 const Point* JonesLoop<Space, Rule>::next_region_point() {
     while (!regions_.has_pending()) {
+        quiet_helper();  // it reads the darts the next epoch replaces
         if (regions_.ending() || !draw_region_epoch()) {
             // The loop's own draws go on from here: its tree of bounds.
             regions_.stop();
             tree_.rebuild();
             return nullptr;
         }
+    }
+    // A new epoch's insertions: the helper walks their rings ahead of them.
+    if (helper_allowed_ && threads_ > 1 && regions_.next_index() == 0 && !prefetcher_.running()) {
+        dt_.set_shared(true);  // before the helper starts reading
+        if (!prefetcher_.start(dt_, regions_.pending_darts(), regions_.pending_count())) dt_.set_shared(false);
     }
     return &regions_.pending().p;
 }
@@ -49,6 +56,7 @@ void JonesLoop<Space, Rule>::add_region_point() {
     if (!regions_.has_pending()) throw std::logic_error("add_next without next");
     // The next darts' rings, fetched together ahead of their insertions.
     if (regions_.next_index() % kMaxBatch == 0) {
+        prefetcher_.reached(regions_.next_index());
         VertexIndex ahead[kMaxBatch];
         const std::size_t n = regions_.sources_ahead(ahead, kMaxBatch);
         dt_.prefetch_rings(ahead, n);

@@ -94,6 +94,10 @@ public:
     // from epoch `epoch` on. Only the one-radius stages of the rectangle
     // and the polygon do; the others ignore it.
     virtual void carry_darts(std::uint64_t /*salted_seed*/, std::size_t /*epoch*/) {}
+    // Lets a helper thread run ahead of the free regions' insertions
+    // (ring_prefetcher.hpp) while on; off stops it. Sampler::run turns it
+    // on for its own duration only, so no thread outlives a call.
+    virtual void allow_helper(bool /*on*/) {}
     virtual const RegionDarts::Stats& region_stats() const = 0;
     // Epochs of another mean length (RegionDarts::set_darts_per_cell): lets
     // a test check the law where the darts of an epoch often meet.

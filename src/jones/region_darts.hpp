@@ -119,6 +119,9 @@ public:
     bool has_values() const { return varying_; }
     double pending_value() const { return values_[next_]; }
     void pop() { ++next_; }
+    // The pending darts, all of them (they do not change until the next epoch).
+    const Dart* pending_darts() const { return pending_.data(); }
+    std::size_t pending_count() const { return pending_.size(); }
     std::size_t next_index() const { return next_; }
     // The cells of the next n pending darts (fewer at the end).
     std::size_t sources_ahead(VertexIndex* out, std::size_t n) const {

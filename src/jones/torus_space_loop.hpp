@@ -45,6 +45,7 @@ void TorusSpace::make_room_for_copies(Loop& loop, std::size_t copies) {
         original_.capacity() >= need && loop.order_.capacity() > loop.count())
         return;
     const std::size_t want = std::max(need, dt.vertex_count() + dt.vertex_count() / 4);
+    loop.quiet_helper();  // it reads the mesh's arrays, which may move
     dt.reserve(want);
     loop.tree_.reserve(want);
     is_copy_.reserve(want);

@@ -333,6 +333,15 @@ Sampler::RunEnd Sampler::run(std::size_t max_new, std::size_t* added) {
         ~Watch() { slot = nullptr; }
     } watch{meter_};
     meter_ = &meter;
+    // A helper may walk ahead of the insertions while this call runs, and
+    // stops before it returns (jones/ring_prefetcher.hpp).
+    struct Helper {
+        JonesStage* stage;
+        ~Helper() {
+            if (stage) stage->allow_helper(false);
+        }
+    } helper{jones_.get()};
+    if (helper.stage) helper.stage->allow_helper(parallel_);
     while (max_new == 0 || *added < max_new) {
         if (grows) prepare(count() + 1);  // nothing to do while there is room
         if (!add_one()) {
