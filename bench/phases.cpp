@@ -94,19 +94,31 @@ int check_against_library(double radius, std::uint64_t seed, unsigned threads, s
 
 double per(double a, std::size_t b) { return b == 0 ? 0.0 : a / static_cast<double>(b); }
 
+// What both processes are timed on: the unit square at R = sqrt(0.6966/N),
+// with room for 1.2 N + 1000 points (a maximal pattern holds about 1.0 N).
+struct Setup {
+    explicit Setup(double n_target)
+        : radius(std::sqrt(0.6966 / n_target)), room(static_cast<std::size_t>(1.2 * n_target) + 1000) {}
+    double radius;
+    pds::Box square{0.0, 0.0, 1.0, 1.0};
+    std::size_t room;
+};
+
 // The parallel process on `threads` threads, as Sampler::prepare sets it up:
 // the space-time opening, then the Jones stage, which carries the darts on
 // in the free regions from the hand-over.
 int parallel_phases(double n_target, std::uint64_t seed, unsigned threads, bool check) {
     using Clock = std::chrono::steady_clock;
-    const double radius = std::sqrt(0.6966 / n_target);
-    const pds::Box square{0.0, 0.0, 1.0, 1.0};
-    const auto room = static_cast<std::size_t>(1.2 * n_target) + 1000;
+    const Setup setup(n_target);
+    const double radius = setup.radius;
+    const pds::Box& square = setup.square;
+    const std::size_t room = setup.room;
     pds::Rng rng(seed);
     pds::SpaceTimeDartStage opening(square, nullptr, radius, seed);
     const auto jones_stage = pds::make_jones_stage(square, radius);
     pds::JonesStage& jones = *jones_stage;
     jones.set_threads(threads);
+    jones.allow_helper(true);  // as pds_run does
     opening.set_threads(threads);
     opening.reserve(room);
     jones.reserve(room);
@@ -200,9 +212,10 @@ int main(int argc, char** argv) {
     if (arg != argc) return usage();
     if (threads != 0) return parallel_phases(n_target, seed, threads, check);
 
-    const double radius = std::sqrt(0.6966 / n_target);
-    const pds::Box square{0.0, 0.0, 1.0, 1.0};
-    const auto room = static_cast<std::size_t>(1.2 * n_target) + 1000;  // a maximal pattern holds about 1.0 N
+    const Setup setup(n_target);
+    const double radius = setup.radius;
+    const pds::Box& square = setup.square;
+    const std::size_t room = setup.room;
     pds::Rng rng(seed);
     pds::DartStage darts(square, nullptr, radius);
     const auto jones_stage = pds::make_jones_stage(square, radius);
