@@ -4,7 +4,6 @@
 
 #if !defined(__wasi__)
 #include <chrono>
-#include <system_error>
 
 #include "core/batch.hpp"
 
@@ -18,8 +17,10 @@ bool RingPrefetcher::start(const Delaunay& mesh, const RegionDarts::Dart* darts,
     try {
         thread_ = std::thread([this, &mesh, darts, n] { walk(mesh, darts, n); });
         return true;
-    } catch (const std::system_error&) {
-        return false;  // no thread: the insertions go on without the helper
+    } catch (...) {
+        // No thread (std::system_error), or no memory for its state: the
+        // insertions go on without the helper.
+        return false;
     }
 }
 
