@@ -120,10 +120,7 @@ public:
     }
     // Stops the helper (joins it): before the darts or the mesh's arrays
     // move, or the mesh changes otherwise than by insertions.
-    void quiet_helper() {
-        prefetcher_.stop();
-        dt_.set_shared(false);
-    }
+    void quiet_helper() { prefetcher_.stop(); }
 
 private:
     friend Space;

@@ -44,10 +44,8 @@ const Point* JonesLoop<Space, Rule>::next_region_point() {
         }
     }
     // A new epoch's insertions: the helper walks their rings ahead of them.
-    if (helper_allowed_ && threads_ > 1 && regions_.next_index() == 0 && !prefetcher_.running()) {
-        dt_.set_shared(true);  // before the helper starts reading
-        if (!prefetcher_.start(dt_, regions_.pending_darts(), regions_.pending_count())) dt_.set_shared(false);
-    }
+    if (helper_allowed_ && threads_ > 1 && regions_.next_index() == 0 && !prefetcher_.running())
+        prefetcher_.start(dt_, regions_.pending_darts(), regions_.pending_count());
     return &regions_.pending().p;
 }
 
@@ -55,6 +53,9 @@ template <class Space, class Rule>
 void JonesLoop<Space, Rule>::add_region_point() {
     if (!regions_.has_pending()) throw std::logic_error("add_next without next");
     // The next darts' rings, fetched together ahead of their insertions.
+    // With the helper too: its walk brings the lines into the shared cache
+    // and its own core's, this fetch into this core's, and dropping it was
+    // measured to cost (docs/performance.md, 1.15.3).
     if (regions_.next_index() % kMaxBatch == 0) {
         prefetcher_.reached(regions_.next_index());
         VertexIndex ahead[kMaxBatch];

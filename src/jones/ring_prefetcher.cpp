@@ -9,25 +9,30 @@
 
 namespace pds {
 
-bool RingPrefetcher::start(const Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n) noexcept {
+bool RingPrefetcher::start(Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n) noexcept {
     stop();
     if (n <= kMaxBatch) return false;  // the caller's own batch covers them
     reached_.store(0, std::memory_order_relaxed);
     stop_.store(false, std::memory_order_relaxed);
+    mesh.set_shared(true);  // before the thread's first read
     try {
         thread_ = std::thread([this, &mesh, darts, n] { walk(mesh, darts, n); });
-        return true;
     } catch (...) {
         // No thread (std::system_error), or no memory for its state: the
         // insertions go on without the helper.
+        mesh.set_shared(false);
         return false;
     }
+    mesh_ = &mesh;
+    return true;
 }
 
 void RingPrefetcher::stop() noexcept {
     if (!thread_.joinable()) return;
     stop_.store(true, std::memory_order_relaxed);
     thread_.join();
+    mesh_->set_shared(false);  // no reader left
+    mesh_ = nullptr;
 }
 
 void RingPrefetcher::walk(const Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n) {

@@ -13,13 +13,16 @@
 // It changes nothing the run computes: it reads links and prefetches. It
 // reads while the caller writes, so it sees each word old or new (relaxed
 // loads and stores, core/relaxed.hpp), which at worst makes a prefetch
-// useless; its walks are bounded. It reads the darts, which do not change
-// during an epoch's insertions, and no container that could move: the run
-// stops it (joins the thread) before the darts are drawn again and before
-// anything may reallocate the mesh (JonesLoop::quiet_helper), and it never
-// outlives the pds_run call that started it (Sampler::run). When the caller
-// stops advancing it gives up rather than spin; when its thread cannot be
-// started the insertions simply go without it.
+// useless; its walks are bounded. It owns the mesh's shared switch
+// (Delaunay::set_shared): on from before its thread starts until after it
+// is joined, so the caller's insertions are shared exactly while it runs.
+// It reads the darts, which do not change during an epoch's insertions,
+// and no container that could move: the run stops it (joins the thread)
+// before the darts are drawn again and before anything may reallocate the
+// mesh (JonesLoop::quiet_helper), and it never outlives the pds_run call
+// that started it (Sampler::run). When the caller stops advancing it gives
+// up rather than spin; when its thread cannot be started the insertions
+// simply go without it.
 #ifndef PDS_RING_PREFETCHER_HPP
 #define PDS_RING_PREFETCHER_HPP
 
@@ -40,19 +43,21 @@ public:
     RingPrefetcher(const RingPrefetcher&) = delete;
     RingPrefetcher& operator=(const RingPrefetcher&) = delete;
 #if defined(__wasi__)
-    bool start(const Delaunay&, const RegionDarts::Dart*, std::size_t) { return false; }
+    bool start(Delaunay&, const RegionDarts::Dart*, std::size_t) { return false; }
     void reached(std::size_t) {}
     void stop() {}
     bool running() const { return false; }
 #else
     ~RingPrefetcher() { stop(); }
     // Walks, ahead of the caller, the rings of darts[kMaxBatch .. n)'s
-    // cells (the caller fetches its first batch itself). Never throws;
-    // false when it did not start (too few darts, or no thread).
-    bool start(const Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n) noexcept;
+    // cells (the caller fetches its first batch itself); the mesh is shared
+    // until stop(). Never throws; false, and the mesh not shared, when it
+    // did not start (too few darts, or no thread).
+    bool start(Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n) noexcept;
     // The caller is about to insert dart `next`.
     void reached(std::size_t next) { reached_.store(next, std::memory_order_relaxed); }
-    // Ends the walk and joins the thread; nothing if none runs.
+    // Ends the walk, joins the thread and unshares the mesh; nothing if
+    // none runs.
     void stop() noexcept;
     bool running() const { return thread_.joinable(); }
 
@@ -60,6 +65,7 @@ private:
     void walk(const Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n);
 
     std::thread thread_;
+    Delaunay* mesh_ = nullptr;  // shared while the thread runs
     std::atomic<std::size_t> reached_{0};
     std::atomic<bool> stop_{false};
 #endif

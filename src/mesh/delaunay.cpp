@@ -126,7 +126,7 @@ void Delaunay::prefetch_rings(const std::uint32_t* vertices, std::size_t n) cons
                 }
             }
             const std::uint32_t dest = mesh_.load_org<kShared>(QuadEdgeMesh::sym(edge[k]));
-            if (!kShared || dest < points_.capacity()) {
+            if (!kShared || has_vertex_slot(dest)) {
                 pds::prefetch(&points_[dest]);
                 if (weighted_) pds::prefetch(&radii_[dest]);
             }
@@ -153,7 +153,7 @@ void Delaunay::prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t 
         if (kShared && !mesh_.within(first)) continue;
         EdgeRef e = first;
         do {
-            const EdgeRef link = QuadEdgeMesh::rot(mesh_.load_onext<kShared>(QuadEdgeMesh::rot_inv(e)));  // lnext
+            const EdgeRef link = mesh_.load_lnext<kShared>(e);
             if (kShared && !mesh_.within(link)) break;
             pds::prefetch(mesh_.record_address(link));
             edge[m++] = link;
@@ -164,7 +164,7 @@ void Delaunay::prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t 
     // triangle on its other side (what the flip test reads).
     std::size_t kept = 0;
     for (std::size_t i = 0; i < m; ++i) {
-        const EdgeRef behind = QuadEdgeMesh::rot(mesh_.load_onext<kShared>(QuadEdgeMesh::rot(edge[i])));  // oprev
+        const EdgeRef behind = mesh_.load_oprev<kShared>(edge[i]);
         if (kShared && !mesh_.within(behind)) continue;
         pds::prefetch(mesh_.record_address(behind));
         edge[kept++] = behind;
@@ -172,7 +172,7 @@ void Delaunay::prefetch_beyond_rings(const std::uint32_t* vertices, std::size_t 
     // Round 3: the far corners themselves (and their radii).
     for (std::size_t i = 0; i < kept; ++i) {
         const std::uint32_t dest = mesh_.load_org<kShared>(QuadEdgeMesh::sym(edge[i]));
-        if (kShared && dest >= points_.capacity()) continue;
+        if (kShared && !has_vertex_slot(dest)) continue;
         pds::prefetch(&points_[dest]);
         if (weighted_) pds::prefetch(&radii_[dest]);
     }

@@ -89,6 +89,7 @@ public:
     // Changing the mesh in any other way needs it off and that thread gone
     // (reserve() refuses with std::logic_error while it is on).
     void set_shared(bool on) { shared_ = on; }
+    bool shared() const { return shared_; }
 
     // Inserts points[order[0]], points[order[1]], ... (n of them), each walk
     // starting at the vertex inserted before it: a neighbour when the order
@@ -199,6 +200,9 @@ private:
     std::uint32_t insert_as(const Point& p, std::uint32_t near);
     template <bool kShared>
     std::uint32_t insert_as(const Point& p, double r, std::uint32_t near);
+    // A vertex index inside the points' arrays: a shared walk may read an
+    // origin mid-change (a free record's), which is none.
+    bool has_vertex_slot(std::uint32_t v) const { return v < points_.capacity(); }
     template <bool kShared>
     EdgeRef load_vertex_edge(VertexIndex v) const {
         if constexpr (kShared) return load_relaxed(vertex_edge_[v]);

@@ -72,8 +72,9 @@ public:
     static EdgeRef rot_inv(EdgeRef e) { return (e & ~3u) | ((e + 3u) & 3u); }
 
     EdgeRef onext(EdgeRef e) const { return rec_[e >> 2].next[e & 3u]; }
-    // onext and org, as a reader on another thread reads them while the mesh
-    // changes (kShared: a link or an origin, old or new), or plainly.
+    // onext, org, oprev and lnext, as a reader on another thread reads them
+    // while the mesh changes (kShared: a link or an origin, old or new), or
+    // plainly.
     template <bool kShared>
     EdgeRef load_onext(EdgeRef e) const {
         const EdgeRef& word = rec_[e >> 2].next[e & 3u];
@@ -86,8 +87,12 @@ public:
         if constexpr (kShared) return load_relaxed(word);
         return word;
     }
-    EdgeRef oprev(EdgeRef e) const { return rot(onext(rot(e))); }
-    EdgeRef lnext(EdgeRef e) const { return rot(onext(rot_inv(e))); }
+    template <bool kShared>
+    EdgeRef load_oprev(EdgeRef e) const { return rot(load_onext<kShared>(rot(e))); }
+    template <bool kShared>
+    EdgeRef load_lnext(EdgeRef e) const { return rot(load_onext<kShared>(rot_inv(e))); }
+    EdgeRef oprev(EdgeRef e) const { return load_oprev<false>(e); }
+    EdgeRef lnext(EdgeRef e) const { return load_lnext<false>(e); }
     EdgeRef lprev(EdgeRef e) const { return sym(onext(e)); }
     EdgeRef rnext(EdgeRef e) const { return rot_inv(onext(rot(e))); }
     EdgeRef rprev(EdgeRef e) const { return onext(sym(e)); }

@@ -2,11 +2,11 @@
 // insertions: a mesh it walks beside ends exactly as the same mesh built
 // without it, record for record, plain and weighted (disks hidden on the
 // way); it does not start for a batch of darts or fewer; it stops (joins)
-// when asked, whether it is walking or waiting for the caller; the mesh's
-// arrays refuse to move while it may read them. `make
-// check-tsan` runs this suite built with -fsanitize=thread too: there, a
-// write the helper may meet that is not a relaxed atomic store (an insertion
-// without set_shared(true)) is reported as a data race.
+// when asked, whether it is walking or waiting for the caller; the mesh is
+// shared exactly while it runs, and its arrays refuse to move meanwhile.
+// `make check-tsan` runs this suite built with -fsanitize=thread too: there,
+// a write the helper may meet that is not a relaxed atomic store (an
+// insertion on a mesh not shared) is reported as a data race.
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -55,17 +55,14 @@ pds::Delaunay build(const std::vector<Disk>& disks, std::size_t before, bool wei
         darts[k] = pds::RegionDarts::Dart{disks[before + k].p, 0.0, source};
     }
     pds::RingPrefetcher walker;
-    if (helper) {
-        dt.set_shared(true);
-        ck_assert(walker.start(dt, darts.data(), n));
-    }
+    if (helper) ck_assert(walker.start(dt, darts.data(), n));
     for (std::size_t k = 0; k < n; ++k) {
         if (k % pds::kMaxBatch == 0) walker.reached(k);
         last = insert(disks[before + k], last);
     }
     walker.stop();
-    dt.set_shared(false);
     ck_assert(!walker.running());
+    ck_assert(!dt.shared());
     return dt;
 }
 
@@ -109,20 +106,23 @@ START_TEST(the_mesh_it_walks_beside_ends_as_without_it) {
 END_TEST
 
 START_TEST(not_for_a_batch_or_fewer) {
-    const pds::Delaunay dt = plain_mesh(200, 5);
+    pds::Delaunay dt = plain_mesh(200, 5);
     std::vector<pds::RegionDarts::Dart> darts(pds::kMaxBatch + 1, pds::RegionDarts::Dart{{0.5, 0.5}, 0.0, 4});
     pds::RingPrefetcher walker;
     ck_assert(!walker.start(dt, darts.data(), pds::kMaxBatch));
     ck_assert(!walker.running());
+    ck_assert(!dt.shared());
     ck_assert(walker.start(dt, darts.data(), pds::kMaxBatch + 1));
+    ck_assert(dt.shared());
     walker.stop();
     ck_assert(!walker.running());
+    ck_assert(!dt.shared());
     walker.stop();  // again: nothing to do
 }
 END_TEST
 
 START_TEST(stops_when_asked_walking_or_waiting) {
-    const pds::Delaunay dt = plain_mesh(2000, 9);
+    pds::Delaunay dt = plain_mesh(2000, 9);
     // Many darts and a caller that never advances: the helper walks a few
     // batches ahead, then waits; stop() ends it either way.
     std::vector<pds::RegionDarts::Dart> darts(100000);
@@ -135,6 +135,7 @@ START_TEST(stops_when_asked_walking_or_waiting) {
         if (round % 2 == 1) walker.reached(darts.size() / 2);  // far ahead: it walks
         walker.stop();
         ck_assert(!walker.running());
+        ck_assert(!dt.shared());
     }
 }
 END_TEST
