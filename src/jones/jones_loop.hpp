@@ -58,6 +58,7 @@
 #include "core/indices.hpp"
 #include "core/point.hpp"
 #include "core/rng.hpp"
+#include "jones/active_scan.hpp"
 #include "jones/free_area_tree.hpp"
 #include "jones/jones_stage.hpp"
 #include "jones/point_order.hpp"
@@ -120,7 +121,11 @@ public:
     }
     // Stops the helper (joins it): before the darts or the mesh's arrays
     // move, or the mesh changes otherwise than by insertions.
-    void quiet_helper() { prefetcher_.stop(); }
+    // A scan of the active list it began ends where it stands.
+    void quiet_helper() {
+        prefetcher_.stop();
+        active_scan_.seal();
+    }
 
 private:
     friend Space;
@@ -224,6 +229,14 @@ private:
     // pds_run (allow_helper); stopped before the darts or the mesh may move.
     RingPrefetcher prefetcher_;
     bool helper_allowed_ = false;
+    // The next epoch's scan of the active list, by the helper between its
+    // walks when the bounds stay (Space::kBoundsStayWhileInserting).
+    ActiveScan active_scan_;
+    struct ScanStep final : RingPrefetcher::SideJob {
+        explicit ScanStep(ActiveScan& s) : scan(s) {}
+        bool step() override { return scan.step(); }
+        ActiveScan& scan;
+    } scan_step_{active_scan_};
 };
 
 }  // namespace pds

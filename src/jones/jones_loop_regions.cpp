@@ -35,17 +35,27 @@ void JonesLoop<Space, Rule>::carry_darts(std::uint64_t salted_seed, std::size_t 
 template <class Space, class Rule>
 const Point* JonesLoop<Space, Rule>::next_region_point() {
     while (!regions_.has_pending()) {
-        quiet_helper();  // it reads the darts the next epoch replaces
+        // The helper reads the darts the next epoch replaces. The epoch's
+        // insertions are done: the scan it may have begun stays valid.
+        prefetcher_.stop();
         if (regions_.ending() || !draw_region_epoch()) {
             // The loop's own draws go on from here: its tree of bounds.
+            active_scan_.drop();
             regions_.stop();
             tree_.rebuild();
             return nullptr;
         }
     }
-    // A new epoch's insertions: the helper walks their rings ahead of them.
-    if (helper_allowed_ && threads_ > 1 && regions_.next_index() == 0 && !prefetcher_.running())
-        prefetcher_.start(dt_, regions_.pending_darts(), regions_.pending_count());
+    // A new epoch's insertions: the helper walks their rings ahead of them
+    // and, in the plane, scans the active list for the next epoch meanwhile.
+    if (helper_allowed_ && threads_ > 1 && regions_.next_index() == 0 && !prefetcher_.running()) {
+        RingPrefetcher::SideJob* job = nullptr;
+        if constexpr (Space::kBoundsStayWhileInserting) {
+            if (!active_scan_.begun()) active_scan_.begin(regions_.active(), tree_);
+            job = &scan_step_;
+        }
+        prefetcher_.start(dt_, regions_.pending_darts(), regions_.pending_count(), job);
+    }
     return &regions_.pending().p;
 }
 
@@ -75,22 +85,22 @@ template <class Space, class Rule>
 bool JonesLoop<Space, Rule>::draw_region_epoch() {
     std::vector<SiteIndex>& active = regions_.active();
     const std::size_t sites = dt_.vertex_count() - Delaunay::kGhosts;
-    // The sites added since the last epoch join the list (room first: a
-    // failure must leave the list as it was); the covered ones leave it.
+    // The listed sites that are covered leave the list, the others' bounds
+    // are summed in its order (beside the last insertions, if the helper
+    // scanned them); then the sites added since join it (room first: a
+    // failure leaves a list a later call scans again alike).
+    if (!active_scan_.begun()) active_scan_.begin(active, tree_);
+    double total = active_scan_.take();
     active.reserve(active.size() + (sites - regions_.listed()));
-    for (std::size_t s = regions_.listed(); s < sites; ++s)
-        if (tree_.weight(s) > 0.0) active.push_back(static_cast<SiteIndex>(s));
-    regions_.set_listed(sites);
-    double total = 0.0;
-    std::size_t kept = 0;
-    for (const SiteIndex s : active) {
+    for (std::size_t s = regions_.listed(); s < sites; ++s) {
         const double w = tree_.weight(s);
         if (w > 0.0) {
-            active[kept++] = s;
+            active.push_back(static_cast<SiteIndex>(s));
             total += w;
         }
     }
-    active.resize(kept);
+    regions_.set_listed(sites);
+    const std::size_t kept = active.size();
     if (kept == 0 || !(total > 0.0)) return false;
     // An epoch's length: about kDartsPerCell darts per cell at its bound.
     const double dt = regions_.darts_per_cell() * static_cast<double>(kept) / total;

@@ -38,6 +38,9 @@ public:
     static constexpr bool kPeriodic = false;
     // Its cells can be measured by several threads at once (no scratch).
     static constexpr bool kMeasuresSideBySide = true;
+    // An insertion measures the new cell only: the other sites' bounds stay
+    // as they were (insert_point), so they may be scanned meanwhile.
+    static constexpr bool kBoundsStayWhileInserting = true;
 
     PlaneSpace(const Rectangle& domain, double /*r*/, const Torus& /*torus*/, bool /*weighted*/,
                const std::shared_ptr<const Polygon>& /*polygon: none*/)

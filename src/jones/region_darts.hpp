@@ -27,7 +27,8 @@
 // by side in fixed blocks, each block writing its own list; the lists are
 // joined in block order, and the decision reads times only. The scan of
 // the active list (its bounds summed in its order), the decision and the
-// insertions run on the caller's thread.
+// insertions run on the caller's thread; in the plane, with threads, the
+// scan runs beside the last epoch's insertions instead (active_scan.hpp).
 //
 // With a field. A new point keeps the later ones out of its own disk, whose
 // radius the field gives at the point. A dart is then free iff no earlier

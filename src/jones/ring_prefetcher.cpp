@@ -9,14 +9,14 @@
 
 namespace pds {
 
-bool RingPrefetcher::start(Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n) noexcept {
+bool RingPrefetcher::start(Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n, SideJob* job) noexcept {
     stop();
     if (n <= kMaxBatch) return false;  // the caller's own batch covers them
     reached_.store(0, std::memory_order_relaxed);
     stop_.store(false, std::memory_order_relaxed);
     mesh.set_shared(true);  // before the thread's first read
     try {
-        thread_ = std::thread([this, &mesh, darts, n] { walk(mesh, darts, n); });
+        thread_ = std::thread([this, &mesh, darts, n, job] { walk(mesh, darts, n, job); });
     } catch (...) {
         // No thread (std::system_error), or no memory for its state: the
         // insertions go on without the helper.
@@ -35,7 +35,7 @@ void RingPrefetcher::stop() noexcept {
     mesh_ = nullptr;
 }
 
-void RingPrefetcher::walk(const Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n) {
+void RingPrefetcher::walk(const Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n, SideJob* job) {
     // Up to kAhead darts ahead of the caller: far enough that the lines
     // arrive before it needs them, near enough that they are still cached
     // (at 10^6 points 256 and 1024 did no better).
@@ -46,9 +46,12 @@ void RingPrefetcher::walk(const Delaunay& mesh, const RegionDarts::Dart* darts, 
     constexpr auto kNap = std::chrono::microseconds(50);
     constexpr int kPatience = 1000;
     for (std::size_t first = kMaxBatch; first < n; first += kMaxBatch) {
-        for (int waited = 0; first > reached_.load(std::memory_order_relaxed) + kAhead; ++waited) {
+        for (int waited = 0; first > reached_.load(std::memory_order_relaxed) + kAhead;) {
             if (waited == kPatience || stop_.load(std::memory_order_relaxed)) return;
+            if (job && job->step()) continue;  // a step of the side job instead of a nap
+            job = nullptr;
             std::this_thread::sleep_for(kNap);
+            ++waited;
         }
         if (stop_.load(std::memory_order_relaxed)) return;
         VertexIndex sources[kMaxBatch];
@@ -56,6 +59,8 @@ void RingPrefetcher::walk(const Delaunay& mesh, const RegionDarts::Dart* darts, 
         for (std::size_t i = first; i < n && m < kMaxBatch; ++i) sources[m++] = darts[i].source;
         mesh.prefetch_rings<true>(sources, m);
         mesh.prefetch_beyond_rings<true>(sources, m);
+    }
+    while (job && !stop_.load(std::memory_order_relaxed) && job->step()) {
     }
 }
 

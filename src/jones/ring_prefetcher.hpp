@@ -23,6 +23,11 @@
 // that started it (Sampler::run). When the caller stops advancing it gives
 // up rather than spin; when its thread cannot be started the insertions
 // simply go without it.
+//
+// Between its walks, while it waits for the caller, it may do a side job
+// in steps (the next epoch's scan of the active list, active_scan.hpp):
+// work whose result does not depend on how far it got, since the caller
+// finishes whatever it leaves once it is joined.
 #ifndef PDS_RING_PREFETCHER_HPP
 #define PDS_RING_PREFETCHER_HPP
 
@@ -39,21 +44,31 @@ namespace pds {
 
 class RingPrefetcher {
 public:
+    // Work done a step at a time; step() returns false once it is done.
+    class SideJob {
+    public:
+        virtual bool step() = 0;
+
+    protected:
+        ~SideJob() = default;
+    };
+
     RingPrefetcher() = default;
     RingPrefetcher(const RingPrefetcher&) = delete;
     RingPrefetcher& operator=(const RingPrefetcher&) = delete;
 #if defined(__wasi__)
-    bool start(Delaunay&, const RegionDarts::Dart*, std::size_t) { return false; }
+    bool start(Delaunay&, const RegionDarts::Dart*, std::size_t, SideJob* = nullptr) { return false; }
     void reached(std::size_t) {}
     void stop() {}
     bool running() const { return false; }
 #else
     ~RingPrefetcher() { stop(); }
     // Walks, ahead of the caller, the rings of darts[kMaxBatch .. n)'s
-    // cells (the caller fetches its first batch itself); the mesh is shared
-    // until stop(). Never throws; false, and the mesh not shared, when it
-    // did not start (too few darts, or no thread).
-    bool start(Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n) noexcept;
+    // cells (the caller fetches its first batch itself), and steps `job`
+    // (if any) while it waits; the mesh is shared until stop(). Never
+    // throws; false, and the mesh not shared, when it did not start (too
+    // few darts, or no thread).
+    bool start(Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n, SideJob* job = nullptr) noexcept;
     // The caller is about to insert dart `next`.
     void reached(std::size_t next) { reached_.store(next, std::memory_order_relaxed); }
     // Ends the walk, joins the thread and unshares the mesh; nothing if
@@ -62,7 +77,7 @@ public:
     bool running() const { return thread_.joinable(); }
 
 private:
-    void walk(const Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n);
+    void walk(const Delaunay& mesh, const RegionDarts::Dart* darts, std::size_t n, SideJob* job);
 
     std::thread thread_;
     Delaunay* mesh_ = nullptr;  // shared while the thread runs

@@ -40,6 +40,8 @@ class TorusSpace {
 public:
     static constexpr bool kPeriodic = true;
     static constexpr bool kMeasuresSideBySide = true;
+    // A margin widened during an insertion measures every cell again.
+    static constexpr bool kBoundsStayWhileInserting = false;
 
     TorusSpace(const Rectangle& domain, double r, const Torus& torus, bool weighted,
                const std::shared_ptr<const Polygon>& polygon);

@@ -23,6 +23,7 @@ int main() {
     srunner_add_suite(runner, curve_order_suite());
     srunner_add_suite(runner, worker_pool_suite());
     srunner_add_suite(runner, ring_prefetcher_suite());
+    srunner_add_suite(runner, active_scan_suite());
     srunner_add_suite(runner, time_order_suite());
     srunner_add_suite(runner, space_time_stage_suite());
     srunner_add_suite(runner, space_time_polygon_suite());

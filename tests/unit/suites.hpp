@@ -30,6 +30,7 @@ Suite* space_time_fixed_suite();
 Suite* dart_stage_fixed_suite();
 Suite* worker_pool_suite();
 Suite* ring_prefetcher_suite();
+Suite* active_scan_suite();
 Suite* time_order_suite();
 Suite* region_darts_suite();
 Suite* sampler_suite();

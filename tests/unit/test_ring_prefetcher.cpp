@@ -2,14 +2,18 @@
 // insertions: a mesh it walks beside ends exactly as the same mesh built
 // without it, record for record, plain and weighted (disks hidden on the
 // way); it does not start for a batch of darts or fewer; it stops (joins)
-// when asked, whether it is walking or waiting for the caller; the mesh is
+// when asked, whether it is walking or waiting for the caller; it does its
+// side job while it waits, and leaves what it did not do; the mesh is
 // shared exactly while it runs, and its arrays refuse to move meanwhile.
 // `make check-tsan` runs this suite built with -fsanitize=thread too: there,
 // a write the helper may meet that is not a relaxed atomic store (an
 // insertion on a mesh not shared) is reported as a data race.
+#include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "core/batch.hpp"
@@ -140,6 +144,36 @@ START_TEST(stops_when_asked_walking_or_waiting) {
 }
 END_TEST
 
+// A side job of `steps` steps, counted (read by the test while it runs).
+struct CountedJob final : pds::RingPrefetcher::SideJob {
+    explicit CountedJob(int n) : steps(n) {}
+    bool step() override { return done.fetch_add(1, std::memory_order_relaxed) + 1 < steps; }
+    int steps;
+    std::atomic<int> done{0};
+};
+
+START_TEST(steps_its_side_job_while_it_waits) {
+    pds::Delaunay dt = plain_mesh(2000, 10);
+    std::vector<pds::RegionDarts::Dart> darts(100000);
+    for (std::size_t k = 0; k < darts.size(); ++k)
+        darts[k] = pds::RegionDarts::Dart{{0.5, 0.5}, 0.0, static_cast<pds::VertexIndex>(4 + k % 2000)};
+    // The caller never advances: the helper walks a few batches ahead, then
+    // does the whole job instead of napping (up to 20 s here: no timing).
+    CountedJob job(500);
+    pds::RingPrefetcher walker;
+    ck_assert(walker.start(dt, darts.data(), darts.size(), &job));
+    for (int i = 0; i < 2000 && job.done < job.steps; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    walker.stop();
+    ck_assert_int_eq(job.done.load(), job.steps);  // all of it, and not a step more
+    // Stopped at once, it leaves the rest of a long job to the caller.
+    CountedJob endless(1 << 30);
+    ck_assert(walker.start(dt, darts.data(), darts.size(), &endless));
+    walker.stop();
+    ck_assert_int_lt(endless.done.load(), endless.steps);
+    ck_assert(!dt.shared());
+}
+END_TEST
+
 START_TEST(the_arrays_do_not_move_while_shared) {
     pds::Delaunay dt(pds::Box{0, 0, 1, 1});
     dt.reserve(100);
@@ -165,6 +199,7 @@ Suite* ring_prefetcher_suite() {
     tcase_add_test(t, the_mesh_it_walks_beside_ends_as_without_it);
     tcase_add_test(t, not_for_a_batch_or_fewer);
     tcase_add_test(t, stops_when_asked_walking_or_waiting);
+    tcase_add_test(t, steps_its_side_job_while_it_waits);
     tcase_add_test(t, the_arrays_do_not_move_while_shared);
     suite_add_tcase(s, t);
     return s;
