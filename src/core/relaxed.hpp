@@ -15,8 +15,20 @@
 
 namespace pds {
 
-inline void store_relaxed(std::uint32_t& word, std::uint32_t value) { __atomic_store_n(&word, value, __ATOMIC_RELAXED); }
-inline std::uint32_t load_relaxed(const std::uint32_t& word) { return __atomic_load_n(&word, __ATOMIC_RELAXED); }
+// A word written or read while another thread may meet it (kShared: a
+// relaxed atomic access), or plainly, which the compiler optimizes better.
+template <bool kShared>
+inline void store_word(std::uint32_t& word, std::uint32_t value) {
+    if constexpr (kShared)
+        __atomic_store_n(&word, value, __ATOMIC_RELAXED);
+    else
+        word = value;
+}
+template <bool kShared>
+inline std::uint32_t load_word(const std::uint32_t& word) {
+    if constexpr (kShared) return __atomic_load_n(&word, __ATOMIC_RELAXED);
+    return word;
+}
 
 }  // namespace pds
 

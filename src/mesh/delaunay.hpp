@@ -205,15 +205,11 @@ private:
     bool has_vertex_slot(std::uint32_t v) const { return v < points_.capacity(); }
     template <bool kShared>
     EdgeRef load_vertex_edge(VertexIndex v) const {
-        if constexpr (kShared) return load_relaxed(vertex_edge_[v]);
-        return vertex_edge_[v];
+        return load_word<kShared>(vertex_edge_[v]);
     }
     template <bool kShared>
     void set_vertex_edge(VertexIndex v, EdgeRef e) {
-        if constexpr (kShared)
-            store_relaxed(vertex_edge_[v], e);
-        else
-            vertex_edge_[v] = e;
+        store_word<kShared>(vertex_edge_[v], e);
     }
     template <bool kShared>
     void swap_edge(EdgeRef e);

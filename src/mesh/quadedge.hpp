@@ -77,15 +77,11 @@ public:
     // plainly.
     template <bool kShared>
     EdgeRef load_onext(EdgeRef e) const {
-        const EdgeRef& word = rec_[e >> 2].next[e & 3u];
-        if constexpr (kShared) return load_relaxed(word);
-        return word;
+        return load_word<kShared>(rec_[e >> 2].next[e & 3u]);
     }
     template <bool kShared>
     std::uint32_t load_org(EdgeRef e) const {
-        const std::uint32_t& word = rec_[e >> 2].org[(e >> 1) & 1u];
-        if constexpr (kShared) return load_relaxed(word);
-        return word;
+        return load_word<kShared>(rec_[e >> 2].org[(e >> 1) & 1u]);
     }
     template <bool kShared>
     EdgeRef load_oprev(EdgeRef e) const { return rot(load_onext<kShared>(rot(e))); }
@@ -105,8 +101,8 @@ public:
     template <bool kShared = false>
     void set_endpoints(EdgeRef e, std::uint32_t org, std::uint32_t dest) {
         Record& r = rec_[e >> 2];
-        put<kShared>(r.org[(e >> 1) & 1u], org);
-        put<kShared>(r.org[((e >> 1) & 1u) ^ 1u], dest);
+        store_word<kShared>(r.org[(e >> 1) & 1u], org);
+        store_word<kShared>(r.org[((e >> 1) & 1u) ^ 1u], dest);
     }
 
     // Building a mesh whole, in parts side by side (delaunay_build.cpp):
@@ -149,15 +145,8 @@ private:
         EdgeRef next[4];           // onext of quarters 0..3
         std::uint32_t org[2];      // origins of quarters 0 and 2
     };
-    template <bool kShared>
-    static void put(std::uint32_t& word, std::uint32_t value) {
-        if constexpr (kShared)
-            store_relaxed(word, value);
-        else
-            word = value;
-    }
     template <bool kShared = false>
-    void set_next(EdgeRef e, EdgeRef next) { put<kShared>(rec_[e >> 2].next[e & 3u], next); }
+    void set_next(EdgeRef e, EdgeRef next) { store_word<kShared>(rec_[e >> 2].next[e & 3u], next); }
     // Makes record e an isolated edge org -> dest.
     template <bool kShared = false>
     void init_edge(EdgeRef e, std::uint32_t org, std::uint32_t dest);
@@ -179,10 +168,10 @@ inline void QuadEdgeMesh::init_edge(EdgeRef e, std::uint32_t org, std::uint32_t 
     // An isolated edge: each end is its own ring; the two dual quarters point at
     // each other (one face on both sides).
     Record& r = rec_[e >> 2];
-    put<kShared>(r.next[0], e);
-    put<kShared>(r.next[1], e + 3);
-    put<kShared>(r.next[2], e + 2);
-    put<kShared>(r.next[3], e + 1);
+    store_word<kShared>(r.next[0], e);
+    store_word<kShared>(r.next[1], e + 3);
+    store_word<kShared>(r.next[2], e + 2);
+    store_word<kShared>(r.next[3], e + 1);
     set_endpoints<kShared>(e, org, dest);
 }
 
