@@ -18,9 +18,9 @@
 // free regions' epochs (draws side by side, decisions on the caller's
 // thread), their points' insertions (on the caller's thread alone) and the
 // Jones loop's last points. Run with N = 1 and 2 and compare the rows: the
-// insertions are the part that does not shrink with more threads. From the
-// hand-over on each point's two calls are timed apart, so those rows carry
-// a few clock reads a point (tens of nanoseconds).
+// insertions are the part that does not shrink with more threads. The
+// clock is read at each epoch's draw, not at each point, so the rows carry
+// no clock reads a point.
 //
 // Wall-clock times of one run: compare phases within a run, and runs on one
 // machine.
@@ -133,27 +133,39 @@ int parallel_phases(double n_target, std::uint64_t seed, unsigned threads, bool 
     const double t_handover = seconds_since(t);
 
     // A point is the free regions' while the process has made more points
-    // than it has handed out; the call that made them drew an epoch.
+    // than it has handed out. Once it has handed out all it made, the next
+    // call draws an epoch (made grows), or the process has ended and the
+    // call is the loop's. The clock is read there only, not at each point:
+    // an epoch's insertions run from the end of its draw to the next draw.
     double t_epochs = 0.0, t_insert = 0.0, t_loop = 0.0;
     std::size_t region_points = 0, loop_points = 0;
-    for (;;) {
-        const auto t0 = Clock::now();
+    auto span = Clock::now();  // the start of the insertions under way
+    for (bool ended = false; !ended;) {
+        if (region_points == jones.region_stats().points) {
+            const auto t0 = Clock::now();
+            t_insert += std::chrono::duration<double>(t0 - span).count();
+            const bool more = jones.next(rng) != nullptr;
+            span = Clock::now();
+            if (region_points == jones.region_stats().points) {
+                t_loop += std::chrono::duration<double>(span - t0).count();
+                ended = true;
+                if (!more) break;
+            } else {
+                t_epochs += std::chrono::duration<double>(span - t0).count();
+            }
+        } else {
+            jones.next(rng);
+        }
+        jones.add_next();
+        ++(ended ? loop_points : region_points);
+    }
+    // The loop's own points, after the process.
+    for (const auto t0 = Clock::now();; ++loop_points) {
         if (jones.next(rng) == nullptr) {
             t_loop += seconds_since(t0);
             break;
         }
-        const auto t1 = Clock::now();
-        const bool region = region_points < jones.region_stats().points;
         jones.add_next();
-        const auto t2 = Clock::now();
-        if (region) {
-            t_epochs += std::chrono::duration<double>(t1 - t0).count();
-            t_insert += std::chrono::duration<double>(t2 - t1).count();
-            ++region_points;
-        } else {
-            t_loop += std::chrono::duration<double>(t2 - t0).count();
-            ++loop_points;
-        }
     }
     const pds::RegionDarts::Stats& rs = jones.region_stats();
     const std::size_t total = jones.count();
