@@ -18,7 +18,8 @@
  * For each target size N (10^4 .. 10^7 by default) the radius is
  * R = sqrt(0.6966 / N) (random sequential adsorption saturates at
  * N pi R^2 / 4 = 0.547 per unit area). Every run happens in a fresh child
- * process, seeds 1..K for K repeats:
+ * process, seeds 1..K for K repeats, the methods one after another for each
+ * seed (so a machine whose speed drifts moves every method alike):
  *   - The timed region covers generating the points and nothing else: for
  *     the library pds_create and pds_run, for a baseline its whole sampler,
  *     grid included. Releasing the points (pds_destroy, free) is not timed.
@@ -37,7 +38,10 @@
  * ns / (N log2 N) (the paper's figure 7), peak bytes per point (the largest
  * of the repeats), instructions per point, the uncovered fraction pooled over
  * the repeats with its binomial standard error, and the minimum-distance
- * verdict; then the baselines' times relative to the library's. Then the
+ * verdict; then the baselines' times relative to the library's, as ratios
+ * of the medians and paired (the median over the seeds of each seed's
+ * ratio, whose two runs were minutes apart at most), with the parallel
+ * process's one thread against all (threads1/threads) paired too. Then the
  * chunked section (chunked.c): one pds_run against pds_run(s, 1) and pds_step
  * repeated, at the largest size up to 10^5. Figures, not assertions: nothing
  * here fails on a slow machine. It exits 1 only when a run fails, a pattern
@@ -453,10 +457,42 @@ static double ns_per_n_log_n(const struct summary *s) {
 
 /* ---- output ------------------------------------------------------------------------ */
 
+/* The median over the seeds of runs a's time over runs b's, seed by seed. */
+static double paired_ratio(const struct run_record *a, const struct run_record *b, int n) {
+    double ratios[MAX_REPEATS];
+    int i;
+    for (i = 0; i < n; ++i) ratios[i] = a[i].seconds / b[i].seconds;
+    return median(ratios, n);
+}
+
+/* The paired line: each method against the library, and the parallel
+ * process on one thread against all, when those ran. */
+static void print_paired(FILE *out, const struct options *opt, size_t target,
+                         struct run_record runs[METHOD_COUNT][MAX_REPEATS]) {
+    const char *const lead = "paired, the median of each seed's ratio:";
+    int m, any = 0;
+    if (opt->use_method[METHOD_POISSONDISK]) {
+        for (m = 0; m < METHOD_COUNT; ++m) {
+            if (m == METHOD_POISSONDISK || !opt->use_method[m]) continue;
+            if (!any) fprintf(out, "%-11s %9zu  %s", "", target, lead);
+            any = 1;
+            fprintf(out, "  %s/poissondisk %.2f", method_name[m],
+                    paired_ratio(runs[m], runs[METHOD_POISSONDISK], opt->repeats));
+        }
+    }
+    if (opt->use_method[METHOD_THREADS1] && opt->use_method[METHOD_THREADS]) {
+        if (!any) fprintf(out, "%-11s %9zu  %s", "", target, lead);
+        any = 1;
+        fprintf(out, "  threads1/threads %.2f",
+                paired_ratio(runs[METHOD_THREADS1], runs[METHOD_THREADS], opt->repeats));
+    }
+    if (any) fprintf(out, "\n");
+}
+
 static void print_header(FILE *out, const struct options *opt, const char *instruction_source) {
     fprintf(out,
             "poissondisk %s bench: maximal patterns in the unit square, R = sqrt(0.6966/N), "
-            "median of %d run%s\n",
+            "median of %d run%s, the methods in turn for each seed\n",
             pds_version_string(), opt->repeats, opt->repeats == 1 ? "" : "s");
     fprintf(out, "baselines: bridson k=%d; dart stops after %lu misses in a row\n",
             BRIDSON_CANDIDATES, opt->dart_misses);
@@ -635,7 +671,7 @@ static int parse_args(int argc, char **argv, struct options *opt) {
 
 int main(int argc, char **argv) {
     static struct summary rows[MAX_SIZES * METHOD_COUNT];
-    static struct run_record runs[MAX_REPEATS];
+    static struct run_record runs[METHOD_COUNT][MAX_REPEATS];
     struct options opt;
     struct run_record empty;
     long empty_kib[METHOD_COUNT] = {0};
@@ -682,21 +718,23 @@ int main(int argc, char **argv) {
         double radius = sqrt(SATURATION_AREA / (double)target), ours_seconds = -1.0;
         uint32_t probe_side = pattern_probe_side(target);
         int first_row = row_count;
-        for (m = 0; m < METHOD_COUNT; ++m) {
-            struct summary *s = &rows[row_count];
-            if (!opt.use_method[m]) continue;
-            for (r = 0; r < opt.repeats; ++r) {
-                runs[r] = measure((enum method)m, radius, (uint64_t)r + 1, &opt, probe_side);
-                if (!runs[r].ok) {
-                    fprintf(stderr, PROG ": %s at N=%zu, seed %d failed: %s\n", method_name[m],
-                            target, r + 1, runs[r].error);
+        for (r = 0; r < opt.repeats; ++r)
+            for (m = 0; m < METHOD_COUNT; ++m) {
+                if (!opt.use_method[m]) continue;
+                runs[m][r] = measure((enum method)m, radius, (uint64_t)r + 1, &opt, probe_side);
+                if (!runs[m][r].ok) {
+                    fprintf(stderr, PROG ": %s at N=%zu, seed %d failed: %s\n", method_name[m], target, r + 1,
+                            runs[m][r].error);
                     return 1;
                 }
             }
+        for (m = 0; m < METHOD_COUNT; ++m) {
+            struct summary *s = &rows[row_count];
+            if (!opt.use_method[m]) continue;
             s->method = (enum method)m;
             s->target = target;
             s->radius = radius;
-            summarize(s, runs, opt.repeats, empty_kib[m]);
+            summarize(s, runs[m], opt.repeats, empty_kib[m]);
             if (opt.callgrind) s->instructions_per_point = callgrind_instructions_per_point(
                                    (enum method)m, radius, opt.dart_misses);
             print_row(out, s);
@@ -724,6 +762,7 @@ int main(int argc, char **argv) {
                             rows[i].seconds / ours_seconds);
             fprintf(out, "\n");
         }
+        print_paired(out, &opt, target, runs);
     }
 
     if (opt.chunked < 0) {

@@ -62,6 +62,23 @@ expect "the table has a row per method and size" \
     [ "$(grep -cE '^(poissondisk|bridson|dart|periodic|field|threads1|threads) +(1000|3000) ' "$tmp/b.out")" -eq 14 ]
 expect "the table gives the speed ratios" \
     [ "$(grep -c 'time relative to poissondisk:  bridson [0-9.]*  dart [0-9.]*  periodic [0-9.]*  field [0-9.]*  threads1 [0-9.]*  threads [0-9.]*$' "$tmp/b.out")" -eq 2 ]
+expect "the table gives the paired ratios, threads1/threads among them" \
+    [ "$(grep -c "paired, the median of each seed's ratio:  bridson/poissondisk [0-9.]*  dart/poissondisk [0-9.]*  periodic/poissondisk [0-9.]*  field/poissondisk [0-9.]*  threads1/poissondisk [0-9.]*  threads/poissondisk [0-9.]*  threads1/threads [0-9.]*$" "$tmp/b.out")" -eq 2 ]
+# With one run per method, each paired ratio is the ratio of the medians:
+# both lines name the same numbers, method by method.
+for n in 1000 3000; do
+    plain=$(grep " $n  time relative to poissondisk:" "$tmp/b.out" | sed 's/.*poissondisk://' | awk '{ for (i = 2; i <= NF; i += 2) printf "%s ", $i }')
+    paired=$(grep " $n  paired, " "$tmp/b.out" | sed 's/.*ratio://' | awk '{ for (i = 2; i <= NF - 2; i += 2) printf "%s ", $i }')
+    expect "at N=$n one run's paired ratios are the plain ones ($paired against $plain)" [ -n "$plain" -a "$plain" = "$paired" ]
+done
+# threads1 against threads, from the table's own seconds column (printed
+# to 4 decimals, a few milliseconds here: within 6%).
+for n in 1000 3000; do
+    want=$(awk -v n=$n '$2 == n && $1 == "threads1" { a = $5 } $2 == n && $1 == "threads" { b = $5 } END { printf "%.4f", a / b }' "$tmp/b.out")
+    got=$(grep " $n  paired, " "$tmp/b.out" | sed 's/.*threads1\/threads //')
+    expect "at N=$n threads1/threads is their seconds' ratio ($got, from the rows $want)" \
+        awk -v a="$got" -v b="$want" 'BEGIN { exit !(a > 0 && b > 0 && (a / b - 1) ^ 2 < 0.0036) }'
+done
 expect "the CSV exists" [ -s "$tmp/b.csv" ]
 expect "the CSV header is the documented one" [ "$(head -n 1 "$tmp/b.csv")" = "$header" ]
 expect "the CSV has 14 data rows" [ "$(wc -l < "$tmp/b.csv" | tr -d ' ')" -eq 15 ]
