@@ -136,37 +136,29 @@ int parallel_phases(double n_target, std::uint64_t seed, unsigned threads, bool 
     // than it has handed out. Once it has handed out all it made, the next
     // call draws an epoch (made grows), or the process has ended and the
     // call is the loop's. The clock is read there only, not at each point:
-    // an epoch's insertions run from the end of its draw to the next draw.
+    // an epoch's insertions run from the end of its draw to the next draw,
+    // and the loop's points from the process's end to the run's.
     double t_epochs = 0.0, t_insert = 0.0, t_loop = 0.0;
     std::size_t region_points = 0, loop_points = 0;
-    auto span = Clock::now();  // the start of the insertions under way
-    for (bool ended = false; !ended;) {
-        if (region_points == jones.region_stats().points) {
+    bool in_region = true;
+    auto mark = Clock::now();  // the start of the span under way
+    for (;;) {
+        const pds::Point* p;
+        if (in_region && region_points == jones.region_stats().points) {
             const auto t0 = Clock::now();
-            t_insert += std::chrono::duration<double>(t0 - span).count();
-            const bool more = jones.next(rng) != nullptr;
-            span = Clock::now();
-            if (region_points == jones.region_stats().points) {
-                t_loop += std::chrono::duration<double>(span - t0).count();
-                ended = true;
-                if (!more) break;
-            } else {
-                t_epochs += std::chrono::duration<double>(span - t0).count();
-            }
+            t_insert += std::chrono::duration<double>(t0 - mark).count();
+            p = jones.next(rng);
+            mark = Clock::now();
+            in_region = region_points < jones.region_stats().points;
+            (in_region ? t_epochs : t_loop) += std::chrono::duration<double>(mark - t0).count();
         } else {
-            jones.next(rng);
+            p = jones.next(rng);
         }
+        if (p == nullptr) break;
         jones.add_next();
-        ++(ended ? loop_points : region_points);
+        ++(in_region ? region_points : loop_points);
     }
-    // The loop's own points, after the process.
-    for (const auto t0 = Clock::now();; ++loop_points) {
-        if (jones.next(rng) == nullptr) {
-            t_loop += seconds_since(t0);
-            break;
-        }
-        jones.add_next();
-    }
+    if (!in_region) t_loop += seconds_since(mark);
     const pds::RegionDarts::Stats& rs = jones.region_stats();
     const std::size_t total = jones.count();
     const double t_all = t_opening + t_handover + t_epochs + t_insert + t_loop;
