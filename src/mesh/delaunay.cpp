@@ -82,22 +82,9 @@ bool Delaunay::has_room_for_one() const {
 EdgeRef Delaunay::locate(const Point& p, EdgeRef e) const {
     // The walk visits each triangle at most once on a Delaunay mesh; the bound
     // only turns a broken invariant into an error instead of a hang.
-    const std::size_t limit = 4 * mesh_.live_count() + 16;
-    for (std::size_t step = 0; step < limit; ++step) {
-        const Point& o = points_[mesh_.org(e)];
-        const Point& d = points_[mesh_.dest(e)];
-        if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y)) return e;
-        if (right_of(p, e)) {
-            e = QuadEdgeMesh::sym(e);
-        } else if (!right_of(p, mesh_.onext(e))) {
-            e = mesh_.onext(e);
-        } else if (!right_of(p, mesh_.dprev(e))) {
-            e = mesh_.dprev(e);
-        } else {
-            return e;
-        }
-    }
-    throw std::logic_error("point location did not terminate");
+    const EdgeRef found = walk(p, e, 4 * mesh_.live_count() + 16, [](EdgeRef) { return true; });
+    if (found == kNoEdge) throw std::logic_error("point location did not terminate");
+    return found;
 }
 
 template <bool kShared>
@@ -194,11 +181,14 @@ void Delaunay::swap_edge(EdgeRef e) {
 }
 
 template <bool kShared>
-void Delaunay::delete_edge(EdgeRef e) {
+void Delaunay::delete_edge(EdgeRef e, QuadEdgeMesh::Arena* arena) {
     const std::uint32_t o = mesh_.org(e), d = mesh_.dest(e);
     if (vertex_edge_[o] == e) set_vertex_edge<kShared>(o, mesh_.onext(e));
     if (vertex_edge_[d] == QuadEdgeMesh::sym(e)) set_vertex_edge<kShared>(d, mesh_.onext(QuadEdgeMesh::sym(e)));
-    mesh_.delete_edge<kShared>(e);
+    if (arena)
+        mesh_.delete_edge(*arena, e);
+    else
+        mesh_.delete_edge<kShared>(e);
 }
 
 std::uint32_t Delaunay::insert(const Point& p, std::uint32_t near) {
@@ -213,16 +203,27 @@ template <bool kShared>
 std::uint32_t Delaunay::insert_as(const Point& p, std::uint32_t near) {
     if (weighted_) throw std::logic_error("Delaunay::insert without a radius on a weighted mesh");
     if (!has_room_for_one()) throw std::logic_error("Delaunay::insert without reserved room");
-    EdgeRef e = locate(p, vertex_edge_[near]);
+    const EdgeRef e = locate_new(p, near);
+    const std::uint32_t v = static_cast<std::uint32_t>(points_.size());
+    points_.push_back(p);
+    vertex_edge_.push_back(kNoEdge);
+    connect_and_flip<kShared>(p, e, v, nullptr);
+    return v;
+}
+
+EdgeRef Delaunay::locate_new(const Point& p, VertexIndex near) const {
+    const EdgeRef e = locate(p, vertex_edge_[near]);
     const Point& o = points_[mesh_.org(e)];
     const Point& d = points_[mesh_.dest(e)];
     if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y))
         throw std::logic_error("Delaunay::insert of a duplicate point");
-    const bool on_edge = orient2d(o, d, p) == 0;
-    const std::uint32_t v = static_cast<std::uint32_t>(points_.size());
-    points_.push_back(p);
-    vertex_edge_.push_back(kNoEdge);
-    const EdgeRef start = connect_spokes<kShared>(e, v, on_edge, &e);
+    return e;
+}
+
+template <bool kShared>
+void Delaunay::connect_and_flip(const Point& p, EdgeRef e, VertexIndex v, QuadEdgeMesh::Arena* arena) {
+    const bool on_edge = orient2d(points_[mesh_.org(e)], points_[mesh_.dest(e)], p) == 0;
+    const EdgeRef start = connect_spokes<kShared>(e, v, on_edge, &e, arena);
 
     // Restore the Delaunay property: examine the edges opposite p, flip those
     // whose far corner lies inside the circle through p and the edge.
@@ -239,24 +240,26 @@ std::uint32_t Delaunay::insert_as(const Point& p, std::uint32_t near) {
             e = mesh_.lprev(mesh_.onext(e));
         }
     }
-    return v;
 }
 
+template void Delaunay::connect_and_flip<false>(const Point&, EdgeRef, VertexIndex, QuadEdgeMesh::Arena*);
+
 template <bool kShared>
-EdgeRef Delaunay::connect_spokes(EdgeRef e, VertexIndex v, bool on_edge, EdgeRef* link) {
+EdgeRef Delaunay::connect_spokes(EdgeRef e, VertexIndex v, bool on_edge, EdgeRef* link, QuadEdgeMesh::Arena* arena) {
     if (on_edge) {
         // p lies on e (strictly inside it, since it is in the closed triangle
         // and not a corner): remove e and fill the quadrilateral instead.
         const EdgeRef t = mesh_.oprev(e);
-        delete_edge<kShared>(e);
+        delete_edge<kShared>(e, arena);
         e = t;
     }
     // Connect p to every corner of the (triangle or quadrilateral) face.
-    EdgeRef base = mesh_.make_edge<kShared>(mesh_.org(e), v);
+    EdgeRef base = arena ? mesh_.make_edge(*arena, mesh_.org(e), v) : mesh_.make_edge<kShared>(mesh_.org(e), v);
     mesh_.splice<kShared>(base, e);
     const EdgeRef start = base;
     do {
-        base = mesh_.connect<kShared>(e, QuadEdgeMesh::sym(base));
+        base = arena ? mesh_.connect(*arena, e, QuadEdgeMesh::sym(base))
+                     : mesh_.connect<kShared>(e, QuadEdgeMesh::sym(base));
         e = mesh_.oprev(base);
     } while (mesh_.lnext(e) != start);
     set_vertex_edge<kShared>(v, QuadEdgeMesh::sym(start));
@@ -276,7 +279,7 @@ void Delaunay::hide_vertex(VertexIndex a, VertexIndex v) {
     while (vertex_edge_[a] != kNoEdge) {
         const EdgeRef e = vertex_edge_[a];
         const EdgeRef next = mesh_.onext(e);
-        delete_edge<kShared>(e);
+        delete_edge<kShared>(e, nullptr);
         set_vertex_edge<kShared>(a, next == e ? kNoEdge : next);
     }
     hidden_by_[a] = v;
@@ -307,7 +310,7 @@ std::uint32_t Delaunay::insert_as(const Point& p, double r, std::uint32_t near) 
     }
     const bool on_edge = orient2d(o, d, p) == 0;
     std::size_t degree_v = on_edge ? 4 : 3;
-    connect_spokes<kShared>(e, v, on_edge, &e);
+    connect_spokes<kShared>(e, v, on_edge, &e, nullptr);
 
     // Edelsbrunner-Shah flips, around v clockwise (e: a link edge a -> b
     // with v on its left, far corner f across it). Every link edge must end

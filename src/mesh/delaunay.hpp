@@ -141,6 +141,42 @@ public:
     // The records build_whole() needs beyond 3 per vertex (its arenas' slack).
     static constexpr std::size_t kBuildWholeSlack = 8 * 64;
 
+    // ---- Insertions side by side (delaunay_sides.cpp) ----
+    // Threads may insert at once into one unweighted mesh, each on its side
+    // of a vertical line, when each point's insertion reads and writes only
+    // triangles whose vertices are all real vertices of its side: the
+    // triangles whose circumcircles hold it strictly (those its flips
+    // remove) and the triangles next to them. A thread then writes only
+    // records whose two faces are such triangles, and reads only triangles
+    // with a vertex of its side, which the other never writes; so they
+    // share nothing. The points go into vertex slots opened beforehand and
+    // their records come from arenas laid out beforehand, so the mesh's
+    // records do not depend on the threads, only on what each side
+    // inserts, in which order.
+    struct Side {
+        double mid;  // the line x = mid
+        bool left;   // the side x < mid; else x >= mid
+    };
+    bool on_side(VertexIndex v, const Side& side) const {
+        return !is_ghost(v) && ((points_[v].x < side.mid) == side.left);
+    }
+    // Whether p can be inserted so, walking from `near` (a vertex of the
+    // side): read-only; it steps only across edges whose ends are both on
+    // the side. False also when p is a vertex or the walk is long.
+    bool can_insert_on_side(const Point& p, VertexIndex near, const Side& side) const;
+    // Opens n empty vertex slots after the last vertex (within the room
+    // reserved, std::logic_error beyond it); returns the first. Every slot
+    // must be filled by insert_in_slot before the mesh is used otherwise.
+    VertexIndex open_slots(std::size_t n);
+    // The records n insertions take (within the room reserved), and their
+    // return once the insertions are done.
+    QuadEdgeMesh::Arena edge_arena(std::size_t insertions) { return mesh_.append_arena(3 * insertions); }
+    void close_edge_arena(const QuadEdgeMesh::Arena& arena) { mesh_.close_appended(arena); }
+    // Inserts p into the open slot, walking from `near`, its records from
+    // `arena`; std::logic_error on a weighted mesh, a slot not open and
+    // empty, or a duplicate point.
+    void insert_in_slot(const Point& p, VertexIndex near, VertexIndex slot, QuadEdgeMesh::Arena& arena);
+
     bool weighted() const { return weighted_; }
     double radius(VertexIndex v) const { return weighted_ ? radii_[v] : 0.0; }
     // A weighted mesh only: a disk whose power cell is empty, not in the mesh.
@@ -195,6 +231,31 @@ private:
     bool right_of(const Point& p, EdgeRef e) const {
         return orient2d(p, points_[mesh_.dest(e)], points_[mesh_.org(e)]) > 0;
     }
+    // locate()'s walk from e: an edge whose left triangle holds p (or with
+    // p at an end). Each step enters the triangle left of an edge `next` of
+    // the current one, only when may_cross(next); kNoEdge when one is
+    // refused or after `limit` steps.
+    template <class MayCross>
+    EdgeRef walk(const Point& p, EdgeRef e, std::size_t limit, const MayCross& may_cross) const {
+        for (std::size_t step = 0; step < limit; ++step) {
+            const Point& o = points_[mesh_.org(e)];
+            const Point& d = points_[mesh_.dest(e)];
+            if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y)) return e;
+            EdgeRef next;
+            if (right_of(p, e)) {
+                next = QuadEdgeMesh::sym(e);
+            } else if (!right_of(p, mesh_.onext(e))) {
+                next = mesh_.onext(e);
+            } else if (!right_of(p, mesh_.dprev(e))) {
+                next = mesh_.dprev(e);
+            } else {
+                return e;
+            }
+            if (!may_cross(next)) return kNoEdge;
+            e = next;
+        }
+        return kNoEdge;
+    }
     // The insertions, with the mesh's writes shared (set_shared) or not.
     template <bool kShared>
     std::uint32_t insert_as(const Point& p, std::uint32_t near);
@@ -213,12 +274,21 @@ private:
     }
     template <bool kShared>
     void swap_edge(EdgeRef e);
+    // Deletes e, its record going to `arena` (the mesh's free list if none).
     template <bool kShared>
-    void delete_edge(EdgeRef e);
+    void delete_edge(EdgeRef e, QuadEdgeMesh::Arena* arena);
+    // The triangle that holds p, walking from near's entry edge; throws
+    // when p is a vertex (an unweighted insertion's location).
+    EdgeRef locate_new(const Point& p, VertexIndex near) const;
+    // Unweighted: p becomes vertex v (its point already stored) inside the
+    // face left of e, then the flips; new records from `arena`, or from the
+    // mesh's free list and room if none.
+    template <bool kShared>
+    void connect_and_flip(const Point& p, EdgeRef e, VertexIndex v, QuadEdgeMesh::Arena* arena);
     // The new vertex's spokes to the corners of the face left of e (p on e
     // when on_edge): its ring before any flip; returns the first spoke.
     template <bool kShared>
-    EdgeRef connect_spokes(EdgeRef e, VertexIndex v, bool on_edge, EdgeRef* link);
+    EdgeRef connect_spokes(EdgeRef e, VertexIndex v, bool on_edge, EdgeRef* link, QuadEdgeMesh::Arena* arena);
     // Removes vertex a, of degree 3, hidden by v.
     template <bool kShared>
     void hide_vertex(VertexIndex a, VertexIndex v);

@@ -50,6 +50,7 @@ QuadEdgeMesh::Arena QuadEdgeMesh::join(Arena a, const Arena& b) {
     a.free_count += b.free_count;
     a.next = b.next;
     a.end = b.end;
+    a.live_change += b.live_change;
     return a;
 }
 
@@ -58,6 +59,23 @@ void QuadEdgeMesh::close_arenas(Arena last) {
     free_list_ = last.free_head;
     free_count_ = last.free_count;
     live_edges_ = rec_.size() - free_count_;
+}
+
+QuadEdgeMesh::Arena QuadEdgeMesh::append_arena(std::size_t records) {
+    const std::size_t first = rec_.size();
+    if (records > rec_.capacity() - first) throw std::logic_error("an appended arena beyond the reserved room");
+    rec_.resize(first + records);  // within the room: does not allocate, and leaves the records unset
+    return arena(static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(first + records));
+}
+
+void QuadEdgeMesh::close_appended(const Arena& appended) {
+    const Arena a = join(appended, arena(0, 0));
+    if (a.free_head != kNoEdge) {
+        set_next(a.free_tail, free_list_);
+        free_list_ = a.free_head;
+    }
+    free_count_ += a.free_count;
+    live_edges_ = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(live_edges_) + a.live_change);
 }
 
 }  // namespace pds

@@ -113,6 +113,7 @@ public:
         EdgeRef free_head = kNoEdge, free_tail = kNoEdge;  // record-0 quarters
         std::size_t free_count = 0;
         std::uint32_t next = 0, end = 0;  // records [next, end) never handed out
+        std::ptrdiff_t live_change = 0;   // edges made less edges deleted
     };
     // Drops every edge and lays out `records` unused records for arenas;
     // false (and nothing changed) when that is more than reserve() made room for.
@@ -125,6 +126,13 @@ public:
     Arena join(Arena a, const Arena& b);
     // Ends the build: the last arena's spare records become the free list.
     void close_arenas(Arena last);
+    // Insertions side by side into a whole mesh (delaunay_sides.cpp): an
+    // arena of `records` new records after the last, within the room
+    // reserve() made (std::logic_error beyond it); and its end, its spare
+    // and freed records put before the free list and its edges counted.
+    // Neither runs while another thread uses the mesh.
+    Arena append_arena(std::size_t records);
+    void close_appended(const Arena& arena);
 
     // Number of records ever handed out (live or free) and whether one is live.
     std::size_t record_count() const { return rec_.size(); }
@@ -204,6 +212,7 @@ inline EdgeRef QuadEdgeMesh::make_edge(Arena& arena, std::uint32_t org, std::uin
         e = 4 * arena.next++;
     }
     init_edge(e, org, dest);
+    ++arena.live_change;
     return e;
 }
 
@@ -260,6 +269,7 @@ inline void QuadEdgeMesh::delete_edge(Arena& arena, EdgeRef e) {
     if (arena.free_head == kNoEdge) arena.free_tail = e;
     arena.free_head = e;
     ++arena.free_count;
+    --arena.live_change;
 }
 
 template <bool kShared>

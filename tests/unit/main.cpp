@@ -9,6 +9,7 @@ int main() {
     srunner_add_suite(runner, quadedge_suite());
     srunner_add_suite(runner, delaunay_suite());
     srunner_add_suite(runner, delaunay_build_suite());
+    srunner_add_suite(runner, delaunay_sides_suite());
     srunner_add_suite(runner, regular_suite());
     srunner_add_suite(runner, angle_suite());
     srunner_add_suite(runner, tree_suite());

@@ -11,6 +11,7 @@ Suite* predicates_suite();
 Suite* quadedge_suite();
 Suite* delaunay_suite();
 Suite* delaunay_build_suite();
+Suite* delaunay_sides_suite();
 Suite* regular_suite();
 Suite* angle_suite();
 Suite* tree_suite();
