@@ -213,10 +213,7 @@ std::uint32_t Delaunay::insert_as(const Point& p, std::uint32_t near) {
 
 EdgeRef Delaunay::locate_new(const Point& p, VertexIndex near) const {
     const EdgeRef e = locate(p, vertex_edge_[near]);
-    const Point& o = points_[mesh_.org(e)];
-    const Point& d = points_[mesh_.dest(e)];
-    if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y))
-        throw std::logic_error("Delaunay::insert of a duplicate point");
+    if (at_end(p, e)) throw std::logic_error("Delaunay::insert of a duplicate point");
     return e;
 }
 
@@ -294,8 +291,7 @@ std::uint32_t Delaunay::insert_as(const Point& p, double r, std::uint32_t near) 
     const VertexIndex a0 = mesh_.org(e), b0 = mesh_.dest(e), c0 = mesh_.dest(mesh_.lnext(e));
     const Point& o = points_[a0];
     const Point& d = points_[b0];
-    if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y))
-        throw std::logic_error("Delaunay::insert of a duplicate point");
+    if (at_end(p, e)) throw std::logic_error("Delaunay::insert of a duplicate point");
     const VertexIndex v = static_cast<VertexIndex>(points_.size());
     points_.push_back(p);
     vertex_edge_.push_back(kNoEdge);

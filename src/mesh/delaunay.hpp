@@ -231,6 +231,12 @@ private:
     bool right_of(const Point& p, EdgeRef e) const {
         return orient2d(p, points_[mesh_.dest(e)], points_[mesh_.org(e)]) > 0;
     }
+    // Whether p is an end of e (a vertex already in the mesh).
+    bool at_end(const Point& p, EdgeRef e) const {
+        const Point& o = points_[mesh_.org(e)];
+        const Point& d = points_[mesh_.dest(e)];
+        return (p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y);
+    }
     // locate()'s walk from e: an edge whose left triangle holds p (or with
     // p at an end). Each step enters the triangle left of an edge `next` of
     // the current one, only when may_cross(next); kNoEdge when one is
@@ -238,9 +244,7 @@ private:
     template <class MayCross>
     EdgeRef walk(const Point& p, EdgeRef e, std::size_t limit, const MayCross& may_cross) const {
         for (std::size_t step = 0; step < limit; ++step) {
-            const Point& o = points_[mesh_.org(e)];
-            const Point& d = points_[mesh_.dest(e)];
-            if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y)) return e;
+            if (at_end(p, e)) return e;
             EdgeRef next;
             if (right_of(p, e)) {
                 next = QuadEdgeMesh::sym(e);

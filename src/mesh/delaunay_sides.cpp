@@ -19,10 +19,7 @@ bool Delaunay::can_insert_on_side(const Point& p, VertexIndex near, const Side& 
     const EdgeRef e = walk(p, vertex_edge_[near], kMaxSteps, [&](EdgeRef next) {
         return on_side(mesh_.org(next), side) && on_side(mesh_.dest(next), side);
     });
-    if (e == kNoEdge) return false;
-    const Point& o = points_[mesh_.org(e)];
-    const Point& d = points_[mesh_.dest(e)];
-    if ((p.x == o.x && p.y == o.y) || (p.x == d.x && p.y == d.y)) return false;
+    if (e == kNoEdge || at_end(p, e)) return false;
     // The cavity: the triangles whose circumcircles hold p strictly, found
     // from the one that holds p across the edges between them (they are
     // connected; a point on an edge is strictly inside both triangles'

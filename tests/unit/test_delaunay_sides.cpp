@@ -15,6 +15,7 @@
 #include "core/predicates.hpp"
 #include "mesh/delaunay.hpp"
 #include "mesh_checks.hpp"
+#include "mesh_samples.hpp"
 #include "suites.hpp"
 
 namespace {
@@ -24,14 +25,6 @@ using pds::EdgeRef;
 using pds::Point;
 using pds::QuadEdgeMesh;
 using pds::VertexIndex;
-
-std::vector<Point> random_points(std::size_t n, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<Point> pts(n);
-    for (Point& p : pts) p = {u(rng), u(rng)};
-    return pts;
-}
 
 Delaunay mesh_of(const std::vector<Point>& pts, std::size_t room) {
     Delaunay dt(pds::Box{0, 0, 1, 1});
@@ -81,21 +74,6 @@ bool cavity_on_side(const Delaunay& dt, const std::vector<EdgeRef>& triangles, c
         }
     }
     return true;
-}
-
-// Records (origins and links) and entry edges, word for word.
-std::vector<std::uint32_t> layout_of(const Delaunay& dt) {
-    std::vector<std::uint32_t> words;
-    const QuadEdgeMesh& m = dt.mesh();
-    for (std::size_t r = 0; r < m.record_count(); ++r) {
-        const EdgeRef e = static_cast<EdgeRef>(4 * r);
-        words.push_back(m.is_live(r) ? m.org(e) : pds::kNoVertex);
-        if (!m.is_live(r)) continue;
-        words.push_back(m.dest(e));
-        for (EdgeRef q = 0; q < 4; ++q) words.push_back(m.onext(e + q));
-    }
-    for (std::size_t v = 0; v < dt.vertex_count(); ++v) words.push_back(dt.edge_of(static_cast<std::uint32_t>(v)));
-    return words;
 }
 
 }  // namespace
