@@ -395,7 +395,7 @@ check-asan: $(B)/asan/tests/unit $(B)/asan/tests/api
 
 # The suites whose threads share data: the pool, the helper that walks the
 # mesh while the caller inserts, and two threads inserting on two sides.
-TSAN_SUITES := worker_pool ring_prefetcher delaunay_sides
+TSAN_SUITES := worker_pool ring_prefetcher delaunay_sides side_insertions
 check-tsan: $(B)/tsan/tests/threads $(B)/tsan/tests/unit
 	$(TSAN_ENV) $(B)/tsan/tests/threads
 	for suite in $(TSAN_SUITES); do $(TSAN_ENV) CK_RUN_SUITE=$$suite $(B)/tsan/tests/unit || exit 1; done

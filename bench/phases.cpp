@@ -1,6 +1,6 @@
 // phases.cpp - where the time of one run goes (make bench-phases).
 //
-//   build/bench-phases [--check] [--threads N] [N [SEED]]
+//   build/bench-phases [--check] [--threads N [--sides]] [N [SEED]]
 //
 // Samples the unit square at R = sqrt(0.6966/N) (the bench's radius) with the
 // library's own stages, called one by one in the order pds_run calls them.
@@ -24,6 +24,10 @@
 //
 // Wall-clock times of one run: compare phases within a run, and runs on one
 // machine.
+//
+// --sides (with --threads) inserts each free regions' epoch on two sides at
+// once (JonesStage::set_side_insertions, off in the library for now): the
+// insertions are then timed in the epochs' row, and --check is refused.
 //
 // --check also runs pds_run with the same radius, seed and threads, and fails
 // unless both give the same points, coordinate for coordinate: what is timed
@@ -54,7 +58,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 int usage() {
     std::fprintf(stderr,
-                 "usage: bench-phases [--check] [--threads N] [N [SEED]]   (N >= 100, default 1000000; SEED default 1;"
+                 "usage: bench-phases [--check] [--threads N [--sides]] [N [SEED]]"
+                 "   (N >= 100, default 1000000; SEED default 1;"
                  " threads 1 to 64)\n");
     return 2;
 }
@@ -107,7 +112,7 @@ struct Setup {
 // The parallel process on `threads` threads, as Sampler::prepare sets it up:
 // the space-time opening, then the Jones stage, which carries the darts on
 // in the free regions from the hand-over.
-int parallel_phases(double n_target, std::uint64_t seed, unsigned threads, bool check) {
+int parallel_phases(double n_target, std::uint64_t seed, unsigned threads, bool sides, bool check) {
     using Clock = std::chrono::steady_clock;
     const Setup setup(n_target);
     const double radius = setup.radius;
@@ -119,6 +124,7 @@ int parallel_phases(double n_target, std::uint64_t seed, unsigned threads, bool 
     pds::JonesStage& jones = *jones_stage;
     jones.set_threads(threads);
     jones.allow_helper(true);  // as pds_run does
+    jones.set_side_insertions(sides);
     opening.set_threads(threads);
     opening.reserve(room);
     jones.reserve(room);
@@ -164,10 +170,10 @@ int parallel_phases(double n_target, std::uint64_t seed, unsigned threads, bool 
     const double t_all = t_opening + t_handover + t_epochs + t_insert + t_loop;
     const auto share = [&](double x) { return 100.0 * x / t_all; };
 
-    std::printf("poissondisk %s phases, parallel process on %u thread%s: unit square, N=%.0f, R=%.6g, seed %llu: "
+    std::printf("poissondisk %s phases, parallel process on %u thread%s%s: unit square, N=%.0f, R=%.6g, seed %llu: "
                 "%zu points\n",
-                pds_version_string(), threads, threads == 1 ? "" : "s", n_target, radius,
-                static_cast<unsigned long long>(seed), total);
+                pds_version_string(), threads, threads == 1 ? "" : "s", sides ? ", epochs by sides" : "", n_target,
+                radius, static_cast<unsigned long long>(seed), total);
     std::printf("phase                 seconds  share     points  per point  counted\n");
     std::printf("opening epochs       %8.4f  %4.1f%%  %9zu  %6.0f ns  %zu epochs\n", t_opening, share(t_opening),
                 opened, 1e9 * per(t_opening, opened), epochs);
@@ -203,6 +209,12 @@ int main(int argc, char** argv) {
         if (*end != '\0' || n < 1 || n > 64) return usage();
         threads = static_cast<unsigned>(n);
     }
+    bool sides = false;
+    if (arg < argc && std::strcmp(argv[arg], "--sides") == 0) {
+        if (threads == 0 || check) return usage();
+        sides = true;
+        ++arg;
+    }
     double n_target = 1e6;
     std::uint64_t seed = 1;
     if (arg < argc) {
@@ -214,7 +226,7 @@ int main(int argc, char** argv) {
         if (*end != '\0') return usage();
     }
     if (arg != argc) return usage();
-    if (threads != 0) return parallel_phases(n_target, seed, threads, check);
+    if (threads != 0) return parallel_phases(n_target, seed, threads, sides, check);
 
     const Setup setup(n_target);
     const double radius = setup.radius;

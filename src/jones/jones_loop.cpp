@@ -63,6 +63,7 @@ void JonesLoop<Space, Rule>::adopt(const std::vector<Point>& points, const std::
 
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::set_radius(double r, const PointRadii* radii) {
+    require_epoch_handed_out("set_radius");
     quiet_helper();  // a field's mesh is rebuilt
     settle();
     rule_.rescale(*this, radii);

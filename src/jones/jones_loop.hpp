@@ -58,6 +58,7 @@
 #include "core/indices.hpp"
 #include "core/point.hpp"
 #include "core/rng.hpp"
+#include "core/worker_pool.hpp"
 #include "jones/active_scan.hpp"
 #include "jones/free_area_tree.hpp"
 #include "jones/jones_stage.hpp"
@@ -81,7 +82,9 @@ public:
     void settle() override { space_.settle(*this); }
     void set_radius(double r, const PointRadii* radii) override;
 
-    std::size_t count() const override { return space_.count(*this); }
+    // The points handed out: an epoch inserted by sides is in the mesh
+    // before its points are (inserted_ahead_).
+    std::size_t count() const override { return space_.count(*this) - inserted_ahead_; }
     const Point& point(PointIndex k) const override { return dt_.point(order_.vertex(k)); }
     void copy_points(PointIndex first, std::size_t n, Point* out) const override {
         // The hand-over put the points in curve order: a copy in the order
@@ -115,6 +118,7 @@ public:
     void carry_darts(std::uint64_t salted_seed, std::size_t epoch) override;
     const RegionDarts::Stats& region_stats() const override { return regions_.stats(); }
     void set_region_darts_per_cell(double mean) override { regions_.set_darts_per_cell(mean); }
+    void set_side_insertions(bool on) override { side_insertions_ = on; }
     void allow_helper(bool on) override {
         helper_allowed_ = on;
         if (!on) quiet_helper();
@@ -190,6 +194,15 @@ private:
                            RegionDarts::Block& out) const;
     void draw_in_region(const MeshCells& cells, SiteIndex site, unsigned darts, std::uint64_t seed,
                         RegionDarts::Block& out) const;
+    // An epoch's insertions on two sides at once (jones_loop_sides.cpp): in
+    // the plane with one radius, when set_side_insertions is on.
+    bool inserts_by_sides() const;
+    // Room for the epoch's points (at most `darts`), before it is decided.
+    void make_room_for_epoch(std::size_t darts);
+    void insert_epoch_by_sides(WorkerPool& pool);
+    void hand_out_inserted();  // the next of the points inserted ahead
+    // std::logic_error while some of them are not handed out yet.
+    void require_epoch_handed_out(const char* what) const;
     // Exact: inside the domain, outside every disk, inside v's cell.
     bool acceptable(const Point& p, VertexIndex v) const {
         return space_.inside(p) && rule_.acceptable(dt_, p, v, r_);
@@ -225,6 +238,11 @@ private:
     std::size_t fixed_ = 0;  // the first points are fixed (set_fixed)
     unsigned threads_ = 1;   // for measure_all_cells (set_threads)
     RegionDarts regions_;    // on from the parallel opening's hand-over (carry_darts)
+    bool side_insertions_ = false;        // set_side_insertions
+    std::size_t inserted_ahead_ = 0;      // points of an epoch in the mesh, not yet handed out
+    std::vector<std::uint32_t> side_slot_rank_;  // an epoch's dart (by time) -> its slot's rank
+    std::vector<std::uint32_t> side_dart_of_;    // the slot's rank -> its dart
+    std::vector<double> side_area_;              // by slot rank: its measured area, -1 while waiting
     // Walks the rings ahead of the regions' insertions, with threads, inside
     // pds_run (allow_helper); stopped before the darts or the mesh may move.
     RingPrefetcher prefetcher_;

@@ -16,6 +16,7 @@ namespace pds {
 
 template <class Space, class Rule>
 double JonesLoop<Space, Rule>::free_area() const {
+    require_epoch_handed_out("free_area");
     // Cells are the torus's only once the margin is settled.
     if (space_.pending()) throw std::bad_alloc();
     // The tree holds upper bounds; the exact area is re-measured, cell by cell,
@@ -37,6 +38,7 @@ double JonesLoop<Space, Rule>::free_area() const {
 
 template <class Space, class Rule>
 VerifyReport JonesLoop<Space, Rule>::verify() const {
+    require_epoch_handed_out("verify");
     if (space_.pending()) throw std::bad_alloc();
     VerifyReport rep;
     if (Rule::kWeighted) {

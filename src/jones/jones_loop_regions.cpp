@@ -48,7 +48,9 @@ const Point* JonesLoop<Space, Rule>::next_region_point() {
     }
     // A new epoch's insertions: the helper walks their rings ahead of them
     // and, in the plane, scans the active list for the next epoch meanwhile.
-    if (helper_allowed_ && threads_ > 1 && regions_.next_index() == 0 && !prefetcher_.running()) {
+    // By sides, the epoch is in the mesh already.
+    if (helper_allowed_ && threads_ > 1 && regions_.next_index() == 0 && !prefetcher_.running() &&
+        !inserts_by_sides()) {
         RingPrefetcher::SideJob* job = nullptr;
         if constexpr (Space::kBoundsStayWhileInserting) {
             if (!active_scan_.begun()) active_scan_.begin(regions_.active(), tree_);
@@ -62,6 +64,7 @@ const Point* JonesLoop<Space, Rule>::next_region_point() {
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::add_region_point() {
     if (!regions_.has_pending()) throw std::logic_error("add_next without next");
+    if (inserts_by_sides()) return hand_out_inserted();
     // The next darts' rings, fetched together ahead of their insertions.
     // With the helper too: its walk brings the lines into the shared cache
     // and its own core's, this fetch into this core's, and dropping it was
@@ -108,7 +111,7 @@ bool JonesLoop<Space, Rule>::draw_region_epoch() {
     std::vector<RegionDarts::Block>& blocks = regions_.blocks(nblocks);
     // Blocks are taken in turn by whichever worker is free; each writes its
     // own block, so the joined lists do not depend on who drew them.
-    WorkerPool pool(nblocks > 1 ? threads_ : 1);
+    WorkerPool pool(nblocks > 1 || inserts_by_sides() ? threads_ : 1);
     // The pages this epoch's insertions will first write (mesh and tree,
     // room for 1.25 times the darts expected), made resident by the last
     // helper before it draws: else the caller's thread faults them in alone.
@@ -130,9 +133,17 @@ bool JonesLoop<Space, Rule>::draw_region_epoch() {
         double radius_of(double value) const override { return loop.rule_.radius_of(value); }
     };
     const RuleField field(*this);
+    if (inserts_by_sides()) {
+        // Room first: on std::bad_alloc the epoch is not decided, and the
+        // next call draws it again alike.
+        std::size_t drawn = 0;
+        for (std::size_t b = 0; b < nblocks; ++b) drawn += blocks[b].darts.size();
+        make_room_for_epoch(drawn);
+    }
     regions_.decide_and_commit(
         nblocks, [&](SiteIndex site, double w) { tree_.set_leaf_only(site, w); },
         regions_.has_values() ? &field : nullptr);
+    if (inserts_by_sides()) insert_epoch_by_sides(pool);
     return true;
 }
 

@@ -102,6 +102,12 @@ public:
     // Epochs of another mean length (RegionDarts::set_darts_per_cell): lets
     // a test check the law where the darts of an epoch often meet.
     virtual void set_region_darts_per_cell(double mean) = 0;
+    // The free regions' epochs go into the mesh on two sides at once
+    // (jones_loop_sides.cpp), in the plane with one radius; the other
+    // stages ignore it. Other points than with it off, the same for any
+    // number of threads. Meanwhile verify, free_area and set_radius refuse
+    // a stop inside an epoch (std::logic_error).
+    virtual void set_side_insertions(bool /*on*/) {}
 };
 
 // The domain and r in the internal frame, torus on for a periodic domain;

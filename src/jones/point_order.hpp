@@ -27,6 +27,11 @@ public:
     void set(PointIndex k, VertexIndex v) { vertex_[k] = v; }
     // Records the next point's vertex (the torus; requires capacity).
     void push(VertexIndex v) { vertex_.push_back(v); }
+    // Records the implicit vertices of the first `points` points, so that
+    // the next ones may be pushed (requires capacity).
+    void extend_to(std::size_t points) {
+        while (vertex_.size() < points) vertex_.push_back(static_cast<VertexIndex>(vertex_.size() + kGhostVertices));
+    }
     std::size_t handed_over() const { return vertex_.size(); }
 
     VertexIndex vertex(PointIndex k) const {

@@ -176,6 +176,10 @@ public:
     // `arena`; std::logic_error on a weighted mesh, a slot not open and
     // empty, or a duplicate point.
     void insert_in_slot(const Point& p, VertexIndex near, VertexIndex slot, QuadEdgeMesh::Arena& arena);
+    // can_insert_on_side, then if so insert_in_slot from the edge the search
+    // found (no second walk); false, and nothing changed, if not.
+    bool insert_on_side(const Point& p, VertexIndex near, const Side& side, VertexIndex slot,
+                        QuadEdgeMesh::Arena& arena);
 
     bool weighted() const { return weighted_; }
     double radius(VertexIndex v) const { return weighted_ ? radii_[v] : 0.0; }
@@ -284,6 +288,12 @@ private:
     // The triangle that holds p, walking from near's entry edge; throws
     // when p is a vertex (an unweighted insertion's location).
     EdgeRef locate_new(const Point& p, VertexIndex near) const;
+    // can_insert_on_side's search: the edge whose left triangle holds p, or
+    // kNoEdge when the insertion would not stay on the side.
+    EdgeRef search_on_side(const Point& p, VertexIndex near, const Side& side) const;
+    // std::logic_error unless slot is open and empty in an unweighted mesh
+    // not shared.
+    void require_open_slot(VertexIndex slot) const;
     // Unweighted: p becomes vertex v (its point already stored) inside the
     // face left of e, then the flips; new records from `arena`, or from the
     // mesh's free list and room if none.

@@ -10,7 +10,23 @@
 namespace pds {
 
 bool Delaunay::can_insert_on_side(const Point& p, VertexIndex near, const Side& side) const {
-    if (weighted_ || !on_side(near, side)) return false;
+    return search_on_side(p, near, side) != kNoEdge;
+}
+
+bool Delaunay::insert_on_side(const Point& p, VertexIndex near, const Side& side, VertexIndex slot,
+                              QuadEdgeMesh::Arena& arena) {
+    require_open_slot(slot);
+    const EdgeRef e = search_on_side(p, near, side);
+    if (e == kNoEdge) return false;
+    // The search's walk is locate()'s, so e is the edge insert_in_slot
+    // would find: the same records either way.
+    points_[slot] = p;
+    connect_and_flip<false>(p, e, slot, &arena);
+    return true;
+}
+
+EdgeRef Delaunay::search_on_side(const Point& p, VertexIndex near, const Side& side) const {
+    if (weighted_ || !on_side(near, side)) return kNoEdge;
     // locate()'s walk from near's entry edge, stepping only across edges
     // whose ends are both on the side, so that every triangle read has a
     // vertex of the side. A long walk gives up: the point waits for the
@@ -19,7 +35,7 @@ bool Delaunay::can_insert_on_side(const Point& p, VertexIndex near, const Side& 
     const EdgeRef e = walk(p, vertex_edge_[near], kMaxSteps, [&](EdgeRef next) {
         return on_side(mesh_.org(next), side) && on_side(mesh_.dest(next), side);
     });
-    if (e == kNoEdge || at_end(p, e)) return false;
+    if (e == kNoEdge || at_end(p, e)) return kNoEdge;
     // The cavity: the triangles whose circumcircles hold p strictly, found
     // from the one that holds p across the edges between them (they are
     // connected; a point on an edge is strictly inside both triangles'
@@ -38,23 +54,23 @@ bool Delaunay::can_insert_on_side(const Point& p, VertexIndex near, const Side& 
     for (int i = 0; i < found; ++i) {
         EdgeRef s = cavity[i];
         for (int k = 0; k < 3; ++k, s = mesh_.lnext(s))
-            if (!on_side(mesh_.org(s), side)) return false;
+            if (!on_side(mesh_.org(s), side)) return kNoEdge;
         for (int k = 0; k < 3; ++k, s = mesh_.lnext(s)) {
             // The triangle across s, left of sym(s): its far corner.
             const EdgeRef across = QuadEdgeMesh::sym(s);
             const VertexIndex far = mesh_.dest(mesh_.lnext(across));
-            if (!on_side(far, side)) return false;
+            if (!on_side(far, side)) return kNoEdge;
             if (incircle(points_[mesh_.org(across)], points_[mesh_.dest(across)], points_[far], p) <= 0) continue;
             const EdgeRef n = name_of(across);
             bool seen = false;
             for (int j = 0; j < found && !seen; ++j) seen = name[j] == n;
             if (seen) continue;
-            if (found == kMaxCavity) return false;
+            if (found == kMaxCavity) return kNoEdge;
             cavity[found] = across;
             name[found++] = n;
         }
     }
-    return true;
+    return e;
 }
 
 VertexIndex Delaunay::open_slots(std::size_t n) {
@@ -67,11 +83,15 @@ VertexIndex Delaunay::open_slots(std::size_t n) {
     return static_cast<VertexIndex>(first);
 }
 
-void Delaunay::insert_in_slot(const Point& p, VertexIndex near, VertexIndex slot, QuadEdgeMesh::Arena& arena) {
-    if (weighted_) throw std::logic_error("Delaunay::insert_in_slot on a weighted mesh");
+void Delaunay::require_open_slot(VertexIndex slot) const {
+    if (weighted_) throw std::logic_error("Delaunay: an insertion into a slot on a weighted mesh");
     if (slot < kGhosts || slot >= points_.size() || vertex_edge_[slot] != kNoEdge)
-        throw std::logic_error("Delaunay::insert_in_slot into a slot not open");
-    if (shared_) throw std::logic_error("Delaunay::insert_in_slot while the mesh is shared");
+        throw std::logic_error("Delaunay: an insertion into a slot not open");
+    if (shared_) throw std::logic_error("Delaunay: an insertion into a slot while the mesh is shared");
+}
+
+void Delaunay::insert_in_slot(const Point& p, VertexIndex near, VertexIndex slot, QuadEdgeMesh::Arena& arena) {
+    require_open_slot(slot);
     const EdgeRef e = locate_new(p, near);
     points_[slot] = p;
     connect_and_flip<false>(p, e, slot, &arena);

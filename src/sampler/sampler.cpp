@@ -196,6 +196,7 @@ void Sampler::prepare(std::size_t points) {
         }
         if (region_draws_) jones->draw_cut_cells_by_region();
         if (region_darts_per_cell_ > 0.0) jones->set_region_darts_per_cell(region_darts_per_cell_);
+        if (side_insertions_) jones->set_side_insertions(true);
         if (region_darts_from_start_) jones->carry_darts(SpaceTimeStream::salted(seed_), 0);
         jones_ = std::move(jones);
         darts_ = std::move(darts);

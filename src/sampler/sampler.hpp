@@ -132,6 +132,9 @@ public:
     // Epochs of the free regions' darts of another mean length
     // (JonesStage::set_region_darts_per_cell); requires count() == 0.
     void set_region_darts_per_cell(double mean) { region_darts_per_cell_ = mean; }
+    // The free regions' epochs inserted on two sides at once
+    // (JonesStage::set_side_insertions); requires count() == 0.
+    void set_side_insertions(bool on) { side_insertions_ = on; }
     // Another memory budget for the opening stage's grids
     // (OpeningStage::set_memory_budget); requires count() == 0.
     void set_dart_memory_budget(double bytes_per_point, std::size_t floor_bytes) {
@@ -219,6 +222,7 @@ private:
     bool skip_darts_ = false;
     bool region_draws_ = false;  // draw_cut_cells_by_region()
     double region_darts_per_cell_ = 0.0;  // set_region_darts_per_cell(); 0: the default
+    bool side_insertions_ = false;        // set_side_insertions()
     bool region_darts_from_start_ = false;  // carry_region_darts_from_start()
     std::optional<std::pair<double, std::size_t>> dart_budget_;  // set_dart_memory_budget()
     unsigned threads_ = 1;

@@ -45,6 +45,7 @@ struct Config {
     Stages stages = Stages::darts_then_jones;
     unsigned threads = 0;            // > 0: the parallel opening (set_threads) on that many
     double region_darts_per_cell = 0;  // > 0: the free regions' epochs of that mean length
+    bool side_insertions = false;    // their epochs inserted on two sides at once
     double dart_budget_per_point = 0;  // > 0: the dart stage's memory budget, bytes a point (no floor)
     int runs = 0;                    // seeds 1..runs (the dart thrower: 10^6 + seed)
     std::vector<std::vector<double>> rings;  // in the plane: a polygon (x, y lists) within box
@@ -122,6 +123,7 @@ inline void configure(pds::Sampler& s, const Config& c) {
     if (c.stages == Stages::jones_only) s.skip_dart_stage();
     if (c.threads != 0) s.set_threads(c.threads);
     if (c.region_darts_per_cell > 0) s.set_region_darts_per_cell(c.region_darts_per_cell);
+    s.set_side_insertions(c.side_insertions);
     if (c.dart_budget_per_point > 0) s.set_dart_memory_budget(c.dart_budget_per_point, 0);
 }
 

@@ -32,6 +32,7 @@ int main() {
     srunner_add_suite(runner, space_time_fixed_suite());
     srunner_add_suite(runner, dart_stage_fixed_suite());
     srunner_add_suite(runner, region_darts_suite());
+    srunner_add_suite(runner, side_insertions_suite());
     srunner_add_suite(runner, sampler_suite());
     srunner_add_suite(runner, law_suite());
     srunner_add_suite(runner, law_torus_suite());

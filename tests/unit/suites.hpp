@@ -34,6 +34,7 @@ Suite* ring_prefetcher_suite();
 Suite* active_scan_suite();
 Suite* time_order_suite();
 Suite* region_darts_suite();
+Suite* side_insertions_suite();
 Suite* sampler_suite();
 Suite* law_suite();
 Suite* law_torus_suite();

@@ -2,8 +2,8 @@
 // says yes only when the insertion's triangles are all on the side (against
 // every triangle of the mesh), an insertion it allows writes nothing off the
 // side, and two threads inserting the two sides build the records one thread
-// builds in the same order: an exact Delaunay mesh that later insertions
-// continue.
+// builds in the same order (search and insertion in one call or two): an
+// exact Delaunay mesh that later insertions continue.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -216,9 +216,11 @@ namespace {
 // One epoch of points, in order of time, inserted by sides: left points in
 // the first slots, right ones after; each side in order of time on its own
 // thread (or both on this one), what either side refused afterwards in order
-// of time. Returns how many waited.
+// of time. Each side's search and insertion in one call (insert_on_side)
+// or in two (can_insert_on_side, then insert_in_slot). Returns how many
+// waited.
 std::size_t insert_by_sides(Delaunay& dt, const std::vector<Point>& epoch, const std::vector<VertexIndex>& near,
-                            unsigned threads) {
+                            unsigned threads, bool one_call = false) {
     const Delaunay::Side sides[2] = {{0.5, true}, {0.5, false}};
     std::vector<std::size_t> of_side[2];
     for (std::size_t i = 0; i < epoch.size(); ++i) of_side[epoch[i].x < 0.5 ? 0 : 1].push_back(i);
@@ -231,7 +233,9 @@ std::size_t insert_by_sides(Delaunay& dt, const std::vector<Point>& epoch, const
     std::vector<char> waiting(epoch.size(), 0);
     const auto side_job = [&](int s) {
         for (std::size_t i : of_side[s]) {
-            if (dt.can_insert_on_side(epoch[i], near[i], sides[s]))
+            if (one_call)
+                waiting[i] = dt.insert_on_side(epoch[i], near[i], sides[s], slot[i], arena[s]) ? 0 : 1;
+            else if (dt.can_insert_on_side(epoch[i], near[i], sides[s]))
                 dt.insert_in_slot(epoch[i], near[i], slot[i], arena[s]);
             else
                 waiting[i] = 1;
@@ -263,11 +267,16 @@ START_TEST(two_sides_build_one_threads_records) {
     const std::vector<Point> epoch = random_points(test_light() ? 1500 : 6000, 42);
     const std::vector<Point> after = random_points(500, 43);
     std::vector<std::uint32_t> first;
-    for (unsigned threads : {1u, 2u, 2u}) {
+    const struct {
+        unsigned threads;
+        bool one_call;
+    } ways[] = {{1, false}, {2, false}, {2, false}, {1, true}, {2, true}};
+    for (const auto& way : ways) {
+        const unsigned threads = way.threads;
         Delaunay dt = mesh_of(pts, pts.size() + epoch.size() + after.size());
         std::vector<VertexIndex> near;
         for (const Point& p : epoch) near.push_back(corner_near(dt, p));
-        const std::size_t waited = insert_by_sides(dt, epoch, near, threads);
+        const std::size_t waited = insert_by_sides(dt, epoch, near, threads, way.one_call);
         // Both ways are taken: most side by side, some waiting.
         ck_assert_msg(waited > 0 && waited < epoch.size() / 4, "%zu of %zu waited", waited, epoch.size());
         const std::size_t n = Delaunay::kGhosts + pts.size() + epoch.size();
@@ -278,7 +287,8 @@ START_TEST(two_sides_build_one_threads_records) {
         if (first.empty())
             first = layout;
         else
-            ck_assert_msg(layout == first, "%u threads built other records", threads);
+            ck_assert_msg(layout == first, "%u threads built other records%s", threads,
+                          way.one_call ? " (search and insertion in one call)" : "");
         // The freed and spare records went back: plain insertions go on.
         VertexIndex v = Delaunay::kGhosts;
         for (const Point& p : after) v = dt.insert(p, v);

@@ -81,6 +81,19 @@ START_TEST(law_of_long_region_epochs) {
 }
 END_TEST
 
+START_TEST(law_of_epochs_inserted_by_sides) {
+    // The free regions' epochs inserted on two sides of x = 0.3 at once, in
+    // long epochs so that many darts cross the middle and wait: which
+    // darts go in first changes the mesh's records, and so the later
+    // draws, never which points are accepted.
+    law::Config c = plane(pds::Box{0, 0, 0.6, 2.4}, 0.1, test_light() ? 300 : 2000, Stages::darts_then_jones);
+    c.threads = static_cast<unsigned>(_i);
+    c.region_darts_per_cell = 4.0;
+    c.side_insertions = true;
+    law::compare(c);
+}
+END_TEST
+
 Suite* law_suite() {
     Suite* s = suite_create("law");
     TCase* t = tcase_create("random sequential adsorption");
@@ -91,6 +104,7 @@ Suite* law_suite() {
     tcase_add_test(t, law_of_the_jones_loop_alone);
     tcase_add_loop_test(t, law_of_the_parallel_opening, 1, 4);
     tcase_add_loop_test(t, law_of_long_region_epochs, 2, 4);
+    tcase_add_loop_test(t, law_of_epochs_inserted_by_sides, 1, 4);
     suite_add_tcase(s, t);
     return s;
 }
