@@ -43,6 +43,10 @@ void JonesLoop<Space, Rule>::make_room_for_epoch(std::size_t darts) {
     // its room (at least doubled), so small calls stay O(1) amortized.
     const std::size_t need = count() + darts;
     if (!has_room_for(need)) reserve(std::max(need, 2 * count()));
+    // And the epoch's own lists: once it is decided nothing may fail.
+    side_slot_rank_.reserve(darts);
+    side_dart_of_.reserve(darts);
+    side_area_.reserve(darts);
 }
 
 template <class Space, class Rule>

@@ -2,15 +2,17 @@
 // of the domain's middle at once (JonesStage::set_side_insertions): the
 // points are the same on 1, 2 and 3 threads and for any split into calls,
 // pairs stay R apart and the pattern ends maximal; an epoch's points are
-// handed out in order of time; the points differ from
-// those of the one-by-one insertions (the mesh's records differ, so later
-// draws do), so the switch is not a no-op; a check inside an epoch not yet
-// handed out is refused; the torus, where the switch does not apply, gives
-// the same points with it on or off.
+// handed out in order of time; the points differ from those of the
+// one-by-one insertions (the mesh's records differ, so later draws do), so
+// the switch is not a no-op; a check inside an epoch not yet handed out is
+// refused; an allocation failure loses nothing; the torus, where the switch
+// does not apply, gives the same points with it on or off.
 #include <cstdint>
+#include <new>
 #include <stdexcept>
 #include <vector>
 
+#include "alloc_hook.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
 
@@ -102,6 +104,87 @@ START_TEST(an_epoch_is_handed_out_in_order_of_time) {
 }
 END_TEST
 
+START_TEST(an_allocation_failure_loses_nothing) {
+    // The call that hands over and draws and inserts the first epoch,
+    // failed at each of its allocations in turn (the mesh, the epoch's
+    // pool, blocks and lists), then the run finished; and calls of 300
+    // points each failed at its k-th allocation, the call after a failure
+    // left alone. Either way the points are those of an undisturbed run.
+    if (!alloc_hook::in_effect()) return;  // under Valgrind
+    const std::vector<double> whole = run_points(0.01, 8, 2, true, false);
+    const auto finish = [&](pds::Sampler& s, const char* what, long k) {
+        std::size_t added = 0;
+        ck_assert(s.run(0, &added) == pds::Sampler::RunEnd::complete);
+        std::vector<double> xy(2 * s.count());
+        s.copy_points(0, s.count(), xy.data());
+        ck_assert_msg(xy == whole, "%s, k = %ld: other points", what, k);
+        const pds::VerifyReport rep = s.verify();
+        ck_assert_msg(rep.valid && rep.maximal, "%s, k = %ld: %s", what, k, rep.failure.c_str());
+    };
+    // The calls of one point up to the hand-over, whose last one also draws
+    // and inserts the first epoch, and that call's allocations.
+    std::size_t calls = 0;
+    long allocations = 0;
+    {
+        pds::Sampler s(0.01, 8);
+        s.set_threads(2);
+        s.set_side_insertions(true);
+        bool maximal = false;
+        for (;;) {
+            alloc_hook::arm(0);
+            const std::size_t added = s.add_points(1, &maximal);
+            allocations = alloc_hook::disarm();
+            if (added == 1) ++calls;
+            if (added != 1 || !s.in_dart_stage()) break;
+        }
+        ck_assert_uint_eq(s.jones().region_stats().epochs, 1);
+    }
+    ck_assert_msg(allocations >= 10, "the hand-over's call made %ld allocations", allocations);
+    std::size_t failed = 0;
+    for (long k = 1; k <= allocations; ++k) {
+        pds::Sampler s(0.01, 8);
+        s.set_threads(2);
+        s.set_side_insertions(true);
+        bool maximal = false;
+        for (std::size_t c = 1; c < calls; ++c) s.add_points(1, &maximal);
+        alloc_hook::arm(k);
+        try {
+            s.add_points(1, &maximal);
+        } catch (const std::bad_alloc&) {
+            ++failed;
+        }
+        alloc_hook::disarm();
+        finish(s, "the hand-over's call", k);  // a thread not started: no failure, the same points
+    }
+    ck_assert_uint_gt(failed, 0);
+    for (const long k : {1L, 3L, 8L}) {
+        pds::Sampler s(0.01, 8);
+        s.set_threads(2);
+        s.set_side_insertions(true);
+        std::size_t failures = 0;
+        bool arm = true;
+        for (;;) {
+            std::size_t added = 0;
+            if (arm) alloc_hook::arm(k);
+            pds::Sampler::RunEnd end;
+            try {
+                end = s.run(300, &added);
+            } catch (const std::bad_alloc&) {
+                alloc_hook::disarm();
+                ++failures;
+                arm = false;
+                continue;
+            }
+            alloc_hook::disarm();
+            arm = true;
+            if (end == pds::Sampler::RunEnd::complete) break;
+        }
+        ck_assert_msg(failures >= 2, "calls of 300, k = %ld: %zu failures", k, failures);
+        finish(s, "calls of 300", k);
+    }
+}
+END_TEST
+
 START_TEST(the_torus_ignores_it) {
     ck_assert(run_points(0.01, 3, 2, true, true) == run_points(0.01, 3, 2, false, true));
 }
@@ -114,6 +197,7 @@ Suite* side_insertions_suite() {
     tcase_add_test(t, same_points_on_any_threads_and_maximal);
     tcase_add_test(t, call_splits_give_the_same_points);
     tcase_add_test(t, an_epoch_is_handed_out_in_order_of_time);
+    tcase_add_test(t, an_allocation_failure_loses_nothing);
     tcase_add_test(t, the_torus_ignores_it);
     suite_add_tcase(s, t);
     return s;
