@@ -118,7 +118,7 @@ public:
     void carry_darts(std::uint64_t salted_seed, std::size_t epoch) override;
     const RegionDarts::Stats& region_stats() const override { return regions_.stats(); }
     void set_region_darts_per_cell(double mean) override { regions_.set_darts_per_cell(mean); }
-    void set_side_insertions(bool on) override { side_insertions_ = on; }
+    void set_side_insertions(bool on) override;  // jones_loop_sides.cpp
     void allow_helper(bool on) override {
         helper_allowed_ = on;
         if (!on) quiet_helper();
@@ -196,11 +196,12 @@ private:
                         RegionDarts::Block& out) const;
     // An epoch's insertions on two sides at once (jones_loop_sides.cpp): in
     // the plane with one radius, when set_side_insertions is on.
-    bool inserts_by_sides() const;
+    bool inserts_by_sides() const { return side_insertions_; }
     // Room for the epoch's points (at most `darts`), before it is decided.
     void make_room_for_epoch(std::size_t darts);
     void insert_epoch_by_sides(WorkerPool& pool);
-    void hand_out_inserted();  // the next of the points inserted ahead
+    // The next of the points inserted ahead handed out, its value `value`.
+    void hand_out_inserted(double value);
     // std::logic_error while some of them are not handed out yet.
     void require_epoch_handed_out(const char* what) const;
     // Exact: inside the domain, outside every disk, inside v's cell.
@@ -238,11 +239,10 @@ private:
     std::size_t fixed_ = 0;  // the first points are fixed (set_fixed)
     unsigned threads_ = 1;   // for measure_all_cells (set_threads)
     RegionDarts regions_;    // on from the parallel opening's hand-over (carry_darts)
-    bool side_insertions_ = false;        // set_side_insertions
+    bool side_insertions_ = false;        // set_side_insertions, where it applies
     std::size_t inserted_ahead_ = 0;      // points of an epoch in the mesh, not yet handed out
-    std::vector<std::uint32_t> side_slot_rank_;  // an epoch's dart (by time) -> its slot's rank
-    std::vector<std::uint32_t> side_dart_of_;    // the slot's rank -> its dart
-    std::vector<double> side_area_;              // by slot rank: its measured area, -1 while waiting
+    std::vector<std::uint32_t> side_dart_of_;  // an epoch's slot rank -> its dart (by time)
+    std::vector<double> side_area_;            // by slot rank: its measured area, -1 while waiting
     // Walks the rings ahead of the regions' insertions, with threads, inside
     // pds_run (allow_helper); stopped before the darts or the mesh may move.
     RingPrefetcher prefetcher_;

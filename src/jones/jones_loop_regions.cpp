@@ -64,12 +64,14 @@ const Point* JonesLoop<Space, Rule>::next_region_point() {
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::add_region_point() {
     if (!regions_.has_pending()) throw std::logic_error("add_next without next");
-    if (inserts_by_sides()) return hand_out_inserted();
+    // By sides, the epoch is in the mesh already: its points are only
+    // handed out.
+    const bool inserted = inserts_by_sides();
     // The next darts' rings, fetched together ahead of their insertions.
     // With the helper too: its walk brings the lines into the shared cache
     // and its own core's, this fetch into this core's, and dropping it was
     // measured to cost (docs/performance.md, 1.15.3).
-    if (regions_.next_index() % kMaxBatch == 0) {
+    if (!inserted && regions_.next_index() % kMaxBatch == 0) {
         prefetcher_.reached(regions_.next_index());
         VertexIndex ahead[kMaxBatch];
         const std::size_t n = regions_.sources_ahead(ahead, kMaxBatch);
@@ -79,8 +81,9 @@ void JonesLoop<Space, Rule>::add_region_point() {
     const RegionDarts::Dart dart = regions_.pending();
     // A field's value was asked when its dart was accepted.
     const double value = regions_.has_values() ? regions_.pending_value() : rule_.value_at(space_, dart.p);
+    if (inserted) hand_out_inserted(value);  // before the pop: a refusal changes nothing
     regions_.pop();
-    space_.insert_point(*this, dart.p, dart.source, value);
+    if (!inserted) space_.insert_point(*this, dart.p, dart.source, value);
     since_batch_.clear();  // the loop's queue is empty while the process runs
 }
 

@@ -33,8 +33,8 @@
 namespace pds {
 
 template <class Space, class Rule>
-bool JonesLoop<Space, Rule>::inserts_by_sides() const {
-    return std::is_same_v<Space, PlaneSpace> && std::is_same_v<Rule, OneRadius> && side_insertions_;
+void JonesLoop<Space, Rule>::set_side_insertions(bool on) {
+    side_insertions_ = on && std::is_same_v<Space, PlaneSpace> && std::is_same_v<Rule, OneRadius>;
 }
 
 template <class Space, class Rule>
@@ -44,7 +44,6 @@ void JonesLoop<Space, Rule>::make_room_for_epoch(std::size_t darts) {
     const std::size_t need = count() + darts;
     if (!has_room_for(need)) reserve(std::max(need, 2 * count()));
     // And the epoch's own lists: once it is decided nothing may fail.
-    side_slot_rank_.reserve(darts);
     side_dart_of_.reserve(darts);
     side_area_.reserve(darts);
 }
@@ -56,22 +55,17 @@ void JonesLoop<Space, Rule>::insert_epoch_by_sides(WorkerPool& pool) {
     const RegionDarts::Dart* darts = regions_.pending_darts();
     const Box box = space_.clip_box();
     const double mid = 0.5 * (box.x0 + box.x1);
-    // Each dart's rank among the slots: the left side's, then the right's.
-    std::vector<std::uint32_t>& slot_rank = side_slot_rank_;
+    // The slots' darts: the left side's, then the right's, each in order of
+    // time.
+    std::vector<std::uint32_t>& by_rank = side_dart_of_;
     std::vector<double>& area = side_area_;
-    slot_rank.resize(m);
+    by_rank.resize(m);
     area.assign(m, -1.0);  // -1: waiting
     std::size_t left = 0;
     for (std::size_t i = 0; i < m; ++i) left += darts[i].p.x < mid ? 1 : 0;
-    std::uint32_t next[2] = {0, static_cast<std::uint32_t>(left)};
-    std::vector<std::uint32_t>& by_rank = side_dart_of_;
-    by_rank.resize(m);
-    for (std::size_t i = 0; i < m; ++i) {
-        const std::uint32_t r = next[darts[i].p.x < mid ? 0 : 1]++;
-        slot_rank[i] = r;
-        by_rank[r] = static_cast<std::uint32_t>(i);
-    }
-    order_.extend_to(count());  // the points inserted one by one before
+    std::size_t next[2] = {0, left};
+    for (std::size_t i = 0; i < m; ++i) by_rank[next[darts[i].p.x < mid ? 0 : 1]++] = static_cast<std::uint32_t>(i);
+    const std::size_t before = count();
     const VertexIndex base = dt_.open_slots(m);
     QuadEdgeMesh::Arena arenas[2] = {dt_.edge_arena(left), dt_.edge_arena(m - left)};
     const bool alone = pool.size() < 2;
@@ -98,7 +92,7 @@ void JonesLoop<Space, Rule>::insert_epoch_by_sides(WorkerPool& pool) {
             area[r] = cells.measure(v).area;
         }
     };
-    if (pool.size() >= 2) {
+    if (!alone) {
         pool.run([&](unsigned w) {
             if (w < 2) insert_side(w);
         });
@@ -108,33 +102,37 @@ void JonesLoop<Space, Rule>::insert_epoch_by_sides(WorkerPool& pool) {
     }
     dt_.close_edge_arena(arenas[0]);
     dt_.close_edge_arena(arenas[1]);
-    // The waiting darts, in order of time.
+    // The waiting darts, in order of time: the two sides' slots merged.
     std::size_t waiting = 0;
     for (std::size_t r = 0; r < m; ++r) waiting += area[r] < 0.0 ? 1 : 0;
     QuadEdgeMesh::Arena rest = dt_.edge_arena(waiting);
     const MeshCells cells = cells_of(0);
-    for (std::size_t i = 0; i < m && waiting > 0; ++i) {
-        const std::uint32_t r = slot_rank[i];
+    for (std::size_t a = 0, b = left; waiting > 0 && (a < left || b < m);) {
+        const std::size_t r = b == m || (a < left && by_rank[a] < by_rank[b]) ? a++ : b++;
         if (!(area[r] < 0.0)) continue;
+        const RegionDarts::Dart& d = darts[by_rank[r]];
         const VertexIndex v = base + static_cast<VertexIndex>(r);
-        dt_.insert_in_slot(darts[i].p, darts[i].source, v, rest);
+        dt_.insert_in_slot(d.p, d.source, v, rest);
         area[r] = cells.measure(v).area;
+        --waiting;
     }
     dt_.close_edge_arena(rest);
-    // The tree's leaves in vertex order; the points' vertices in order of time.
-    for (std::size_t r = 0; r < m; ++r) tree_.push_back(area[r]);
-    for (std::size_t i = 0; i < m; ++i) order_.push(base + static_cast<VertexIndex>(slot_rank[i]));
+    // The tree's leaves in vertex order; the points' vertices in order of
+    // time, after those of the points inserted one by one before.
+    order_.extend_to(before);
+    order_.resize(before + m);
+    for (std::size_t r = 0; r < m; ++r) {
+        tree_.push_back(area[r]);
+        order_.set(before + by_rank[r], base + static_cast<VertexIndex>(r));
+    }
     inserted_ahead_ = m;
 }
 
 template <class Space, class Rule>
-void JonesLoop<Space, Rule>::hand_out_inserted() {
+void JonesLoop<Space, Rule>::hand_out_inserted(double value) {
     if (inserted_ahead_ == 0) throw std::logic_error("add_next: the epoch's points were all handed out");
-    const RegionDarts::Dart dart = regions_.pending();
-    regions_.pop();
     --inserted_ahead_;
-    record_new_point(order_.vertex(count() - 1), rule_.value_at(space_, dart.p));
-    since_batch_.clear();  // the loop's queue is empty while the process runs
+    record_new_point(order_.vertex(count() - 1), value);
 }
 
 template <class Space, class Rule>
@@ -144,10 +142,10 @@ void JonesLoop<Space, Rule>::require_epoch_handed_out(const char* what) const {
 }
 
 #define PDS_SIDES_MEMBERS(Space, Rule)                                                  \
-    template bool JonesLoop<Space, Rule>::inserts_by_sides() const;                     \
+    template void JonesLoop<Space, Rule>::set_side_insertions(bool);                     \
     template void JonesLoop<Space, Rule>::make_room_for_epoch(std::size_t);              \
     template void JonesLoop<Space, Rule>::insert_epoch_by_sides(WorkerPool&);            \
-    template void JonesLoop<Space, Rule>::hand_out_inserted();                           \
+    template void JonesLoop<Space, Rule>::hand_out_inserted(double);                     \
     template void JonesLoop<Space, Rule>::require_epoch_handed_out(const char*) const;
 PDS_SIDES_MEMBERS(PlaneSpace, OneRadius)
 PDS_SIDES_MEMBERS(PlaneSpace, PowerRule)

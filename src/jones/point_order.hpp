@@ -28,7 +28,7 @@ public:
     // Records the next point's vertex (the torus; requires capacity).
     void push(VertexIndex v) { vertex_.push_back(v); }
     // Records the implicit vertices of the first `points` points, so that
-    // the next ones may be pushed (requires capacity).
+    // the next ones may be recorded (requires capacity).
     void extend_to(std::size_t points) {
         while (vertex_.size() < points) vertex_.push_back(static_cast<VertexIndex>(vertex_.size() + kGhostVertices));
     }

@@ -18,6 +18,11 @@
 
 namespace {
 
+void set_up(pds::Sampler& s, unsigned threads, bool sides) {
+    s.set_threads(threads);
+    s.set_side_insertions(sides);
+}
+
 // The points of a run at radius r with `threads` threads, to the end in
 // calls of at most `per_call` points (0: one call); checked R apart and
 // maximal at the end. *refused counts the calls after which verify()
@@ -26,8 +31,7 @@ std::vector<double> run_points(double r, std::uint64_t seed, unsigned threads, b
                                std::size_t per_call = 0, std::size_t* refused = nullptr) {
     pds::Sampler s(r, seed);
     s.set_periodic(periodic);
-    s.set_threads(threads);
-    s.set_side_insertions(sides);
+    set_up(s, threads, sides);
     for (;;) {
         std::size_t added = 0;
         const pds::Sampler::RunEnd end = s.run(per_call, &added);
@@ -82,8 +86,7 @@ START_TEST(an_epoch_is_handed_out_in_order_of_time) {
     std::size_t first_epoch_end = 0;
     for (const bool sides : {false, true}) {
         pds::Sampler s(0.004, 11);
-        s.set_threads(2);
-        s.set_side_insertions(sides);
+        set_up(s, 2, sides);
         bool maximal = false;
         while (s.in_dart_stage() && s.add_points(1, &maximal) == 1) {
         }
@@ -127,8 +130,7 @@ START_TEST(an_allocation_failure_loses_nothing) {
     long allocations = 0;
     {
         pds::Sampler s(0.01, 8);
-        s.set_threads(2);
-        s.set_side_insertions(true);
+        set_up(s, 2, true);
         bool maximal = false;
         for (;;) {
             alloc_hook::arm(0);
@@ -143,8 +145,7 @@ START_TEST(an_allocation_failure_loses_nothing) {
     std::size_t failed = 0;
     for (long k = 1; k <= allocations; ++k) {
         pds::Sampler s(0.01, 8);
-        s.set_threads(2);
-        s.set_side_insertions(true);
+        set_up(s, 2, true);
         bool maximal = false;
         for (std::size_t c = 1; c < calls; ++c) s.add_points(1, &maximal);
         alloc_hook::arm(k);
@@ -159,8 +160,7 @@ START_TEST(an_allocation_failure_loses_nothing) {
     ck_assert_uint_gt(failed, 0);
     for (const long k : {1L, 3L, 8L}) {
         pds::Sampler s(0.01, 8);
-        s.set_threads(2);
-        s.set_side_insertions(true);
+        set_up(s, 2, true);
         std::size_t failures = 0;
         bool arm = true;
         for (;;) {
