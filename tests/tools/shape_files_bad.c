@@ -354,6 +354,7 @@ Suite *shape_files_bad_suite(void)
 {
     Suite *s = suite_create("shape_files_bad");
     TCase *tc = tcase_create("errors");
+    tcase_set_timeout(tc, 60); /* a hang guard; 4 s is tight on a busy machine */
 
     tcase_add_test(tc, geojson_errors);
     tcase_add_test(tc, text_errors);

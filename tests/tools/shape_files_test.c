@@ -326,6 +326,7 @@ static Suite *shape_files_suite(void)
 {
     Suite *s = suite_create("shape_files");
     TCase *tc = tcase_create("accepted");
+    tcase_set_timeout(tc, 60); /* a hang guard; 4 s is tight on a busy machine */
 
     tcase_add_test(tc, geojson_polygon_with_hole);
     tcase_add_test(tc, geojson_feature_collection);
