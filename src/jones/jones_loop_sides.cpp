@@ -23,7 +23,9 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/room_growth.hpp"
 #include "core/worker_pool.hpp"
+#include "domain/frame.hpp"
 #include "jones/jones_loop.hpp"
 #include "jones/plane_space.hpp"
 #include "jones/polygon_space.hpp"
@@ -39,10 +41,11 @@ void JonesLoop<Space, Rule>::set_side_insertions(bool on) {
 
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::make_room_for_epoch(std::size_t darts) {
-    // The decided darts are at most those drawn. Grown as the sampler grows
-    // its room (at least doubled), so small calls stay O(1) amortized.
+    // The decided darts are at most those drawn. Grown by the sampler's
+    // policy; the pattern's own bound is the sampler's to know, so the cap
+    // here is the index's.
     const std::size_t need = count() + darts;
-    if (!has_room_for(need)) reserve(std::max(need, 2 * count()));
+    if (!has_room_for(need)) reserve(grown_room(need, count(), Frame::max_points()));
     // And the epoch's own lists: once it is decided nothing may fail.
     side_dart_of_.reserve(darts);
     side_area_.reserve(darts);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/room_growth.hpp"
 #include "core/space_time_stream.hpp"
 
 namespace pds {
@@ -202,10 +203,11 @@ void Sampler::prepare(std::size_t points) {
         darts_ = std::move(darts);
         adopted_fixed_ = fixed;
     }
-    // One growth policy for every call: at least double what is there, up
-    // to what the pattern can hold, so small calls cost O(1) amortized. The
-    // Jones stage gets room for the dart stage's points too (the hand-over
-    // may come with any point), and each reserve is all or nothing.
+    // One growth policy for every call (core/room_growth.hpp): at least
+    // double what is there, up to what the pattern can hold, so small calls
+    // cost O(1) amortized. The Jones stage gets room for the dart stage's
+    // points too (the hand-over may come with any point), and each reserve
+    // is all or nothing.
     if (parallel_) {
         jones_->set_threads(threads_);
         if (darts_) darts_->set_threads(threads_);
@@ -214,8 +216,7 @@ void Sampler::prepare(std::size_t points) {
                       (!darts_ || darts_->has_room_for(points + adopted_fixed_));
     if (room) return;
     const std::size_t cap = std::min(smallest_frame().count_bound_points(), Frame::max_points());
-    constexpr std::size_t kFirstRoom = 64;  // points reserved at the first growth, at least
-    const std::size_t want = std::max(points, std::min(2 * count() + kFirstRoom, cap));
+    const std::size_t want = grown_room(points, count(), cap);
     jones_->reserve(want + adopted_fixed_);
     if (darts_) darts_->reserve(want + adopted_fixed_);
 }

@@ -30,6 +30,7 @@ int main() {
     srunner_add_suite(runner, ring_prefetcher_suite());
     srunner_add_suite(runner, active_scan_suite());
     srunner_add_suite(runner, time_order_suite());
+    srunner_add_suite(runner, room_growth_suite());
     srunner_add_suite(runner, space_time_stage_suite());
     srunner_add_suite(runner, space_time_polygon_suite());
     srunner_add_suite(runner, space_time_torus_suite());

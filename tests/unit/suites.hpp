@@ -33,6 +33,7 @@ Suite* worker_pool_suite();
 Suite* ring_prefetcher_suite();
 Suite* active_scan_suite();
 Suite* time_order_suite();
+Suite* room_growth_suite();
 Suite* region_darts_suite();
 Suite* side_insertions_suite();
 Suite* sampler_suite();
