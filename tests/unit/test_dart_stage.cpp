@@ -315,7 +315,6 @@ END_TEST
 Suite* dart_stage_suite() {
     Suite* s = suite_create("dart_stage");
     TCase* t = tcase_create("hand-over");
-    tcase_set_timeout(t, 60);
     tcase_add_test(t, handover_order_on_a_wide_grid);
     tcase_add_test(t, dart_points_keep_their_distance);
     tcase_add_test(t, handover_order_follows_the_curve_on_a_square);

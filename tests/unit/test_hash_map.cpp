@@ -106,7 +106,6 @@ END_TEST
 Suite* hash_map_suite() {
     Suite* s = suite_create("hash_map");
     TCase* t = tcase_create("map");
-    tcase_set_timeout(t, 60);  // Check's 4 s default is too tight beside the Valgrind pass
     tcase_add_test(t, agrees_with_std_map);
     suite_add_tcase(s, t);
     t = tcase_create("spatial");

@@ -392,7 +392,6 @@ END_TEST
 Suite* polygon_suite() {
     Suite* s = suite_create("polygon");
     TCase* t = tcase_create("outline");
-    tcase_set_timeout(t, 60);
     tcase_add_test(t, refuses_with_ring_and_vertex_named);
     tcase_add_test(t, cleaning_drops_repeats_keeps_collinear_runs);
     tcase_add_test(t, stars_with_holes_both_orientations);

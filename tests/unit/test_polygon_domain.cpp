@@ -376,7 +376,6 @@ Suite* polygon_domain_suite() {
     tcase_add_test(t, a_thin_strip_turns_to_trapezoids_early);
     tcase_add_test(t, region_draws_keep_the_law);
     tcase_add_test(t, cells_reaching_across_teeth_are_chosen_by_free_area);
-    tcase_set_timeout(t, 60);
     suite_add_tcase(s, t);
     return s;
 }

@@ -227,7 +227,6 @@ Suite* progress_suite() {
     tcase_add_test(tc, estimate_can_be_stopped);
     suite_add_tcase(s, tc);
     tc = tcase_create("hand_over_reports_and_stops");
-    tcase_set_timeout(tc, 60);
     tcase_add_test(tc, hand_over_reports_and_stops);
     suite_add_tcase(s, tc);
     return s;

@@ -168,7 +168,6 @@ END_TEST
 Suite* torus_suite() {
     Suite* s = suite_create("torus");
     TCase* tc = tcase_create("torus");
-    tcase_set_timeout(tc, 60);
     tcase_add_test(tc, grid_snap_and_wrap_are_exact);
     tcase_add_test(tc, close_pair_across_the_wrap_is_invalid);
     tcase_add_test(tc, missing_copy_is_invalid);
