@@ -119,6 +119,7 @@ public:
     const RegionDarts::Stats& region_stats() const override { return regions_.stats(); }
     void set_region_darts_per_cell(double mean) override { regions_.set_darts_per_cell(mean); }
     void set_side_insertions(bool on) override;  // jones_loop_sides.cpp
+    void set_room_cap(std::size_t points) override { room_cap_ = points; }
     void allow_helper(bool on) override {
         helper_allowed_ = on;
         if (!on) quiet_helper();
@@ -240,6 +241,7 @@ private:
     unsigned threads_ = 1;   // for measure_all_cells (set_threads)
     RegionDarts regions_;    // on from the parallel opening's hand-over (carry_darts)
     bool side_insertions_ = false;        // set_side_insertions, where it applies
+    std::size_t room_cap_ = SIZE_MAX;     // set_room_cap
     std::size_t inserted_ahead_ = 0;      // points of an epoch in the mesh, not yet handed out
     std::vector<std::uint32_t> side_dart_of_;  // an epoch's slot rank -> its dart (by time)
     std::vector<double> side_area_;            // by slot rank: its measured area, -1 while waiting

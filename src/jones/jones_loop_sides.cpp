@@ -25,7 +25,6 @@
 
 #include "core/room_growth.hpp"
 #include "core/worker_pool.hpp"
-#include "domain/frame.hpp"
 #include "jones/jones_loop.hpp"
 #include "jones/plane_space.hpp"
 #include "jones/polygon_space.hpp"
@@ -41,11 +40,12 @@ void JonesLoop<Space, Rule>::set_side_insertions(bool on) {
 
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::make_room_for_epoch(std::size_t darts) {
-    // The decided darts are at most those drawn. Grown by the sampler's
-    // policy; the pattern's own bound is the sampler's to know, so the cap
-    // here is the index's.
-    const std::size_t need = count() + darts;
-    if (!has_room_for(need)) reserve(grown_room(need, count(), Frame::max_points()));
+    // The decided darts are at most those drawn; their records are appended
+    // after the free ones (in the plane, where epochs go by sides, a point
+    // is a vertex). Grown by the sampler's policy, up to the pattern's bound
+    // that the sampler gave.
+    const std::size_t need = std::max(count() + darts, dt_.vertices_to_append(darts) - Delaunay::kGhosts);
+    if (!has_room_for(need) || !dt_.has_room_to_append(darts)) reserve(grown_room(need, count(), room_cap_));
     // And the epoch's own lists: once it is decided nothing may fail.
     side_dart_of_.reserve(darts);
     side_area_.reserve(darts);

@@ -108,6 +108,11 @@ public:
     // number of threads. Meanwhile verify, free_area and set_radius refuse
     // a stop inside an epoch (std::logic_error).
     virtual void set_side_insertions(bool /*on*/) {}
+    // The most points the pattern can hold, fixed ones included (the
+    // sampler's bound): an epoch that outgrows the room reserves at most
+    // this much unless its own darts ask for more. Unset, growth is only
+    // bounded by what the epochs ask.
+    virtual void set_room_cap(std::size_t /*points*/) {}
 };
 
 // The domain and r in the internal frame, torus on for a periodic domain;

@@ -46,6 +46,8 @@ public:
     void reserve(std::size_t records);
     // Records the next make_edge calls can take without allocating.
     std::size_t spare_records() const;
+    // Records append_arena can take: only those past the last, never free ones.
+    std::size_t appendable_records() const { return rec_.capacity() - rec_.size(); }
     // Makes resident the pages of the records up to `records` in all that
     // new edges will take (core/page_hints.hpp); the edges are unchanged.
     void populate_for(std::size_t records) const;

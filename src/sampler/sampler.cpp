@@ -212,10 +212,13 @@ void Sampler::prepare(std::size_t points) {
         jones_->set_threads(threads_);
         if (darts_) darts_->set_threads(threads_);
     }
+    // The epochs by sides grow the Jones stage's room themselves, within the
+    // same bound (the radius, and with it the bound, may have changed).
+    if (side_insertions_) jones_->set_room_cap(room_cap() + adopted_fixed_);
     const bool room = jones_->has_room_for(points + adopted_fixed_) &&
                       (!darts_ || darts_->has_room_for(points + adopted_fixed_));
     if (room) return;
-    const std::size_t cap = std::min(smallest_frame().count_bound_points(), Frame::max_points());
+    const std::size_t cap = room_cap();
     const std::size_t want = grown_room(points, count(), cap);
     jones_->reserve(want + adopted_fixed_);
     if (darts_) darts_->reserve(want + adopted_fixed_);

@@ -29,6 +29,7 @@
 #ifndef PDS_SAMPLER_HPP
 #define PDS_SAMPLER_HPP
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -191,6 +192,8 @@ private:
     // Judges the limits for a call that may bring the total to `points`,
     // makes the stages at the first point, and reserves room.
     void prepare(std::size_t points);
+    // The most points worth reserving room for: the pattern's bound.
+    std::size_t room_cap() const { return std::min(smallest_frame().count_bound_points(), Frame::max_points()); }
     void forget_stages();
     const Point* next_point();
     bool add_one();

@@ -13,6 +13,9 @@
 #include <vector>
 
 #include "alloc_hook.hpp"
+#include "core/rng.hpp"
+#include "core/space_time_stream.hpp"
+#include "jones/jones_stage.hpp"
 #include "sampler/sampler.hpp"
 #include "suites.hpp"
 
@@ -185,6 +188,43 @@ START_TEST(an_allocation_failure_loses_nothing) {
 }
 END_TEST
 
+START_TEST(an_epoch_grows_the_room_within_the_cap) {
+    // The Jones stage alone, handed a lattice 2.2 R apart (much free room
+    // left) and then the free regions' darts, by sides, with room for one
+    // more point at a time: the epochs outgrow it and grow it themselves,
+    // doubling, but not far past the cap they were given (their records
+    // are appended after the free ones, so an epoch may ask a little past
+    // it; before, that was found only by an error in the insertions).
+    const double r = 0.01;
+    const std::size_t cap = 5000;
+    std::vector<pds::Point> lattice;
+    for (int i = 0; i < 45; ++i)
+        for (int j = 0; j < 45; ++j) lattice.push_back(pds::Point{(i + 0.5) * 2.2 * r, (j + 0.5) * 2.2 * r});
+    std::vector<std::uint32_t> order(lattice.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
+    const auto stage = pds::make_jones_stage(pds::Box{0, 0, 1, 1}, r);
+    stage->set_side_insertions(true);
+    stage->set_room_cap(cap);
+    stage->reserve(lattice.size());
+    stage->adopt(lattice, order.data());
+    stage->carry_darts(pds::SpaceTimeStream::salted(3), 0);
+    pds::Rng rng(3);
+    std::size_t past_half = 0;
+    while (stage->count() < 4900) {
+        if (!stage->has_room_for(stage->count() + 1)) stage->reserve(stage->count() + 1);
+        ck_assert(stage->next(rng) != nullptr);
+        stage->add_next();
+        // Past half the cap, doubling alone would pass it.
+        if (stage->count() > cap / 2 && stage->has_room_for(stage->count() + 2)) {
+            ++past_half;
+            ck_assert_msg(!stage->has_room_for(cap + cap / 10), "room far past the cap at %zu points", stage->count());
+        }
+    }
+    ck_assert_uint_gt(stage->region_stats().points, 1000);
+    ck_assert_uint_gt(past_half, 0);
+}
+END_TEST
+
 START_TEST(the_torus_ignores_it) {
     ck_assert(run_points(0.01, 3, 2, true, true) == run_points(0.01, 3, 2, false, true));
 }
@@ -198,6 +238,7 @@ Suite* side_insertions_suite() {
     tcase_add_test(t, call_splits_give_the_same_points);
     tcase_add_test(t, an_epoch_is_handed_out_in_order_of_time);
     tcase_add_test(t, an_allocation_failure_loses_nothing);
+    tcase_add_test(t, an_epoch_grows_the_room_within_the_cap);
     tcase_add_test(t, the_torus_ignores_it);
     suite_add_tcase(s, t);
     return s;
