@@ -40,12 +40,14 @@ void JonesLoop<Space, Rule>::set_side_insertions(bool on) {
 
 template <class Space, class Rule>
 void JonesLoop<Space, Rule>::make_room_for_epoch(std::size_t darts) {
-    // The decided darts are at most those drawn; their records are appended
-    // after the free ones (in the plane, where epochs go by sides, a point
-    // is a vertex). Grown by the sampler's policy, up to the pattern's bound
-    // that the sampler gave.
-    const std::size_t need = std::max(count() + darts, dt_.vertices_to_append(darts) - Delaunay::kGhosts);
-    if (!has_room_for(need) || !dt_.has_room_to_append(darts)) reserve(grown_room(need, count(), room_cap_));
+    // The decided darts are at most those drawn, and their records are
+    // appended after the free ones. Grown by the sampler's policy, up to the
+    // pattern's bound that the sampler gave (in the plane, where epochs go
+    // by sides, a point is a vertex).
+    const std::size_t need = count() + darts;
+    if (!has_room_for(need) || !dt_.can_append_edges(darts))
+        reserve(grown_room(std::max(need, dt_.vertices_to_append_edges(darts) - Delaunay::kGhosts), count(),
+                           room_cap_));
     // And the epoch's own lists: once it is decided nothing may fail.
     side_dart_of_.reserve(darts);
     side_area_.reserve(darts);

@@ -34,7 +34,6 @@
 #ifndef PDS_DELAUNAY_HPP
 #define PDS_DELAUNAY_HPP
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -172,17 +171,13 @@ public:
     // The records n insertions take (within the room reserved), and their
     // return once the insertions are done.
     QuadEdgeMesh::Arena edge_arena(std::size_t insertions) { return mesh_.append_arena(3 * insertions); }
-    // Whether open_slots and edge_arena can take `insertions` more without
-    // a reserve: the arenas come after every record, free ones too, so
-    // has_room_for may say yes when they do not fit.
-    bool has_room_to_append(std::size_t insertions) const {
-        return points_.capacity() - points_.size() >= insertions &&
-               vertex_edge_.capacity() - vertex_edge_.size() >= insertions &&
-               mesh_.appendable_records() >= 3 * insertions;
-    }
-    // The vertices in all (ghosts included) to reserve for that.
-    std::size_t vertices_to_append(std::size_t insertions) const {
-        return std::max(vertex_count() + insertions, (mesh_.record_count() + 3 * insertions + 2) / 3);
+    // Whether edge_arena can take n insertions' records without a reserve:
+    // an arena comes after every record, free ones too, so has_room_for
+    // may say yes when it does not fit.
+    bool can_append_edges(std::size_t insertions) const { return mesh_.appendable_records() >= 3 * insertions; }
+    // The vertices in all (ghosts included) whose reserve makes it so.
+    std::size_t vertices_to_append_edges(std::size_t insertions) const {
+        return (mesh_.record_count() + 3 * insertions + 2) / 3;
     }
     void close_edge_arena(const QuadEdgeMesh::Arena& arena) { mesh_.close_appended(arena); }
     // Inserts p into the open slot, walking from `near`, its records from

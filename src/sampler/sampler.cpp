@@ -218,8 +218,7 @@ void Sampler::prepare(std::size_t points) {
     const bool room = jones_->has_room_for(points + adopted_fixed_) &&
                       (!darts_ || darts_->has_room_for(points + adopted_fixed_));
     if (room) return;
-    const std::size_t cap = room_cap();
-    const std::size_t want = grown_room(points, count(), cap);
+    const std::size_t want = grown_room(points, count(), room_cap());
     jones_->reserve(want + adopted_fixed_);
     if (darts_) darts_->reserve(want + adopted_fixed_);
 }

@@ -9,6 +9,7 @@
 // does not apply, gives the same points with it on or off.
 #include <cstdint>
 #include <new>
+#include <numeric>
 #include <stdexcept>
 #include <vector>
 
@@ -201,7 +202,7 @@ START_TEST(an_epoch_grows_the_room_within_the_cap) {
     for (int i = 0; i < 45; ++i)
         for (int j = 0; j < 45; ++j) lattice.push_back(pds::Point{(i + 0.5) * 2.2 * r, (j + 0.5) * 2.2 * r});
     std::vector<std::uint32_t> order(lattice.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
+    std::iota(order.begin(), order.end(), 0u);
     const auto stage = pds::make_jones_stage(pds::Box{0, 0, 1, 1}, r);
     stage->set_side_insertions(true);
     stage->set_room_cap(cap);
