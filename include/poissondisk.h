@@ -48,8 +48,8 @@ extern "C" {
 
 /* Version of this header; pds_version_number() gives the library's. (1.0) */
 #define PDS_VERSION_MAJOR 1
-#define PDS_VERSION_MINOR 15
-#define PDS_VERSION_PATCH 3
+#define PDS_VERSION_MINOR 16
+#define PDS_VERSION_PATCH 0
 #define PDS_VERSION_NUMBER \
     (PDS_VERSION_MAJOR * 10000 + PDS_VERSION_MINOR * 100 + PDS_VERSION_PATCH)
 

@@ -34,6 +34,8 @@ constexpr std::int64_t kMinBandRows = 8;
 constexpr std::size_t kAhead = 8;
 // Epochs at most: past them the Jones loop is far cheaper anyway.
 constexpr std::size_t kMaxEpochs = 65535;
+// Mixed into the seed for the rows' streams, which the cells' never meet.
+constexpr std::uint64_t kRowSalt = 0xA5E1D0C3B2F49687ull;
 
 enum : std::uint8_t { kUndecided = 0, kAccepted = 1, kRejected = 2 };
 
@@ -46,7 +48,8 @@ SpaceTimeDartStage::SpaceTimeDartStage(const Rectangle& domain, std::shared_ptr<
       r_(radius),
       seed_(seed),
       torus_(torus),
-      grid_(domain.bounds(), radius, torus) {
+      grid_(domain.bounds(), radius, torus),
+      gaps_(kDartsPerCell) {
     const Box& box = grid_.box();
     curve_ = CurveOrder(box, grid_.side_x(), grid_.side_y(), grid_.cols(), grid_.rows());
     const std::size_t cells = grid_.cell_count();
@@ -193,20 +196,29 @@ void SpaceTimeDartStage::draw(Band& band) {
     band.thrown = 0;
     // About kDartsPerCell a cell land free early on, fewer later.
     band.cands.reserve(static_cast<std::size_t>(static_cast<double>(band.a1 - band.a0) * (kDartsPerCell * 1.2)) + 64);
-    // First the counts: most active cells draw no dart in an epoch, and
-    // only those that do need their grid block.
-    const double e = std::exp(-kDartsPerCell);
-    const std::uint64_t salted = SpaceTimeStream::salted(seed_);
+    // First which active cells draw darts: most draw none in an epoch, so
+    // each row's stream gives the gaps between those that do
+    // (core/poisson_gaps.hpp), and only those need their grid block and
+    // their own stream, which gives their count and their darts.
+    const std::uint64_t salted = SpaceTimeStream::salted(seed_), salted_rows = SpaceTimeStream::salted(seed_ ^ kRowSalt);
+    const auto cols = static_cast<std::uint32_t>(grid_.cols());
     band.darting.clear();
     band.darting.reserve(static_cast<std::size_t>(static_cast<double>(band.a1 - band.a0) * (kDartsPerCell * 1.5)) + 64);
-    for (std::size_t i = band.a0; i < band.a1; ++i) {
-        SpaceTimeStream stream(salted, active_[i], epoch_);
-        const unsigned darts = stream.poisson(kDartsPerCell, e);
-        if (darts == 0) continue;
-        band.thrown += darts;
-        band.darting.push_back(Band::Darting{stream, active_[i], darts});
+    for (std::size_t i = band.a0; i < band.a1;) {
+        const std::uint32_t row = active_[i] / cols;
+        const auto row_end = std::lower_bound(active_.begin() + static_cast<std::ptrdiff_t>(i),
+                                              active_.begin() + static_cast<std::ptrdiff_t>(std::min(band.a1, i + cols)),
+                                              static_cast<std::uint64_t>(row + 1) * cols);
+        const auto end = static_cast<std::size_t>(row_end - active_.begin());
+        SpaceTimeStream row_stream(salted_rows, row, epoch_);
+        for (std::size_t j = i + gaps_.gap(row_stream); j < end; j += 1 + gaps_.gap(row_stream)) {
+            SpaceTimeStream stream(salted, active_[j], epoch_);
+            const unsigned darts = gaps_.count_of_darting(stream);
+            band.thrown += darts;
+            band.darting.push_back(Band::Darting{stream, active_[j], darts});
+        }
+        i = end;
     }
-    const auto cols = static_cast<std::uint32_t>(grid_.cols());
     const double side_x = grid_.side_x(), side_y = grid_.side_y();
     const auto stride = static_cast<std::ptrdiff_t>(grid_.stride());
     const Box& box = grid_.box();

@@ -5,9 +5,13 @@
 // The darts. Every cell of the grid (space_time_grid.hpp) receives darts as
 // a Poisson process in time, uniform over the cell, all cells at the same
 // rate: together, a Poisson process on domain x time, so the darts taken in
-// order of time are independent and uniform over the domain. A cell's darts
-// in epoch e (times in [e, e+1)) come from its own stream (space_time_stream.hpp)
-// keyed by (seed, cell, e): the set of darts is fixed by the seed alone.
+// order of time are independent and uniform over the domain. Which active
+// cells draw darts in epoch e (times in [e, e+1)) comes from their row's
+// stream keyed by (seed, row, e), by the gaps between them
+// (core/poisson_gaps.hpp); such a cell's count and darts come from its own
+// stream (space_time_stream.hpp) keyed by (seed, cell, e). The active cells
+// follow from the earlier epochs, so the set of darts is fixed by the seed
+// alone.
 //
 // The points. A dart becomes a point iff it lies in the domain (a rectangle,
 // or a polygon: sub_square_raster.hpp says which sub-squares need no test;
@@ -47,6 +51,7 @@
 #include <vector>
 
 #include "core/point.hpp"
+#include "core/poisson_gaps.hpp"
 #include "core/torus.hpp"
 #include "core/worker_pool.hpp"
 #include "darts/curve_order.hpp"
@@ -135,6 +140,7 @@ private:
     std::uint64_t seed_;
     Torus torus_;
     SpaceTimeGrid grid_;
+    PoissonGaps gaps_;  // which active cells draw darts in an epoch
     CurveOrder curve_;
     unsigned threads_ = 1;
     std::vector<Band> bands_;

@@ -36,6 +36,7 @@ int main() {
     srunner_add_suite(runner, space_time_torus_suite());
     srunner_add_suite(runner, space_time_fixed_suite());
     srunner_add_suite(runner, dart_stage_fixed_suite());
+    srunner_add_suite(runner, poisson_gaps_suite());
     srunner_add_suite(runner, region_darts_suite());
     srunner_add_suite(runner, side_insertions_suite());
     srunner_add_suite(runner, sampler_suite());

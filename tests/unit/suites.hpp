@@ -34,6 +34,7 @@ Suite* ring_prefetcher_suite();
 Suite* active_scan_suite();
 Suite* time_order_suite();
 Suite* room_growth_suite();
+Suite* poisson_gaps_suite();
 Suite* region_darts_suite();
 Suite* side_insertions_suite();
 Suite* sampler_suite();

@@ -26,7 +26,7 @@ from ._errors import (CanceledError, InternalError, InvalidArgumentError, OutOfM
 from ._args import UNIT_SQUARE, Points, ProgressFn, Radii, RadiusFn, random_seed
 from ._sampler import Sampler
 
-__version__ = "1.15.3"  # of this package; version() is the loaded library's
+__version__ = "1.16.0"  # of this package; version() is the loaded library's
 
 
 def sample(radius: Optional[float], *, bounds: Optional[Sequence[Sequence[float]]] = None,
