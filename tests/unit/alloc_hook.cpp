@@ -6,17 +6,21 @@
 // (std::stable_sort's temporary buffer: an alloc-dealloc mismatch).
 #include "alloc_hook.hpp"
 
+#include <atomic>
 #include <cstdlib>
 #include <new>
 
 namespace {
 
-bool armed = false;
-long counted = 0;
-long fail_at = 0;
+// Atomic: a threaded run's workers allocate too (their epochs' lists).
+std::atomic<bool> armed{false};
+std::atomic<long> counted{0};
+std::atomic<long> fail_at{0};
 
 void* allocate(std::size_t size) {
-    if (armed && ++counted == fail_at) throw std::bad_alloc();
+    if (armed.load(std::memory_order_relaxed) &&
+        counted.fetch_add(1, std::memory_order_relaxed) + 1 == fail_at.load(std::memory_order_relaxed))
+        throw std::bad_alloc();
     if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
     throw std::bad_alloc();
 }
@@ -26,14 +30,14 @@ void* allocate(std::size_t size) {
 namespace alloc_hook {
 
 void arm(long k) {
-    armed = true;
-    counted = 0;
-    fail_at = k;
+    counted.store(0);
+    fail_at.store(k);
+    armed.store(true);
 }
 
 long disarm() {
-    armed = false;
-    return counted;
+    armed.store(false);
+    return counted.load();
 }
 
 
